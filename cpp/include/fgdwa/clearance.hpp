@@ -1,0 +1,47 @@
+#pragma once
+// Where a rollout's clearance comes from. The planner asks one ClearanceSource
+// per pose of every rollout; `FieldClearance` (distance field plus analytic
+// discs) is the fast path, `CollisionWorld` (FCL, collision.hpp) the exact one.
+#include <memory>
+#include <vector>
+
+#include "fgdwa/grid.hpp"
+#include "fgdwa/robot.hpp"
+
+namespace fgdwa {
+
+// A disc obstacle moving at constant velocity; radius 0 is a point (a lidar hit).
+struct Disc {
+  Vec2 center = Vec2::Zero();    // m, position now
+  double radius = 0.0;           // m
+  Vec2 velocity = Vec2::Zero();  // m/s
+  Vec2 center_at(double t) const { return center + t * velocity; }
+  void validate() const;
+};
+
+class ClearanceSource {
+ public:
+  virtual ~ClearanceSource() = default;
+  // Distance from the footprint placed at `pose` to the nearest obstacle, with
+  // moving obstacles predicted `t` seconds ahead; <= 0 means contact.
+  virtual double clearance(const Footprint& footprint, const Pose2& pose, double t) const = 0;
+};
+
+class FieldClearance : public ClearanceSource {
+ public:
+  // `field` may be null (no static map).
+  explicit FieldClearance(std::shared_ptr<const DistanceField> field = nullptr, std::vector<Disc> discs = {});
+
+  void set_discs(std::vector<Disc> discs);
+  const std::vector<Disc>& discs() const { return discs_; }
+  const std::shared_ptr<const DistanceField>& field() const { return field_; }
+
+  double clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
+
+ private:
+  double static_clearance(const Footprint& footprint, const Pose2& pose) const;
+  std::shared_ptr<const DistanceField> field_;
+  std::vector<Disc> discs_;
+};
+
+}  // namespace fgdwa

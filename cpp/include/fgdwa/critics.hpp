@@ -1,0 +1,87 @@
+#pragma once
+// Cost terms of the evaluation function (Eqs. 4 and 12), one class each.
+//
+// Lifecycle: the planner builds its critics once from configuration by name
+// (`make_critic`), calls `prepare(context)` once per control cycle, then
+// `score(rollout)` for every admissible sample. A score is the raw term, larger
+// is better; normalisation and weights belong to the planner.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fgdwa/geometry.hpp"
+#include "fgdwa/robot.hpp"
+
+namespace fgdwa {
+
+// What every critic may read about the current cycle.
+struct CriticContext {
+  RobotState state;
+  Vec2 goal = Vec2::Zero();
+  Vec2 target = Vec2::Zero();  // what the heading aims at: the goal, or a key node
+  double dt = 0.0;             // s, rollout step
+  int n_steps = 0;
+};
+
+// One sampled command with what the planner measured about it.
+struct Rollout {
+  Twist command;
+  const Trajectory* poses = nullptr;  // n_steps poses after each dt
+  double min_clearance = 0.0;         // m, smallest footprint clearance over the poses
+  double free_distance = 0.0;         // m, arc length before first contact, +inf if none
+};
+
+class Critic {
+ public:
+  virtual ~Critic() = default;
+  virtual std::string name() const = 0;
+  virtual void prepare(const CriticContext& context) { (void)context; }
+  virtual double score(const Rollout& rollout) const = 0;
+};
+
+// How a critic is named in configuration: its registered name, the weight the
+// planner gives it, and its own parameters (unknown keys are an error).
+struct CriticConfig {
+  std::string name;
+  double weight = 1.0;
+  std::map<std::string, double> params;
+};
+
+// pi - |angle between the final heading and the direction from the final position to the target|.
+class HeadingCritic : public Critic {
+ public:
+  std::string name() const override { return "heading"; }
+  void prepare(const CriticContext& context) override { target_ = context.target; }
+  double score(const Rollout& rollout) const override;
+
+ private:
+  Vec2 target_ = Vec2::Zero();
+};
+
+// The rollout's smallest clearance, clipped to [0, cap].
+class ClearanceCritic : public Critic {
+ public:
+  explicit ClearanceCritic(double cap = 2.0);  // m, the detect-window radius
+  std::string name() const override { return "clearance"; }
+  double score(const Rollout& rollout) const override;
+  double cap() const { return cap_; }
+
+ private:
+  double cap_;
+};
+
+// The commanded forward speed.
+class VelocityCritic : public Critic {
+ public:
+  std::string name() const override { return "velocity"; }
+  double score(const Rollout& rollout) const override { return rollout.command.v; }
+};
+
+// Builds a critic by registered name; throws fgdwa::Error on an unknown name,
+// an unknown parameter or a bad value.
+std::unique_ptr<Critic> make_critic(const CriticConfig& config);
+// The names make_critic accepts.
+std::vector<std::string> critic_names();
+
+}  // namespace fgdwa

@@ -1,0 +1,68 @@
+#pragma once
+// Occupancy grids and the Euclidean distance field built from them.
+//
+// Cell (row, col) covers x in [origin.x + col res, origin.x + (col + 1) res) and
+// y in [origin.y + row res, origin.y + (row + 1) res): row 0 is the bottom row.
+// Space outside the grid is free.
+#include <cstdint>
+#include <vector>
+
+#include "fgdwa/geometry.hpp"
+
+namespace fgdwa {
+
+class OccupancyGrid {
+ public:
+  // `cells` is row-major, rows x cols, 0 = free and any other value = obstacle.
+  OccupancyGrid(int rows, int cols, double resolution, Vec2 origin, std::vector<std::uint8_t> cells);
+
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+  double resolution() const { return resolution_; }  // m per cell
+  const Vec2& origin() const { return origin_; }     // m, lower-left corner of cell (0, 0)
+  const std::vector<std::uint8_t>& cells() const { return cells_; }
+
+  bool in_bounds(int row, int col) const { return row >= 0 && row < rows_ && col >= 0 && col < cols_; }
+  bool occupied(int row, int col) const { return cells_[index(row, col)] != 0; }
+  // Cell holding `p`; false when `p` lies outside the grid.
+  bool cell_of(const Vec2& p, int& row, int& col) const;
+  Vec2 cell_center(int row, int col) const;
+  // Whether `p` lies in an occupied cell (outside the grid is free).
+  bool occupied_at(const Vec2& p) const;
+  std::size_t index(int row, int col) const { return static_cast<std::size_t>(row) * cols_ + col; }
+  std::size_t occupied_count() const;
+
+ private:
+  int rows_;
+  int cols_;
+  double resolution_;
+  Vec2 origin_;
+  std::vector<std::uint8_t> cells_;
+};
+
+// Exact Euclidean distance transform of a grid (Felzenszwalb and Huttenlocher).
+//
+// `cell_distance(row, col)` is measured between cell centres: from this cell's
+// centre to the nearest occupied cell's centre, in metres (0 on occupied cells,
+// +inf when the grid has no obstacle); it equals scipy's
+// distance_transform_edt(grid == 0) * resolution.
+// `distance(p)` estimates the distance from a point to the nearest occupied
+// cell's edge: the centre distances interpolated bilinearly at `p`, less half a
+// cell, and 0 inside an occupied cell. It stays within one cell of the exact value.
+class DistanceField {
+ public:
+  explicit DistanceField(const OccupancyGrid& grid);
+
+  const OccupancyGrid& grid() const { return grid_; }
+  double cell_distance(int row, int col) const { return distances_[grid_.index(row, col)]; }
+  const std::vector<double>& cell_distances() const { return distances_; }
+  bool has_obstacles() const { return has_obstacles_; }
+  double distance(const Vec2& p) const;
+
+ private:
+  OccupancyGrid grid_;
+  std::vector<double> distances_;
+  bool has_obstacles_ = false;
+};
+
+}  // namespace fgdwa

@@ -1,0 +1,111 @@
+#pragma once
+// The local planner: one control cycle in, one command and its diagnostics out.
+//
+// Data flows one way per cycle: window -> samples -> rollouts -> clearance and
+// admissibility -> critics -> normalise -> best command. The planner owns its
+// buffers, so a cycle allocates nothing once the first one has run.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fgdwa/clearance.hpp"
+#include "fgdwa/critics.hpp"
+#include "fgdwa/robot.hpp"
+#include "fgdwa/window.hpp"
+
+namespace fgdwa {
+
+enum class Status : std::uint8_t {
+  Ok,                    // a command was chosen among admissible samples
+  NoAdmissibleVelocity,  // every sample was rejected: the command brakes
+  GoalReached,           // within goal_tolerance of the goal: the command brakes
+};
+
+enum class RejectReason : std::uint8_t {
+  None,       // admissible
+  Collision,  // the rollout touches an obstacle before the robot could stop
+};
+constexpr std::size_t kRejectReasonCount = 2;
+
+enum class Normalization : std::uint8_t {
+  Sum,     // each term divided by its sum over the admissible samples (classic DWA)
+  MinMax,  // each term mapped to [0, 1] over the admissible samples
+};
+
+const char* to_string(Status status);
+const char* to_string(RejectReason reason);
+const char* to_string(Normalization normalization);
+
+struct PlannerParams {
+  double dt = 0.15;             // s, control period and rollout step
+  double sim_time = 3.0;        // s, rollout horizon ("perDT")
+  WindowParams window;          // sample counts
+  Normalization normalization = Normalization::Sum;
+  double goal_tolerance = 0.3;  // m, GoalReached within this distance of the goal
+  std::vector<CriticConfig> critics = {
+      {"heading", 0.5, {}}, {"clearance", 0.15, {}}, {"velocity", 1.0, {}}};  // Table 5
+
+  // Poses per rollout: sim_time / dt, rounded.
+  int n_steps() const;
+  void validate() const;
+};
+
+using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+struct PlanResult {
+  Status status = Status::Ok;
+  Twist command;
+  int best_index = -1;         // index into samples, -1 when no sample was chosen
+  Vec2 target = Vec2::Zero();  // what the heading critic aimed at
+  std::vector<std::string> critic_names;
+  std::vector<double> weights;                  // per critic, this cycle
+  std::vector<Twist> samples;                   // n_v x n_omega, v-major
+  std::vector<RejectReason> reasons;            // per sample
+  std::vector<double> min_clearance;            // m, per sample
+  std::vector<double> free_distance;            // m, per sample (+inf: never touches)
+  Matrix raw;                                   // samples x critics, 0 for rejected samples
+  Matrix normalized;                            // samples x critics, 0 for rejected samples
+  Eigen::VectorXd total;                        // weighted sum of normalised terms; -inf if rejected
+  std::array<int, kRejectReasonCount> reject_counts{};  // samples per reason
+  int admissible_count() const { return reject_counts[0]; }
+};
+
+class LocalPlanner {
+ public:
+  LocalPlanner(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& params = {});
+
+  // One control cycle from `state` toward `goal`, heading for `target` (the goal
+  // itself for plain DWA). The reference stays valid until the next call.
+  const PlanResult& plan(const RobotState& state, const Vec2& goal, const ClearanceSource& world);
+  const PlanResult& plan(const RobotState& state, const Vec2& goal, const Vec2& target, const ClearanceSource& world);
+
+  // Weight of a critic by name, e.g. set each cycle by a weight policy.
+  void set_weight(const std::string& critic, double weight);
+  double weight(const std::string& critic) const;
+
+  const RobotLimits& limits() const { return limits_; }
+  const Footprint& footprint() const { return footprint_; }
+  const PlannerParams& params() const { return params_; }
+  const PlanResult& last_result() const { return result_; }
+  // Every sample's rollout of the last cycle.
+  const std::vector<Trajectory>& rollouts() const { return rollouts_; }
+
+ private:
+  std::size_t critic_index(const std::string& name) const;
+  void evaluate_rollouts(const RobotState& state, const ClearanceSource& world);
+  void score_and_choose(const CriticContext& context);
+
+  RobotLimits limits_;
+  Footprint footprint_;
+  PlannerParams params_;
+  int n_steps_;
+  std::vector<std::unique_ptr<Critic>> critics_;
+  std::vector<Trajectory> rollouts_;
+  PlanResult result_;
+};
+
+}  // namespace fgdwa

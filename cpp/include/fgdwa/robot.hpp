@@ -1,0 +1,67 @@
+#pragma once
+// The robot: velocity and acceleration limits, its footprint, and the unicycle
+// motion model used both to predict rollouts and to move the simulated robot.
+#include <vector>
+
+#include "fgdwa/geometry.hpp"
+
+namespace fgdwa {
+
+struct RobotLimits {
+  double v_min = 0.0;        // m/s, slowest forward speed (>= 0: forward only)
+  double v_max = 1.2;        // m/s, fastest forward speed
+  double omega_max = 1.0;    // rad/s, symmetric turn-rate limit
+  double acc_v = 1.0;        // m/s^2, linear acceleration
+  double acc_omega = 2.0;    // rad/s^2, angular acceleration
+  double brake_v = 0.0;      // m/s^2, linear braking deceleration; 0 = same as acc_v
+  double brake_omega = 0.0;  // rad/s^2, angular braking deceleration; 0 = same as acc_omega
+
+  double braking_v() const { return brake_v > 0.0 ? brake_v : acc_v; }
+  double braking_omega() const { return brake_omega > 0.0 ? brake_omega : acc_omega; }
+  // Throws fgdwa::Error naming the first bad field.
+  void validate() const;
+};
+
+struct RobotState {
+  Pose2 pose;
+  Twist twist;
+};
+
+// A circle centred on the robot, or a convex polygon in the robot frame
+// (x forward, y left), vertices in any winding order.
+class Footprint {
+ public:
+  static Footprint circle(double radius);
+  static Footprint polygon(std::vector<Vec2> vertices);
+
+  bool is_circle() const { return vertices_.empty(); }
+  // Circle radius, or the polygon's circumscribed radius about the robot origin.
+  double radius() const { return radius_; }
+  // Largest circle about the robot origin inside the footprint.
+  double inscribed_radius() const { return inscribed_radius_; }
+  // Counter-clockwise vertices in the robot frame; empty for a circle.
+  const std::vector<Vec2>& vertices() const { return vertices_; }
+
+  // Signed distance from the footprint placed at `pose` to the point `p`
+  // (negative inside).
+  double signed_distance(const Pose2& pose, const Vec2& p) const;
+  // Whether the point `p` lies inside the footprint placed at `pose`.
+  bool contains(const Pose2& pose, const Vec2& p) const;
+
+ private:
+  Footprint() = default;
+  double radius_ = 0.0;
+  double inscribed_radius_ = 0.0;
+  std::vector<Vec2> vertices_;
+};
+
+// One unicycle step of length dt: theta first, then the position along the new
+// heading (Figure 2 of the paper): theta += omega dt; x += v cos(theta) dt; y += v sin(theta) dt.
+Pose2 step(const Pose2& pose, const Twist& twist, double dt);
+
+// `n_steps` poses of a constant command, each after one more step; written into
+// `out` (resized) so a control loop can reuse the storage.
+void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out);
+Trajectory rollout(const Pose2& start, const Twist& twist, double dt, int n_steps);
+
+}  // namespace fgdwa

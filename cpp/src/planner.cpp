@@ -1,0 +1,207 @@
+#include "fgdwa/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "validation.hpp"
+
+namespace fgdwa {
+
+const char* to_string(Status status) {
+  switch (status) {
+    case Status::Ok: return "Ok";
+    case Status::NoAdmissibleVelocity: return "NoAdmissibleVelocity";
+    case Status::GoalReached: return "GoalReached";
+  }
+  return "?";
+}
+
+const char* to_string(RejectReason reason) {
+  switch (reason) {
+    case RejectReason::None: return "None";
+    case RejectReason::Collision: return "Collision";
+  }
+  return "?";
+}
+
+const char* to_string(Normalization normalization) {
+  switch (normalization) {
+    case Normalization::Sum: return "sum";
+    case Normalization::MinMax: return "minmax";
+  }
+  return "?";
+}
+
+int PlannerParams::n_steps() const { return static_cast<int>(std::lround(sim_time / dt)); }
+
+void PlannerParams::validate() const {
+  detail::require_positive("dt", dt);
+  detail::require_positive("sim_time", sim_time);
+  if (n_steps() < 1) throw Error(detail::describe("sim_time", sim_time, "must be at least one dt"));
+  window.validate();
+  detail::require_non_negative("goal_tolerance", goal_tolerance);
+  if (critics.empty()) throw Error("critics: at least one critic is needed");
+  for (std::size_t i = 0; i < critics.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (critics[i].name == critics[j].name) throw Error("critics: '" + critics[i].name + "' is listed twice");
+}
+
+LocalPlanner::LocalPlanner(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& params)
+    : limits_(limits), footprint_(footprint), params_(params) {
+  limits_.validate();
+  params_.validate();
+  n_steps_ = params_.n_steps();
+  for (const CriticConfig& config : params_.critics) {
+    critics_.push_back(make_critic(config));
+    result_.critic_names.push_back(config.name);
+    result_.weights.push_back(config.weight);
+  }
+}
+
+std::size_t LocalPlanner::critic_index(const std::string& name) const {
+  for (std::size_t i = 0; i < result_.critic_names.size(); ++i)
+    if (result_.critic_names[i] == name) return i;
+  throw Error("the planner has no critic '" + name + "'");
+}
+
+void LocalPlanner::set_weight(const std::string& critic, double weight) {
+  detail::require_finite("weight of critic '" + critic + "'", weight);
+  result_.weights[critic_index(critic)] = weight;
+}
+
+double LocalPlanner::weight(const std::string& critic) const { return result_.weights[critic_index(critic)]; }
+
+namespace {
+void require_finite_state(const RobotState& s) {
+  detail::require_finite("state x", s.pose.x);
+  detail::require_finite("state y", s.pose.y);
+  detail::require_finite("state theta", s.pose.theta);
+  detail::require_finite("state v", s.twist.v);
+  detail::require_finite("state omega", s.twist.omega);
+}
+}  // namespace
+
+const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, const ClearanceSource& world) {
+  return plan(state, goal, goal, world);
+}
+
+const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, const Vec2& target,
+                                     const ClearanceSource& world) {
+  require_finite_state(state);
+  detail::require_finite("goal x", goal.x());
+  detail::require_finite("goal y", goal.y());
+  detail::require_finite("target x", target.x());
+  detail::require_finite("target y", target.y());
+
+  result_.target = target;
+  result_.best_index = -1;
+  result_.reject_counts.fill(0);
+  if ((goal - state.pose.position()).norm() <= params_.goal_tolerance) {
+    result_.status = Status::GoalReached;
+    result_.command = braking_command(limits_, state.twist, params_.dt);
+    result_.samples.clear();
+    rollouts_.clear();
+    return result_;
+  }
+
+  sample_window(dynamic_window(limits_, state.twist, params_.dt), state.twist, params_.window, result_.samples);
+  evaluate_rollouts(state, world);
+
+  CriticContext context;
+  context.state = state;
+  context.goal = goal;
+  context.target = target;
+  context.dt = params_.dt;
+  context.n_steps = n_steps_;
+  score_and_choose(context);
+
+  if (result_.best_index < 0) {
+    result_.status = Status::NoAdmissibleVelocity;
+    result_.command = braking_command(limits_, state.twist, params_.dt);
+  } else {
+    result_.status = Status::Ok;
+    result_.command = result_.samples[static_cast<std::size_t>(result_.best_index)];
+  }
+  return result_;
+}
+
+void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSource& world) {
+  const std::size_t n = result_.samples.size();
+  rollouts_.resize(n);
+  result_.reasons.resize(n);
+  result_.min_clearance.resize(n);
+  result_.free_distance.resize(n);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Twist& cmd = result_.samples[i];
+    Trajectory& poses = rollouts_[i];
+    rollout(state.pose, cmd, params_.dt, n_steps_, poses);
+    double min_clearance = inf;
+    double free_distance = inf;
+    for (int k = 0; k < n_steps_; ++k) {
+      const double c = world.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt);
+      min_clearance = std::min(min_clearance, c);
+      if (c <= 0.0) {
+        // Contact at pose k + 1: the robot travels k full steps in free space.
+        free_distance = k * cmd.v * params_.dt;
+        break;
+      }
+    }
+    result_.min_clearance[i] = min_clearance;
+    result_.free_distance[i] = free_distance;
+    result_.reasons[i] = is_admissible(cmd, free_distance, limits_) ? RejectReason::None : RejectReason::Collision;
+    ++result_.reject_counts[static_cast<std::size_t>(result_.reasons[i])];
+  }
+}
+
+void LocalPlanner::score_and_choose(const CriticContext& context) {
+  const std::size_t n = result_.samples.size();
+  const std::size_t m = critics_.size();
+  for (auto& critic : critics_) critic->prepare(context);
+  result_.raw.setZero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+  result_.normalized.setZero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+  result_.total.setConstant(static_cast<Eigen::Index>(n), -std::numeric_limits<double>::infinity());
+
+  Rollout r;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (result_.reasons[i] != RejectReason::None) continue;
+    r.command = result_.samples[i];
+    r.poses = &rollouts_[i];
+    r.min_clearance = result_.min_clearance[i];
+    r.free_distance = result_.free_distance[i];
+    for (std::size_t j = 0; j < m; ++j) result_.raw(i, j) = critics_[j]->score(r);
+  }
+  if (result_.admissible_count() == 0) return;
+
+  for (std::size_t j = 0; j < m; ++j) {
+    double sum = 0.0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (result_.reasons[i] != RejectReason::None) continue;
+      sum += result_.raw(i, j);
+      lo = std::min(lo, result_.raw(i, j));
+      hi = std::max(hi, result_.raw(i, j));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (result_.reasons[i] != RejectReason::None) continue;
+      double& out = result_.normalized(i, j);
+      if (params_.normalization == Normalization::Sum)
+        out = sum != 0.0 ? result_.raw(i, j) / sum : 0.0;
+      else
+        out = hi > lo ? (result_.raw(i, j) - lo) / (hi - lo) : 0.0;
+    }
+  }
+  double best = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (result_.reasons[i] != RejectReason::None) continue;
+    double total = 0.0;
+    for (std::size_t j = 0; j < m; ++j) total += result_.weights[j] * result_.normalized(i, j);
+    result_.total(static_cast<Eigen::Index>(i)) = total;
+    if (total > best) {  // strict: ties keep the first sample, deterministically
+      best = total;
+      result_.best_index = static_cast<int>(i);
+    }
+  }
+}
+
+}  // namespace fgdwa

@@ -1,0 +1,136 @@
+#include "fgdwa/robot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "validation.hpp"
+
+namespace fgdwa {
+
+using detail::describe;
+
+void RobotLimits::validate() const {
+  detail::require_non_negative("v_min", v_min);
+  detail::require_positive("v_max", v_max);
+  if (v_min > v_max)
+    throw Error(describe("v_min", v_min, "must be <= v_max = " + std::to_string(v_max)));
+  detail::require_positive("omega_max", omega_max);
+  detail::require_positive("acc_v", acc_v);
+  detail::require_positive("acc_omega", acc_omega);
+  detail::require_non_negative("brake_v", brake_v);
+  detail::require_non_negative("brake_omega", brake_omega);
+}
+
+Footprint Footprint::circle(double radius) {
+  detail::require_positive("footprint radius", radius);
+  Footprint fp;
+  fp.radius_ = radius;
+  fp.inscribed_radius_ = radius;
+  return fp;
+}
+
+namespace {
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+}  // namespace
+
+Footprint Footprint::polygon(std::vector<Vec2> vertices) {
+  if (vertices.size() < 3)
+    throw Error(describe("footprint vertices", vertices.size(), "a polygon needs at least 3 vertices"));
+  for (const Vec2& v : vertices) {
+    detail::require_finite("footprint vertex x", v.x());
+    detail::require_finite("footprint vertex y", v.y());
+  }
+  double area2 = 0.0;
+  const size_t n = vertices.size();
+  for (size_t i = 0; i < n; ++i) area2 += cross(vertices[i], vertices[(i + 1) % n]);
+  if (std::abs(area2) < 1e-12) throw Error("footprint polygon has zero area");
+  if (area2 < 0.0) std::reverse(vertices.begin(), vertices.end());
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 e1 = vertices[(i + 1) % n] - vertices[i];
+    const Vec2 e2 = vertices[(i + 2) % n] - vertices[(i + 1) % n];
+    if (cross(e1, e2) < -1e-12)
+      throw Error(describe("footprint vertex", i + 1, "polygon is not convex at this vertex"));
+  }
+  Footprint fp;
+  fp.vertices_ = std::move(vertices);
+  for (const Vec2& v : fp.vertices_) fp.radius_ = std::max(fp.radius_, v.norm());
+  if (!fp.contains(Pose2{}, Vec2::Zero()))
+    throw Error("footprint polygon must contain the robot origin (0, 0)");
+  fp.inscribed_radius_ = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < n; ++i)
+    fp.inscribed_radius_ = std::min(
+        fp.inscribed_radius_, point_segment_distance(Vec2::Zero(), fp.vertices_[i], fp.vertices_[(i + 1) % n]));
+  return fp;
+}
+
+namespace {
+Vec2 to_robot_frame(const Pose2& pose, const Vec2& p) {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  const double dx = p.x() - pose.x, dy = p.y() - pose.y;
+  return {c * dx + s * dy, -s * dx + c * dy};
+}
+}  // namespace
+
+bool Footprint::contains(const Pose2& pose, const Vec2& p) const {
+  if (is_circle()) return (p - pose.position()).norm() <= radius_;
+  const Vec2 q = to_robot_frame(pose, p);
+  const size_t n = vertices_.size();
+  for (size_t i = 0; i < n; ++i)
+    if (cross(vertices_[(i + 1) % n] - vertices_[i], q - vertices_[i]) < 0.0) return false;
+  return true;
+}
+
+double Footprint::signed_distance(const Pose2& pose, const Vec2& p) const {
+  if (is_circle()) return (p - pose.position()).norm() - radius_;
+  const Vec2 q = to_robot_frame(pose, p);
+  double d = std::numeric_limits<double>::infinity();
+  const size_t n = vertices_.size();
+  for (size_t i = 0; i < n; ++i) d = std::min(d, point_segment_distance(q, vertices_[i], vertices_[(i + 1) % n]));
+  return contains(pose, p) ? -d : d;
+}
+
+Pose2 step(const Pose2& pose, const Twist& twist, double dt) {
+  Pose2 next;
+  next.theta = wrap_angle(pose.theta + twist.omega * dt);
+  next.x = pose.x + twist.v * std::cos(next.theta) * dt;
+  next.y = pose.y + twist.v * std::sin(next.theta) * dt;
+  return next;
+}
+
+void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out) {
+  out.resize(static_cast<size_t>(std::max(n_steps, 0)));
+  // The heading turns by the same angle every step, so its cosine and sine are
+  // advanced by a rotation instead of one sin/cos pair per pose.
+  const double turn = twist.omega * dt;
+  const double cos_turn = std::cos(turn), sin_turn = std::sin(turn);
+  double c = std::cos(start.theta), s = std::sin(start.theta);
+  double x = start.x, y = start.y, theta = wrap_angle(start.theta);
+  const double step_length = twist.v * dt;
+  const double wrapped_turn = wrap_angle(turn);
+  for (int k = 0; k < n_steps; ++k) {
+    const double c_next = c * cos_turn - s * sin_turn;
+    s = s * cos_turn + c * sin_turn;
+    c = c_next;
+    x += step_length * c;
+    y += step_length * s;
+    theta += wrapped_turn;
+    if (theta > M_PI) theta -= 2.0 * M_PI;
+    else if (theta <= -M_PI) theta += 2.0 * M_PI;
+    out[static_cast<size_t>(k)] = Pose2{x, y, theta};
+  }
+}
+
+Trajectory rollout(const Pose2& start, const Twist& twist, double dt, int n_steps) {
+  Trajectory out;
+  rollout(start, twist, dt, n_steps, out);
+  return out;
+}
+
+}  // namespace fgdwa

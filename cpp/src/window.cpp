@@ -1,0 +1,87 @@
+#include "fgdwa/window.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "validation.hpp"
+
+namespace fgdwa {
+
+void WindowParams::validate() const {
+  detail::require_at_least("n_v", n_v, 1);
+  detail::require_at_least("n_omega", n_omega, 1);
+}
+
+bool VelocityWindow::contains(const Twist& t, double tol) const {
+  return t.v >= v_lo - tol && t.v <= v_hi + tol && t.omega >= omega_lo - tol && t.omega <= omega_hi + tol;
+}
+
+namespace {
+// [lo, hi] ∩ [a, b], or the point of [a, b] nearest to [lo, hi] when they miss.
+void intersect(double lo, double hi, double a, double b, double& out_lo, double& out_hi) {
+  out_lo = std::max(lo, a);
+  out_hi = std::min(hi, b);
+  if (out_lo > out_hi) out_lo = out_hi = (a > hi) ? a : b;
+}
+
+void linspace(double lo, double hi, int n, std::vector<double>& out) {
+  out.resize(static_cast<std::size_t>(n));
+  if (n == 1) {
+    out[0] = 0.5 * (lo + hi);
+    return;
+  }
+  for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = lo + (hi - lo) * i / (n - 1);
+  out.back() = hi;
+}
+
+std::size_t nearest(const std::vector<double>& values, double x, std::size_t skip) {
+  std::size_t best = values.size();
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (i != skip && (best == values.size() || std::abs(values[i] - x) < std::abs(values[best] - x))) best = i;
+  return best;
+}
+
+void snap(std::vector<double>& values, double x, double lo, double hi, std::size_t skip, std::size_t& snapped) {
+  snapped = values.size();
+  if (x < lo || x > hi) return;
+  snapped = nearest(values, x, skip);
+  if (snapped < values.size()) values[snapped] = x;
+}
+}  // namespace
+
+VelocityWindow dynamic_window(const RobotLimits& limits, const Twist& current, double dt) {
+  VelocityWindow w;
+  intersect(limits.v_min, limits.v_max, current.v - limits.acc_v * dt, current.v + limits.acc_v * dt, w.v_lo, w.v_hi);
+  intersect(-limits.omega_max, limits.omega_max, current.omega - limits.acc_omega * dt,
+            current.omega + limits.acc_omega * dt, w.omega_lo, w.omega_hi);
+  return w;
+}
+
+void sample_window(const VelocityWindow& w, const Twist& current, const WindowParams& params,
+                   std::vector<Twist>& out) {
+  thread_local std::vector<double> vs, ws;
+  linspace(w.v_lo, w.v_hi, params.n_v, vs);
+  linspace(w.omega_lo, w.omega_hi, params.n_omega, ws);
+  std::size_t v_index = 0, omega_index = 0, zero_index = 0;
+  snap(vs, current.v, w.v_lo, w.v_hi, vs.size(), v_index);
+  snap(ws, 0.0, w.omega_lo, w.omega_hi, ws.size(), zero_index);
+  if (zero_index == ws.size() || current.omega != 0.0)
+    snap(ws, current.omega, w.omega_lo, w.omega_hi, zero_index, omega_index);
+  out.resize(vs.size() * ws.size());
+  std::size_t k = 0;
+  for (double v : vs)
+    for (double omega : ws) out[k++] = Twist{v, omega};
+}
+
+bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits) {
+  if (std::isinf(free_distance)) return true;
+  return command.v <= std::sqrt(2.0 * free_distance * limits.braking_v()) &&
+         std::abs(command.omega) <= std::sqrt(2.0 * free_distance * limits.braking_omega());
+}
+
+Twist braking_command(const RobotLimits& limits, const Twist& current, double dt) {
+  const VelocityWindow w = dynamic_window(limits, current, dt);
+  return Twist{std::clamp(0.0, w.v_lo, w.v_hi), std::clamp(0.0, w.omega_lo, w.omega_hi)};
+}
+
+}  // namespace fgdwa
