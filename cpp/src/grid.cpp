@@ -53,7 +53,7 @@ constexpr double kFar = 1e30;
 
 // 1-D squared distance transform of a sampled function: the lower envelope of
 // the parabolas rooted at each sample.
-void distance_transform_1d(const double* f, int n, double* d, std::vector<int>& v, std::vector<double>& z) {
+void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vector<int>& v, std::vector<double>& z) {
   int k = 0;
   v[0] = 0;
   z[0] = -kInf;
@@ -76,59 +76,93 @@ void distance_transform_1d(const double* f, int n, double* d, std::vector<int>& 
     while (z[k + 1] < q) ++k;
     const double diff = q - v[k];
     d[q] = diff * diff + f[v[k]];
+    arg[q] = v[k];
   }
 }
 }  // namespace
 
 DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   const int rows = grid.rows(), cols = grid.cols();
-  std::vector<double> squared(static_cast<std::size_t>(rows) * cols);
-  for (std::size_t i = 0; i < squared.size(); ++i) squared[i] = grid.cells()[i] != 0 ? 0.0 : kFar;
+  const std::size_t n_cells = static_cast<std::size_t>(rows) * cols;
+  std::vector<double> squared(n_cells);
+  for (std::size_t i = 0; i < n_cells; ++i) squared[i] = grid.cells()[i] != 0 ? 0.0 : kFar;
   has_obstacles_ = grid.occupied_count() > 0;
 
+  // Columns first (nearest obstacle row per column), then rows, keeping the
+  // argmin of each pass so every cell knows its nearest occupied cell.
   const int n = std::max(rows, cols);
   std::vector<double> f(n), d(n), z(n + 1);
-  std::vector<int> v(n);
+  std::vector<int> v(n), arg(n);
+  std::vector<int> nearest_row(n_cells), nearest_col(n_cells);
   for (int c = 0; c < cols; ++c) {
     for (int r = 0; r < rows; ++r) f[r] = squared[grid.index(r, c)];
-    distance_transform_1d(f.data(), rows, d.data(), v, z);
-    for (int r = 0; r < rows; ++r) squared[grid.index(r, c)] = d[r];
+    distance_transform_1d(f.data(), rows, d.data(), arg.data(), v, z);
+    for (int r = 0; r < rows; ++r) {
+      squared[grid.index(r, c)] = d[r];
+      nearest_row[grid.index(r, c)] = arg[r];
+    }
   }
   for (int r = 0; r < rows; ++r) {
     double* row = &squared[grid.index(r, 0)];
     std::copy(row, row + cols, f.begin());
-    distance_transform_1d(f.data(), cols, row, v, z);
+    distance_transform_1d(f.data(), cols, row, arg.data(), v, z);
+    for (int c = 0; c < cols; ++c) nearest_col[grid.index(r, c)] = arg[c];
   }
-  distances_.resize(squared.size());
-  for (std::size_t i = 0; i < squared.size(); ++i)
-    distances_[i] = squared[i] >= 0.5 * kFar ? kInf : std::sqrt(squared[i]) * grid.resolution();
+  distances_.resize(n_cells);
+  std::vector<Vec2> nearest(n_cells);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const std::size_t i = grid.index(r, c);
+      const bool far = squared[i] >= 0.5 * kFar;
+      distances_[i] = far ? kInf : std::sqrt(squared[i]) * grid.resolution();
+      const int col = nearest_col[i];
+      nearest[i] = far ? Vec2(kInf, kInf) : grid.cell_center(nearest_row[grid.index(r, col)], col);
+    }
+
+  // The obstacle square nearest to a point is the one nearest to a cell centre
+  // close to it: each cell keeps the distinct nearest obstacles of the cells
+  // within two of it, usually one to three.
+  candidate_start_.assign(n_cells + 1, 0);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      const std::size_t first = candidates_.size();
+      for (int dr = -2; dr <= 2; ++dr)
+        for (int dc = -2; dc <= 2; ++dc) {
+          const int rr = std::clamp(r + dr, 0, rows - 1), cc = std::clamp(c + dc, 0, cols - 1);
+          const Vec2& o = nearest[grid.index(rr, cc)];
+          if (!std::isfinite(o.x())) continue;
+          if (std::find(candidates_.begin() + static_cast<std::ptrdiff_t>(first), candidates_.end(), o) ==
+              candidates_.end())
+            candidates_.push_back(o);
+        }
+      candidate_start_[grid.index(r, c) + 1] = candidates_.size();
+    }
 }
 
 double DistanceField::distance(const Vec2& p) const {
   if (!has_obstacles_) return kInf;
   const double res = grid_.resolution();
+  const double half = 0.5 * res;
   const int rows = grid_.rows(), cols = grid_.cols();
   // Outside the grid: obstacles all lie inside it, so from the projection q of p
-  // onto the grid's rectangle, |p - o|^2 >= |q - o|^2 + |p - q|^2 for every o.
-  const Vec2 lo = grid_.origin();
+  // onto the grid's rectangle, |p - o|^2 >= |q - o|^2 + |p - q|^2 for every o (a
+  // lower bound, exact when p faces the nearest obstacle squarely).
+  const Vec2& lo = grid_.origin();
   const Vec2 hi = lo + Vec2(cols * res, rows * res);
   const Vec2 q(std::clamp(p.x(), lo.x(), hi.x()), std::clamp(p.y(), lo.y(), hi.y()));
   const double outside = (p - q).squaredNorm();
 
-  int row, col;
-  if (outside == 0.0 && grid_.cell_of(q, row, col) && grid_.occupied(row, col)) return 0.0;
-
-  // Bilinear interpolation between the four surrounding cell centres.
-  const double gx = std::clamp((q.x() - lo.x()) / res - 0.5, 0.0, cols - 1.0);
-  const double gy = std::clamp((q.y() - lo.y()) / res - 0.5, 0.0, rows - 1.0);
-  const int c0 = std::min(static_cast<int>(gx), cols - 1), r0 = std::min(static_cast<int>(gy), rows - 1);
-  const int c1 = std::min(c0 + 1, cols - 1), r1 = std::min(r0 + 1, rows - 1);
-  const double tx = gx - c0, ty = gy - r0;
-  const double d00 = distances_[grid_.index(r0, c0)], d01 = distances_[grid_.index(r0, c1)];
-  const double d10 = distances_[grid_.index(r1, c0)], d11 = distances_[grid_.index(r1, c1)];
-  const double centre = (1 - ty) * ((1 - tx) * d00 + tx * d01) + ty * ((1 - tx) * d10 + tx * d11);
-  const double inside = std::max(centre - 0.5 * res, 0.0);
-  return outside == 0.0 ? inside : std::sqrt(inside * inside + outside);
+  const int col = std::clamp(static_cast<int>(std::floor((q.x() - lo.x()) / res)), 0, cols - 1);
+  const int row = std::clamp(static_cast<int>(std::floor((q.y() - lo.y()) / res)), 0, rows - 1);
+  const std::size_t cell = grid_.index(row, col);
+  double best = kInf;
+  for (std::size_t k = candidate_start_[cell]; k < candidate_start_[cell + 1]; ++k) {
+    const Vec2& o = candidates_[k];
+    const double dx = std::max(std::abs(q.x() - o.x()) - half, 0.0);
+    const double dy = std::max(std::abs(q.y() - o.y()) - half, 0.0);
+    best = std::min(best, dx * dx + dy * dy);
+  }
+  return std::sqrt(best + outside);
 }
 
 }  // namespace fgdwa

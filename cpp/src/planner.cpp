@@ -33,6 +33,14 @@ const char* to_string(Normalization normalization) {
   return "?";
 }
 
+const char* to_string(BrakingModel braking) {
+  switch (braking) {
+    case BrakingModel::Continuous: return "continuous";
+    case BrakingModel::Discrete: return "discrete";
+  }
+  return "?";
+}
+
 int PlannerParams::n_steps() const { return static_cast<int>(std::lround(sim_time / dt)); }
 
 void PlannerParams::validate() const {
@@ -150,7 +158,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     }
     result_.min_clearance[i] = min_clearance;
     result_.free_distance[i] = free_distance;
-    result_.reasons[i] = is_admissible(cmd, free_distance, limits_) ? RejectReason::None : RejectReason::Collision;
+    result_.reasons[i] = is_admissible(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;
     ++result_.reject_counts[static_cast<std::size_t>(result_.reasons[i])];
   }
 }

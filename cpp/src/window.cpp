@@ -73,10 +73,20 @@ void sample_window(const VelocityWindow& w, const Twist& current, const WindowPa
     for (double omega : ws) out[k++] = Twist{v, omega};
 }
 
-bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits) {
+double stopping_distance(double v, double deceleration, double dt) {
+  if (v <= 0.0) return 0.0;
+  const double drop = deceleration * dt;
+  const double m = std::floor(v / drop);  // periods after the first with speed left
+  return dt * ((m + 1.0) * v - drop * m * (m + 1.0) / 2.0);
+}
+
+bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits, double dt,
+                   BrakingModel model) {
   if (std::isinf(free_distance)) return true;
-  return command.v <= std::sqrt(2.0 * free_distance * limits.braking_v()) &&
-         std::abs(command.omega) <= std::sqrt(2.0 * free_distance * limits.braking_omega());
+  const bool v_ok = model == BrakingModel::Continuous
+                        ? command.v <= std::sqrt(2.0 * free_distance * limits.braking_v())
+                        : stopping_distance(command.v, std::min(limits.acc_v, limits.braking_v()), dt) <= free_distance;
+  return v_ok && std::abs(command.omega) <= std::sqrt(2.0 * free_distance * limits.braking_omega());
 }
 
 Twist braking_command(const RobotLimits& limits, const Twist& current, double dt) {

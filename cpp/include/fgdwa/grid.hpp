@@ -46,9 +46,9 @@ class OccupancyGrid {
 // centre to the nearest occupied cell's centre, in metres (0 on occupied cells,
 // +inf when the grid has no obstacle); it equals scipy's
 // distance_transform_edt(grid == 0) * resolution.
-// `distance(p)` estimates the distance from a point to the nearest occupied
-// cell's edge: the centre distances interpolated bilinearly at `p`, less half a
-// cell, and 0 inside an occupied cell. It stays within one cell of the exact value.
+// `distance(p)` is the distance from a point to the nearest occupied cell's
+// square (0 inside one), measured exactly to the nearest obstacles of the cells
+// around `p`; outside the grid it is a lower bound.
 class DistanceField {
  public:
   explicit DistanceField(const OccupancyGrid& grid);
@@ -62,6 +62,10 @@ class DistanceField {
  private:
   OccupancyGrid grid_;
   std::vector<double> distances_;
+  // Per cell, the centres of the obstacles that can be nearest to a point in it
+  // (compressed rows: cell i owns candidates_[candidate_start_[i] .. candidate_start_[i + 1])).
+  std::vector<std::size_t> candidate_start_;
+  std::vector<Vec2> candidates_;
   bool has_obstacles_ = false;
 };
 

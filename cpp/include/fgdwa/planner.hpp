@@ -39,12 +39,14 @@ enum class Normalization : std::uint8_t {
 const char* to_string(Status status);
 const char* to_string(RejectReason reason);
 const char* to_string(Normalization normalization);
+const char* to_string(BrakingModel braking);
 
 struct PlannerParams {
   double dt = 0.15;             // s, control period and rollout step
   double sim_time = 3.0;        // s, rollout horizon ("perDT")
   WindowParams window;          // sample counts
   Normalization normalization = Normalization::Sum;
+  BrakingModel braking = BrakingModel::Discrete;  // admissibility (Eq. 3); Continuous is the paper's literal form
   double goal_tolerance = 0.3;  // m, GoalReached within this distance of the goal
   std::vector<CriticConfig> critics = {
       {"heading", 0.5, {}}, {"clearance", 0.15, {}}, {"velocity", 1.0, {}}};  // Table 5

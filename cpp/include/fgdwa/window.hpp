@@ -1,6 +1,7 @@
 #pragma once
 // The dynamic window (Eqs. 1-3): the velocities reachable within one control
 // period, sampled on a grid, and the admissibility test of a sampled command.
+#include <cstdint>
 #include <vector>
 
 #include "fgdwa/geometry.hpp"
@@ -31,9 +32,25 @@ VelocityWindow dynamic_window(const RobotLimits& limits, const Twist& current, d
 void sample_window(const VelocityWindow& window, const Twist& current, const WindowParams& params,
                    std::vector<Twist>& out);
 
-// Eq. 3: v <= sqrt(2 dist brake_v) and |omega| <= sqrt(2 dist brake_omega), where
-// `free_distance` is the arc length travelled before first contact (+inf if none).
-bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits);
+// How the linear-velocity half of Eq. 3 counts the distance needed to stop.
+enum class BrakingModel : std::uint8_t {
+  // Eq. 3 as written: v <= sqrt(2 dist brake_v), braking starting at once and
+  // continuously.
+  Continuous,
+  // The robot drives the command for one control period, then slows by
+  // min(acc_v, brake_v) dt per period, as the window lets it:
+  // stopping_distance(v) <= dist. Without the period of latency, Eq. 3 admits
+  // commands that the stepped deceleration cannot stop in time.
+  Discrete,
+};
+
+// Distance covered by the Discrete model from speed v: dt sum_j max(v - j b dt, 0), j >= 0.
+double stopping_distance(double v, double deceleration, double dt);
+
+// Eq. 3: the v condition per the braking model, and |omega| <= sqrt(2 dist brake_omega),
+// where `free_distance` is the arc length travelled before first contact (+inf if none).
+bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits, double dt,
+                   BrakingModel model = BrakingModel::Discrete);
 
 // The strongest braking toward (0, 0) that the window allows.
 Twist braking_command(const RobotLimits& limits, const Twist& current, double dt);
