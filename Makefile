@@ -1,0 +1,64 @@
+# The README's commands. Each target sets up what is missing first: Debian
+# packages (apt-get), the virtual environment, the package; then runs.
+PYTHON ?= python3
+VENV ?= .venv
+BUILD ?= build/cmake
+OUT ?= out
+JOBS ?= 2
+APT_PACKAGES := libeigen3-dev libfcl-dev libompl-dev libboost-serialization-dev \
+	libboost-filesystem-dev libboost-system-dev libgtest-dev libbenchmark-dev
+
+BIN := $(VENV)/bin
+SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*')
+
+.PHONY: setup system-packages demo test test-cpp test-python bench clean
+
+setup: system-packages $(VENV)/.installed
+
+system-packages:
+	@missing=""; for p in $(APT_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" != "0" ]; then \
+	    echo "fgdwa needs these Debian packages:$$missing"; \
+	    echo "Install them as root, then run make again:"; \
+	    echo "  sudo apt-get update && sudo apt-get install -y$$missing"; \
+	    exit 1; \
+	  fi; \
+	  echo "Installing Debian packages:$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BIN)/python:
+	$(PYTHON) -m venv $(VENV)
+
+$(VENV)/.tools: | $(BIN)/python
+	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q "scikit-build-core>=0.8" "pybind11>=2.11" "cmake>=3.16" ninja
+	touch $@
+
+$(VENV)/.installed: $(SOURCES) | $(VENV)/.tools
+	$(BIN)/python -m pip install -q --no-build-isolation ".[test]"
+	touch $@
+
+$(BUILD)/build.ninja: CMakeLists.txt | $(VENV)/.tools
+	$(BIN)/cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \
+	  -DFGDWA_BUILD_BENCHMARKS=ON -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja
+
+demo: setup
+	$(BIN)/fgdwa demo --out $(OUT)/demo
+
+test: setup test-cpp test-python
+
+test-cpp: system-packages $(BUILD)/build.ninja
+	$(BIN)/cmake --build $(BUILD) -j $(JOBS)
+	$(BIN)/ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+test-python: setup
+	$(BIN)/python -m pytest -q tests/python
+
+bench: system-packages $(BUILD)/build.ninja
+	$(BIN)/cmake --build $(BUILD) -j $(JOBS) --target bench_planner
+	$(BUILD)/cpp/bench/bench_planner
+
+clean:
+	rm -rf build $(OUT) $(VENV)

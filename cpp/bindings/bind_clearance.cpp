@@ -1,0 +1,60 @@
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <sstream>
+
+#include "bind_common.hpp"
+#include "convert.hpp"
+#include "fgdwa/clearance.hpp"
+
+namespace py = pybind11;
+using namespace fgdwa;
+using namespace fgdwa::py_convert;
+
+void init_clearance(py::module_& m) {
+  py::class_<Disc>(m, "Disc", "A disc obstacle moving at constant velocity; radius 0 is a point.")
+      .def(py::init([](py::handle center, double radius, py::handle velocity) {
+             Disc d{to_vec2(center, "center"), radius, to_vec2(velocity, "velocity")};
+             d.validate();
+             return d;
+           }),
+           py::arg("center"), py::arg("radius") = 0.0, py::arg("velocity") = py::make_tuple(0.0, 0.0))
+      .def_property_readonly("center", [](const Disc& d) { return py::make_tuple(d.center.x(), d.center.y()); })
+      .def_readonly("radius", &Disc::radius)
+      .def_property_readonly("velocity", [](const Disc& d) { return py::make_tuple(d.velocity.x(), d.velocity.y()); })
+      .def("center_at", [](const Disc& d, double t) {
+        const Vec2 c = d.center_at(t);
+        return py::make_tuple(c.x(), c.y());
+      }, py::arg("t"))
+      .def("__repr__", [](const Disc& d) {
+        std::ostringstream s;
+        s << "Disc(center=(" << d.center.x() << ", " << d.center.y() << "), radius=" << d.radius << ", velocity=("
+          << d.velocity.x() << ", " << d.velocity.y() << "))";
+        return s.str();
+      });
+
+  py::class_<ClearanceSource, std::shared_ptr<ClearanceSource>>(
+      m, "ClearanceSource", "Where a rollout's clearance comes from (FieldClearance or CollisionWorld).")
+      .def(
+          "clearance",
+          [](const ClearanceSource& s, const Footprint& fp, py::handle poses, double t) {
+            return clearances(s, fp, poses, t);
+          },
+          py::arg("footprint"), py::arg("poses"), py::arg("t") = 0.0,
+          "Clearance in metres of the footprint at each of (n, 3) poses (or one pose), moving obstacles "
+          "predicted t seconds ahead; <= 0 means contact.");
+
+  py::class_<FieldClearance, ClearanceSource, std::shared_ptr<FieldClearance>>(
+      m, "FieldClearance", "The fast clearance: a distance field of the static map plus analytic discs.")
+      .def(py::init([](std::shared_ptr<const DistanceField> field, std::vector<Disc> discs) {
+             return std::make_shared<FieldClearance>(std::move(field), std::move(discs));
+           }),
+           py::arg("field") = nullptr, py::arg("discs") = std::vector<Disc>{})
+      .def_property("discs", &FieldClearance::discs, &FieldClearance::set_discs)
+      .def_property_readonly("field", [](const FieldClearance& f) { return std::const_pointer_cast<DistanceField>(f.field()); })
+      .def("__repr__", [](const FieldClearance& f) {
+        return "FieldClearance(field=" + std::string(f.field() ? "yes" : "None") +
+               ", discs=" + std::to_string(f.discs().size()) + ")";
+      });
+}

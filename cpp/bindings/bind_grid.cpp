@@ -1,0 +1,110 @@
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <memory>
+#include <sstream>
+
+#include "convert.hpp"
+#include "fgdwa/grid.hpp"
+
+namespace py = pybind11;
+using namespace fgdwa;
+using namespace fgdwa::py_convert;
+
+namespace {
+OccupancyGrid grid_from_array(py::handle cells, double resolution, py::handle origin) {
+  py::array array;
+  try {
+    array = py::array::ensure(cells);
+  } catch (const py::error_already_set&) {
+  }
+  if (!array) throw Error("cells: expected a 2-D numpy array");
+  const char kind = array.dtype().kind();
+  if (!(kind == 'b' || (kind == 'u' && array.itemsize() == 1)))
+    throw Error("cells: expected dtype uint8 or bool (1 = obstacle), got " + std::string(py::str(array.dtype())));
+  if (array.ndim() != 2) throw Error("cells: expected a 2-D array, got " + std::to_string(array.ndim()) + " dimensions");
+  if (array.shape(0) == 0 || array.shape(1) == 0) throw Error("cells: the grid is empty");
+  auto c = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(array);
+  std::vector<std::uint8_t> data(c.data(), c.data() + c.size());
+  return OccupancyGrid(static_cast<int>(c.shape(0)), static_cast<int>(c.shape(1)), resolution,
+                       to_vec2(origin, "origin"), std::move(data));
+}
+
+py::array_t<std::uint8_t> cells_array(const OccupancyGrid& g) {
+  py::array_t<std::uint8_t> out({g.rows(), g.cols()});
+  std::copy(g.cells().begin(), g.cells().end(), out.mutable_data());
+  return out;
+}
+}  // namespace
+
+void init_grid(py::module_& m) {
+  py::class_<OccupancyGrid>(m, "OccupancyGrid",
+                            "An occupancy grid: cells[row, col], row 0 at the bottom (lowest y), 1 = obstacle. "
+                            "Cell (row, col) covers x in origin.x + [col, col + 1) * resolution and "
+                            "y in origin.y + [row, row + 1) * resolution. Outside the grid is free.")
+      .def(py::init(&grid_from_array), py::arg("cells"), py::arg("resolution"),
+           py::arg("origin") = py::make_tuple(0.0, 0.0))
+      .def_property_readonly("rows", &OccupancyGrid::rows)
+      .def_property_readonly("cols", &OccupancyGrid::cols)
+      .def_property_readonly("shape", [](const OccupancyGrid& g) { return py::make_tuple(g.rows(), g.cols()); })
+      .def_property_readonly("resolution", &OccupancyGrid::resolution)
+      .def_property_readonly("origin",
+                             [](const OccupancyGrid& g) { return py::make_tuple(g.origin().x(), g.origin().y()); })
+      .def_property_readonly("cells", &cells_array, "A copy of the cells, (rows, cols) uint8.")
+      .def_property_readonly("extent",
+                             [](const OccupancyGrid& g) {
+                               const double x0 = g.origin().x(), y0 = g.origin().y();
+                               return py::make_tuple(x0, x0 + g.cols() * g.resolution(), y0,
+                                                     y0 + g.rows() * g.resolution());
+                             },
+                             "(x_min, x_max, y_min, y_max) in metres, as matplotlib's imshow takes it.")
+      .def(
+          "occupied_at",
+          [](const OccupancyGrid& g, py::handle points) {
+            auto pts = to_points(points, "points");
+            py::array_t<bool> out(static_cast<py::ssize_t>(pts.size()));
+            for (std::size_t i = 0; i < pts.size(); ++i) out.mutable_data()[i] = g.occupied_at(pts[i]);
+            return out;
+          },
+          py::arg("points"), "Whether each of (n, 2) points lies in an occupied cell.")
+      .def("cell_center", [](const OccupancyGrid& g, int row, int col) {
+        if (!g.in_bounds(row, col)) throw Error("cell (" + std::to_string(row) + ", " + std::to_string(col) + ") is outside the grid");
+        const Vec2 c = g.cell_center(row, col);
+        return py::make_tuple(c.x(), c.y());
+      }, py::arg("row"), py::arg("col"))
+      .def("__repr__", [](const OccupancyGrid& g) {
+        std::ostringstream s;
+        s << "OccupancyGrid(" << g.rows() << "x" << g.cols() << ", resolution=" << g.resolution() << ", origin=("
+          << g.origin().x() << ", " << g.origin().y() << "), occupied=" << g.occupied_count() << ")";
+        return s.str();
+      });
+
+  py::class_<DistanceField, std::shared_ptr<DistanceField>>(
+      m, "DistanceField",
+      "Exact Euclidean distance transform of a grid. `cells` holds centre-to-centre distances in metres "
+      "(scipy's distance_transform_edt(cells == 0) * resolution); `distance(points)` estimates the distance "
+      "to the nearest obstacle cell's edge, within one cell of the exact value.")
+      .def(py::init<const OccupancyGrid&>(), py::arg("grid"))
+      .def_property_readonly("grid", &DistanceField::grid)
+      .def_property_readonly("cells",
+                             [](const DistanceField& f) {
+                               py::array_t<double> out({f.grid().rows(), f.grid().cols()});
+                               std::copy(f.cell_distances().begin(), f.cell_distances().end(), out.mutable_data());
+                               return out;
+                             })
+      .def(
+          "distance",
+          [](const DistanceField& f, py::handle points) {
+            auto pts = to_points(points, "points");
+            py::array_t<double> out(static_cast<py::ssize_t>(pts.size()));
+            for (std::size_t i = 0; i < pts.size(); ++i) out.mutable_data()[i] = f.distance(pts[i]);
+            return out;
+          },
+          py::arg("points"), "Distance in metres from each of (n, 2) points to the nearest obstacle edge.")
+      .def("__repr__", [](const DistanceField& f) {
+        std::ostringstream s;
+        s << "DistanceField(" << f.grid().rows() << "x" << f.grid().cols() << ", resolution=" << f.grid().resolution()
+          << ")";
+        return s.str();
+      });
+}

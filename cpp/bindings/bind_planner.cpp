@@ -1,0 +1,205 @@
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <sstream>
+
+#include "convert.hpp"
+#include "fgdwa/planner.hpp"
+
+namespace py = pybind11;
+using namespace fgdwa;
+using namespace fgdwa::py_convert;
+
+namespace {
+CriticConfig critic_from_python(py::handle item) {
+  CriticConfig c;
+  if (py::isinstance<CriticConfig>(item)) {
+    c = item.cast<CriticConfig>();
+  } else if (py::isinstance<py::dict>(item)) {
+    auto d = item.cast<py::dict>();
+    for (auto kv : d) {
+      const auto key = kv.first.cast<std::string>();
+      if (key != "name" && key != "weight" && key != "params")
+        throw Error("critics: unknown key '" + key + "' (expected name, weight, params)");
+    }
+    if (!d.contains("name")) throw Error("critics: an entry has no 'name'");
+    c.name = d["name"].cast<std::string>();
+    if (d.contains("weight")) c.weight = d["weight"].cast<double>();
+    if (d.contains("params")) c.params = d["params"].cast<std::map<std::string, double>>();
+  } else if (py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item)) {
+    auto t = item.cast<py::sequence>();
+    if (t.size() < 2 || t.size() > 3) throw Error("critics: a tuple entry is (name, weight[, params])");
+    c.name = t[0].cast<std::string>();
+    c.weight = t[1].cast<double>();
+    if (t.size() == 3) c.params = t[2].cast<std::map<std::string, double>>();
+  } else {
+    throw Error("critics: each entry is a CriticConfig, a dict or a (name, weight[, params]) tuple, got " +
+                std::string(py::str(py::type::of(item))));
+  }
+  make_critic(c);
+  return c;
+}
+
+BrakingModel braking_from_string(const std::string& name) {
+  if (name == "discrete") return BrakingModel::Discrete;
+  if (name == "continuous") return BrakingModel::Continuous;
+  throw Error("braking = '" + name + "': expected 'discrete' or 'continuous'");
+}
+
+Normalization normalization_from_string(const std::string& name) {
+  if (name == "sum") return Normalization::Sum;
+  if (name == "minmax") return Normalization::MinMax;
+  throw Error("normalization = '" + name + "': expected 'sum' or 'minmax'");
+}
+
+py::array_t<double> twists_array(const std::vector<Twist>& samples) {
+  py::array_t<double> out({static_cast<py::ssize_t>(samples.size()), py::ssize_t{2}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    a(i, 0) = samples[i].v;
+    a(i, 1) = samples[i].omega;
+  }
+  return out;
+}
+}  // namespace
+
+void init_planner(py::module_& m) {
+  py::enum_<Status>(m, "Status", "Outcome of one control cycle.")
+      .value("Ok", Status::Ok)
+      .value("NoAdmissibleVelocity", Status::NoAdmissibleVelocity)
+      .value("GoalReached", Status::GoalReached);
+  py::enum_<RejectReason>(m, "RejectReason", "Why a sampled command was rejected.")
+      .value("None_", RejectReason::None)
+      .value("Collision", RejectReason::Collision);
+
+  py::class_<PlannerParams>(m, "PlannerParams", "Parameters of the local planner (SI units).")
+      .def(py::init([](double dt, double sim_time, int n_v, int n_omega, const std::string& normalization,
+                       const std::string& braking, double goal_tolerance, py::object critics) {
+             PlannerParams p;
+             p.dt = dt;
+             p.sim_time = sim_time;
+             p.window.n_v = n_v;
+             p.window.n_omega = n_omega;
+             p.normalization = normalization_from_string(normalization);
+             p.braking = braking_from_string(braking);
+             p.goal_tolerance = goal_tolerance;
+             if (!critics.is_none()) {
+               p.critics.clear();
+               for (auto item : critics) p.critics.push_back(critic_from_python(item));
+             }
+             p.validate();
+             return p;
+           }),
+           py::arg("dt") = 0.15, py::arg("sim_time") = 3.0, py::arg("n_v") = 21, py::arg("n_omega") = 21,
+           py::arg("normalization") = "sum", py::arg("braking") = "discrete", py::arg("goal_tolerance") = 0.3, py::arg("critics") = py::none(),
+           "dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample "
+           "counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance "
+           "with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts "
+           "or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0).")
+      .def_readonly("dt", &PlannerParams::dt)
+      .def_readonly("sim_time", &PlannerParams::sim_time)
+      .def_property_readonly("n_v", [](const PlannerParams& p) { return p.window.n_v; })
+      .def_property_readonly("n_omega", [](const PlannerParams& p) { return p.window.n_omega; })
+      .def_property_readonly("normalization", [](const PlannerParams& p) { return std::string(to_string(p.normalization)); })
+      .def_property_readonly("braking", [](const PlannerParams& p) { return std::string(to_string(p.braking)); })
+      .def_readonly("goal_tolerance", &PlannerParams::goal_tolerance)
+      .def_readonly("critics", &PlannerParams::critics)
+      .def_property_readonly("n_steps", &PlannerParams::n_steps)
+      .def("__repr__", [](const PlannerParams& p) {
+        std::ostringstream s;
+        s << "PlannerParams(dt=" << p.dt << ", sim_time=" << p.sim_time << ", n_v=" << p.window.n_v
+          << ", n_omega=" << p.window.n_omega << ", normalization='" << to_string(p.normalization)
+          << "', braking='" << to_string(p.braking) << "', goal_tolerance=" << p.goal_tolerance << ", critics=[";
+        for (std::size_t i = 0; i < p.critics.size(); ++i)
+          s << (i ? ", " : "") << "('" << p.critics[i].name << "', " << p.critics[i].weight << ")";
+        s << "])";
+        return s.str();
+      });
+
+  py::class_<PlanResult>(m, "PlanResult", "One control cycle's command, status and per-sample diagnostics.")
+      .def_readonly("status", &PlanResult::status)
+      .def_readonly("command", &PlanResult::command)
+      .def_readonly("best_index", &PlanResult::best_index)
+      .def_property_readonly("target", [](const PlanResult& r) { return py::make_tuple(r.target.x(), r.target.y()); })
+      .def_readonly("critic_names", &PlanResult::critic_names)
+      .def_readonly("weights", &PlanResult::weights)
+      .def_property_readonly("samples", [](const PlanResult& r) { return twists_array(r.samples); },
+                             "(n, 2) sampled commands (v, omega).")
+      .def_property_readonly("admissible",
+                             [](const PlanResult& r) {
+                               py::array_t<bool> out(static_cast<py::ssize_t>(r.reasons.size()));
+                               for (std::size_t i = 0; i < r.reasons.size(); ++i)
+                                 out.mutable_data()[i] = r.reasons[i] == RejectReason::None;
+                               return out;
+                             })
+      .def_property_readonly("reasons",
+                             [](const PlanResult& r) {
+                               py::list out;
+                               for (RejectReason reason : r.reasons) out.append(to_string(reason));
+                               return out;
+                             },
+                             "Per sample: 'None' (admissible) or the reject reason.")
+      .def_property_readonly("reject_counts",
+                             [](const PlanResult& r) {
+                               py::dict out;
+                               for (std::size_t i = 0; i < kRejectReasonCount; ++i)
+                                 out[to_string(static_cast<RejectReason>(i))] = r.reject_counts[i];
+                               return out;
+                             })
+      .def_property_readonly("min_clearance", [](const PlanResult& r) { return py::array_t<double>(r.min_clearance.size(), r.min_clearance.data()); })
+      .def_property_readonly("free_distance", [](const PlanResult& r) { return py::array_t<double>(r.free_distance.size(), r.free_distance.data()); })
+      .def_readonly("raw", &PlanResult::raw, "(n, critics) raw terms; 0 for rejected samples.")
+      .def_readonly("normalized", &PlanResult::normalized, "(n, critics) normalised terms; 0 for rejected samples.")
+      .def_readonly("total", &PlanResult::total, "(n,) weighted totals; -inf for rejected samples.")
+      .def("__repr__", [](const PlanResult& r) {
+        std::ostringstream s;
+        s << "PlanResult(status=" << to_string(r.status) << ", command=(" << r.command.v << ", " << r.command.omega
+          << "), admissible=" << r.admissible_count() << "/" << r.samples.size() << ")";
+        return s.str();
+      });
+
+  py::class_<LocalPlanner>(m, "LocalPlanner",
+                           "The dynamic window planner: one control cycle in, one command and its diagnostics out.")
+      .def(py::init<const RobotLimits&, const Footprint&, const PlannerParams&>(), py::arg("limits"),
+           py::arg("footprint"), py::arg("params") = PlannerParams{})
+      .def(
+          "plan",
+          [](LocalPlanner& p, const RobotState& state, py::handle goal, const ClearanceSource& world, py::object target) {
+            const Vec2 g = to_vec2(goal, "goal");
+            const Vec2 t = target.is_none() ? g : to_vec2(target, "target");
+            return p.plan(state, g, t, world);
+          },
+          py::arg("state"), py::arg("goal"), py::arg("world"), py::arg("target") = py::none(),
+          "One control cycle toward `goal`; the heading aims at `target` (default: the goal).")
+      .def("set_weight", &LocalPlanner::set_weight, py::arg("critic"), py::arg("weight"))
+      .def("weight", &LocalPlanner::weight, py::arg("critic"))
+      .def_property_readonly("limits", &LocalPlanner::limits)
+      .def_property_readonly("footprint", &LocalPlanner::footprint)
+      .def_property_readonly("params", &LocalPlanner::params)
+      .def(
+          "rollouts",
+          [](const LocalPlanner& p) {
+            const auto& rs = p.rollouts();
+            const py::ssize_t n = static_cast<py::ssize_t>(rs.size());
+            const py::ssize_t k = rs.empty() ? 0 : static_cast<py::ssize_t>(rs.front().size());
+            py::array_t<double> out({n, k, py::ssize_t{3}});
+            auto a = out.mutable_unchecked<3>();
+            for (py::ssize_t i = 0; i < n; ++i)
+              for (py::ssize_t j = 0; j < k; ++j) {
+                const Pose2& q = rs[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+                a(i, j, 0) = q.x;
+                a(i, j, 1) = q.y;
+                a(i, j, 2) = q.theta;
+              }
+            return out;
+          },
+          "(samples, n_steps, 3) rollouts of the last cycle.")
+      .def("__repr__", [](const LocalPlanner& p) {
+        std::ostringstream s;
+        s << "LocalPlanner(" << p.params().critics.size() << " critics, " << p.params().window.n_v << "x"
+          << p.params().window.n_omega << " samples, dt=" << p.params().dt << ")";
+        return s.str();
+      });
+}

@@ -1,0 +1,108 @@
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "convert.hpp"
+#include "fgdwa/robot.hpp"
+
+namespace py = pybind11;
+using namespace fgdwa;
+using namespace fgdwa::py_convert;
+
+void init_robot(py::module_& m) {
+  py::class_<RobotLimits>(m, "RobotLimits",
+                          "Velocity and acceleration limits of a differential-drive robot (SI units). "
+                          "brake_v / brake_omega of 0 mean: equal to the accelerations.")
+      .def(py::init([](double v_min, double v_max, double omega_max, double acc_v, double acc_omega, double brake_v,
+                       double brake_omega) {
+             RobotLimits l{v_min, v_max, omega_max, acc_v, acc_omega, brake_v, brake_omega};
+             l.validate();
+             return l;
+           }),
+           py::arg("v_min") = 0.0, py::arg("v_max") = 1.2, py::arg("omega_max") = 1.0, py::arg("acc_v") = 1.0,
+           py::arg("acc_omega") = 2.0, py::arg("brake_v") = 0.0, py::arg("brake_omega") = 0.0)
+      .def_readwrite("v_min", &RobotLimits::v_min)
+      .def_readwrite("v_max", &RobotLimits::v_max)
+      .def_readwrite("omega_max", &RobotLimits::omega_max)
+      .def_readwrite("acc_v", &RobotLimits::acc_v)
+      .def_readwrite("acc_omega", &RobotLimits::acc_omega)
+      .def_readwrite("brake_v", &RobotLimits::brake_v)
+      .def_readwrite("brake_omega", &RobotLimits::brake_omega)
+      .def("braking_v", &RobotLimits::braking_v)
+      .def("braking_omega", &RobotLimits::braking_omega)
+      .def("validate", &RobotLimits::validate, "Raise FgdwaError naming the first bad field.")
+      .def("__repr__", [](const RobotLimits& l) {
+        std::ostringstream s;
+        s << "RobotLimits(v_min=" << l.v_min << ", v_max=" << l.v_max << ", omega_max=" << l.omega_max
+          << ", acc_v=" << l.acc_v << ", acc_omega=" << l.acc_omega << ", brake_v=" << l.brake_v
+          << ", brake_omega=" << l.brake_omega << ")";
+        return s.str();
+      });
+
+  py::class_<RobotState>(m, "RobotState", "Pose and velocity of the robot.")
+      .def(py::init([](py::handle pose, py::handle twist) {
+             return RobotState{to_pose(pose, "pose"), to_twist(twist, "twist")};
+           }),
+           py::arg("pose") = Pose2{}, py::arg("twist") = Twist{})
+      .def_readwrite("pose", &RobotState::pose)
+      .def_readwrite("twist", &RobotState::twist)
+      .def("__repr__", [](const RobotState& s) {
+        std::ostringstream o;
+        o << "RobotState(pose=(" << s.pose.x << ", " << s.pose.y << ", " << s.pose.theta << "), twist=(" << s.twist.v
+          << ", " << s.twist.omega << "))";
+        return o.str();
+      });
+
+  py::class_<Footprint>(m, "Footprint", "The robot's outline: a circle, or a convex polygon in the robot frame.")
+      .def_static("circle", &Footprint::circle, py::arg("radius"), "A circle of `radius` metres about the robot origin.")
+      .def_static(
+          "polygon", [](py::handle vertices) { return Footprint::polygon(to_points(vertices, "vertices")); },
+          py::arg("vertices"), "A convex polygon, (n, 2) vertices in metres, robot frame (x forward, y left).")
+      .def_property_readonly("is_circle", &Footprint::is_circle)
+      .def_property_readonly("radius", &Footprint::radius, "Circle radius or circumscribed radius, m.")
+      .def_property_readonly("inscribed_radius", &Footprint::inscribed_radius)
+      .def_property_readonly("vertices",
+                             [](const Footprint& f) {
+                               py::array_t<double> out({static_cast<py::ssize_t>(f.vertices().size()), py::ssize_t{2}});
+                               auto a = out.mutable_unchecked<2>();
+                               for (std::size_t i = 0; i < f.vertices().size(); ++i) {
+                                 a(i, 0) = f.vertices()[i].x();
+                                 a(i, 1) = f.vertices()[i].y();
+                               }
+                               return out;
+                             })
+      .def(
+          "signed_distance",
+          [](const Footprint& f, py::handle pose, py::handle point) {
+            return f.signed_distance(to_pose(pose, "pose"), to_vec2(point, "point"));
+          },
+          py::arg("pose"), py::arg("point"))
+      .def("__repr__", [](const Footprint& f) {
+        std::ostringstream s;
+        if (f.is_circle())
+          s << "Footprint.circle(radius=" << f.radius() << ")";
+        else
+          s << "Footprint.polygon(" << f.vertices().size() << " vertices, radius=" << f.radius() << ")";
+        return s.str();
+      });
+
+  m.def(
+      "step",
+      [](py::handle pose, py::handle twist, double dt) {
+        if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + std::to_string(dt) + ": must be > 0");
+        return step(to_pose(pose, "pose"), to_twist(twist, "twist"), dt);
+      },
+      py::arg("pose"), py::arg("twist"), py::arg("dt"),
+      "One unicycle step: theta += omega dt, then x += v cos(theta) dt, y += v sin(theta) dt.");
+  m.def(
+      "rollout",
+      [](py::handle pose, py::handle twist, double dt, int n_steps) {
+        if (!(dt > 0.0)) throw Error("dt = " + std::to_string(dt) + ": must be > 0");
+        if (n_steps < 1) throw Error("n_steps = " + std::to_string(n_steps) + ": must be >= 1");
+        return poses_to_array(rollout(to_pose(pose, "pose"), to_twist(twist, "twist"), dt, n_steps));
+      },
+      py::arg("pose"), py::arg("twist"), py::arg("dt"), py::arg("n_steps"),
+      "(n_steps, 3) poses of a constant command, each after one more step (the start is not included).");
+}

@@ -1,0 +1,80 @@
+#include "convert.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace fgdwa::py_convert {
+
+py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::string& name, int ndim, long width) {
+  py::array array;
+  try {
+    array = py::array::ensure(obj);
+  } catch (const py::error_already_set&) {
+  }
+  if (!array) throw Error(name + ": expected an array of numbers, got " + std::string(py::str(py::type::of(obj))));
+  if (array.dtype().kind() != 'f' && array.dtype().kind() != 'i' && array.dtype().kind() != 'u')
+    throw Error(name + ": expected numbers, got dtype " + std::string(py::str(array.dtype())));
+  auto out = py::array_t<double, py::array::c_style>::ensure(array);
+  std::ostringstream want;
+  want << (ndim == 1 ? "(" : "(n, ") << (width > 0 ? std::to_string(width) : "n") << ")";
+  const bool shape_ok = out.ndim() == ndim && (width <= 0 || out.shape(ndim - 1) == width);
+  if (!shape_ok) {
+    std::ostringstream got;
+    got << "(";
+    for (py::ssize_t i = 0; i < out.ndim(); ++i) got << (i ? ", " : "") << out.shape(i);
+    got << ")";
+    throw Error(name + ": expected shape " + want.str() + ", got " + got.str());
+  }
+  const double* data = out.data();
+  for (py::ssize_t i = 0; i < out.size(); ++i)
+    if (!std::isfinite(data[i])) throw Error(name + ": element " + std::to_string(i) + " is not finite");
+  return out;
+}
+
+namespace {
+template <std::size_t N>
+std::array<double, N> fixed(py::handle obj, const std::string& name) {
+  auto a = float_array(obj, name, 1, static_cast<long>(N));
+  std::array<double, N> out{};
+  for (std::size_t i = 0; i < N; ++i) out[i] = a.data()[i];
+  return out;
+}
+}  // namespace
+
+Vec2 to_vec2(py::handle obj, const std::string& name) {
+  if (py::isinstance<Pose2>(obj)) return obj.cast<Pose2>().position();
+  const auto a = fixed<2>(obj, name);
+  return {a[0], a[1]};
+}
+
+Pose2 to_pose(py::handle obj, const std::string& name) {
+  if (py::isinstance<Pose2>(obj)) return obj.cast<Pose2>();
+  const auto a = fixed<3>(obj, name);
+  return {a[0], a[1], a[2]};
+}
+
+Twist to_twist(py::handle obj, const std::string& name) {
+  if (py::isinstance<Twist>(obj)) return obj.cast<Twist>();
+  const auto a = fixed<2>(obj, name);
+  return {a[0], a[1]};
+}
+
+std::vector<Vec2> to_points(py::handle obj, const std::string& name) {
+  auto a = float_array(obj, name, 2, 2);
+  std::vector<Vec2> out(static_cast<std::size_t>(a.shape(0)));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec2(a.at(i, 0), a.at(i, 1));
+  return out;
+}
+
+py::array_t<double> poses_to_array(const Trajectory& poses) {
+  py::array_t<double> out({static_cast<py::ssize_t>(poses.size()), py::ssize_t{3}});
+  auto m = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    m(i, 0) = poses[i].x;
+    m(i, 1) = poses[i].y;
+    m(i, 2) = poses[i].theta;
+  }
+  return out;
+}
+
+}  // namespace fgdwa::py_convert

@@ -1,0 +1,29 @@
+#pragma once
+// Conversions at the Python edge: every failure raises fgdwa::Error (FgdwaError
+// in Python) naming the argument and what was wrong with it.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <vector>
+
+#include "fgdwa/error.hpp"
+#include "fgdwa/geometry.hpp"
+#include "fgdwa/robot.hpp"
+
+namespace fgdwa::py_convert {
+
+namespace py = pybind11;
+
+// A float64 C-contiguous copy of `obj` with the given trailing width
+// (`width` 0: one-dimensional), or an error naming `name`.
+py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::string& name, int ndim, long width);
+
+Vec2 to_vec2(py::handle obj, const std::string& name);
+Pose2 to_pose(py::handle obj, const std::string& name);
+Twist to_twist(py::handle obj, const std::string& name);
+std::vector<Vec2> to_points(py::handle obj, const std::string& name);
+
+py::array_t<double> poses_to_array(const Trajectory& poses);
+
+}  // namespace fgdwa::py_convert

@@ -1,0 +1,27 @@
+#include <pybind11/pybind11.h>
+
+#include "fgdwa/error.hpp"
+
+namespace py = pybind11;
+
+void init_geometry(py::module_& m);
+void init_robot(py::module_& m);
+void init_grid(py::module_& m);
+void init_clearance(py::module_& m);
+void init_collision(py::module_& m);
+void init_window(py::module_& m);
+void init_critics(py::module_& m);
+void init_planner(py::module_& m);
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "fgdwa's C++ core: robot model, grids, collision, dynamic window, critics and planner.";
+  py::register_exception<fgdwa::Error>(m, "FgdwaError", PyExc_ValueError);
+  init_geometry(m);
+  init_robot(m);
+  init_grid(m);
+  init_clearance(m);
+  init_collision(m);
+  init_window(m);
+  init_critics(m);
+  init_planner(m);
+}

@@ -1,0 +1,5 @@
+import sys
+
+from fgdwa.cli import main
+
+sys.exit(main())

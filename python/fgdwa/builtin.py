@@ -1,0 +1,49 @@
+"""Built-in scenarios, made in code so they need no file."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from fgdwa._core import OccupancyGrid
+from fgdwa.sim import World
+
+
+@dataclass(frozen=True)
+class Scenario:
+    name: str
+    world: World
+    start: tuple  # (x, y, theta)
+    goal: tuple  # (x, y)
+    description: str = ""
+
+
+def _fill(cells: np.ndarray, resolution: float, x0: float, y0: float, x1: float, y1: float) -> None:
+    """Marks the cells of the rectangle [x0, x1] x [y0, y1] (metres) occupied."""
+    c0, c1 = int(round(x0 / resolution)), int(round(x1 / resolution))
+    r0, r1 = int(round(y0 / resolution)), int(round(y1 / resolution))
+    cells[r0:r1, c0:c1] = 1
+
+
+def demo_scenario() -> Scenario:
+    """A 12 m x 8 m room: blocks beside the straight line and a wall with a gap stand between start and goal."""
+    resolution = 0.1
+    cells = np.zeros((80, 120), dtype=np.uint8)
+    cells[0, :] = cells[-1, :] = 1
+    cells[:, 0] = cells[:, -1] = 1
+    _fill(cells, resolution, 3.0, 4.4, 3.6, 6.6)  # block just above the straight line
+    _fill(cells, resolution, 5.6, 0.0, 6.0, 2.9)  # broken wall, lower part
+    _fill(cells, resolution, 5.6, 5.1, 6.0, 8.0)  # broken wall, upper part: the gap is at y 2.9-5.1
+    _fill(cells, resolution, 8.0, 2.2, 8.6, 3.7)  # block just below the straight line
+    _fill(cells, resolution, 7.6, 5.6, 8.2, 6.6)
+    _fill(cells, resolution, 2.0, 1.2, 2.6, 2.0)
+    _fill(cells, resolution, 9.6, 4.9, 10.0, 5.9)
+    grid = OccupancyGrid(cells, resolution, (0.0, 0.0))
+    return Scenario(
+        name="demo",
+        world=World(grid=grid),
+        start=(1.0, 4.0, 0.0),
+        goal=(11.0, 4.0),
+        description="Blocks beside the straight line and a wall with a 2.2 m gap between start and goal.",
+    )

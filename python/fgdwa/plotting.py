@@ -1,0 +1,74 @@
+"""Figures of episodes: map, executed path and the last cycle's rollout fan."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
+
+from fgdwa.sim import EpisodeResult, World  # noqa: E402
+
+
+def draw_world(ax, world: World, t: float = 0.0) -> None:
+    """The grid in grey, discs as circles at time ``t``."""
+    if world.grid is not None:
+        ax.imshow(world.grid.cells, cmap="Greys", vmin=0, vmax=1.6, origin="lower",
+                  extent=world.grid.extent, interpolation="nearest")
+    for disc in world.discs:
+        ax.add_patch(plt.Circle(disc.center_at(t), max(disc.radius, 0.05), color="0.25"))
+
+
+def draw_rollout_fan(ax, rollouts: np.ndarray, totals: np.ndarray, best_index: int) -> None:
+    """Every sample's rollout, coloured by its total score; rejected ones dashed grey."""
+    if rollouts is None or len(rollouts) == 0:
+        return
+    admissible = np.isfinite(totals)
+    segments = [r[:, :2] for r in rollouts]
+    rejected = [s for s, ok in zip(segments, admissible) if not ok]
+    if rejected:
+        ax.add_collection(LineCollection(rejected, colors="0.6", linewidths=0.5, linestyles="dashed"))
+    if admissible.any():
+        kept = [s for s, ok in zip(segments, admissible) if ok]
+        lines = LineCollection(kept, cmap="viridis", linewidths=0.8)
+        lines.set_array(totals[admissible])
+        ax.add_collection(lines)
+        plt.colorbar(lines, ax=ax, shrink=0.7, label="score of the last cycle's samples")
+    if best_index >= 0:
+        ax.plot(*rollouts[best_index, :, :2].T, color="red", linewidth=2.0, label="chosen rollout")
+
+
+def plot_episode(result: EpisodeResult, world: World, goal, path: Optional[Path] = None,
+                 title: str = "", footprint_radius: float = 0.25):
+    """Map, executed path, start and goal, and the last cycle's rollout fan."""
+    fig, ax = plt.subplots(figsize=(9, 6.5))
+    draw_world(ax, world, result.sim_time)
+    ax.plot(*result.poses[:, :2].T, color="tab:blue", linewidth=1.8, label="executed path")
+    ax.add_patch(plt.Circle(result.poses[-1, :2], footprint_radius, fill=False, color="tab:blue"))
+    if result.last_plan is not None:
+        draw_rollout_fan(ax, result.last_rollouts, np.asarray(result.last_plan.total), result.last_plan.best_index)
+    ax.plot(*result.poses[0, :2], "o", color="tab:green", markersize=9, label="start")
+    ax.plot(*np.asarray(goal)[:2], "*", color="tab:orange", markersize=15, label="goal")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    m = result.metrics()
+    ax.set_title(title or f"{m['outcome']}: {m['steps']} steps, {m['mileage']:.2f} m, "
+                          f"min clearance {m['min_clearance']:.2f} m")
+    ax.legend(loc="upper left", fontsize=8)
+    if world.grid is not None:
+        x0, x1, y0, y1 = world.grid.extent
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
+    fig.tight_layout()
+    if path is not None:
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fig.savefig(path, dpi=120)
+        plt.close(fig)
+    return fig
