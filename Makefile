@@ -11,7 +11,7 @@ APT_PACKAGES := libeigen3-dev libfcl-dev libompl-dev libboost-serialization-dev 
 BIN := $(VENV)/bin
 SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*')
 
-.PHONY: setup system-packages demo test test-cpp test-python bench clean
+.PHONY: setup system-packages demo test test-cpp test-python bench clean stubs
 
 setup: system-packages $(VENV)/.installed
 
@@ -62,3 +62,8 @@ bench: system-packages $(BUILD)/build.ninja
 
 clean:
 	rm -rf build $(OUT) $(VENV)
+
+# Regenerates the type stub of the C++ module after its bindings change.
+stubs: setup
+	$(BIN)/pybind11-stubgen fgdwa._core -o build/stubs
+	cp build/stubs/fgdwa/_core.pyi python/fgdwa/_core.pyi

@@ -1,0 +1,576 @@
+"""
+fgdwa's C++ core: robot model, grids, collision, dynamic window, critics and planner.
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import numpy.typing
+import typing
+__all__: list[str] = ['ClearanceSource', 'CollisionWorld', 'CriticConfig', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'LocalPlanner', 'OccupancyGrid', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Status', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dynamic_window', 'rollout', 'sample_window', 'step', 'wrap_angle']
+class FgdwaError(ValueError):
+    pass
+class Pose2:
+    """
+    A planar pose: x, y in metres and theta in radians.
+    """
+    def __init__(self, x: typing.SupportsFloat | typing.SupportsIndex = 0.0, y: typing.SupportsFloat | typing.SupportsIndex = 0.0, theta: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def theta(self) -> float:
+        ...
+    @theta.setter
+    def theta(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def x(self) -> float:
+        ...
+    @x.setter
+    def x(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def y(self) -> float:
+        ...
+    @y.setter
+    def y(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class Twist:
+    """
+    A velocity command: v in m/s forward, omega in rad/s counter-clockwise.
+    """
+    def __init__(self, v: typing.SupportsFloat | typing.SupportsIndex = 0.0, omega: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    def __iter__(self) -> collections.abc.Iterator:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def omega(self) -> float:
+        ...
+    @omega.setter
+    def omega(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def v(self) -> float:
+        ...
+    @v.setter
+    def v(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class RobotLimits:
+    """
+    Velocity and acceleration limits of a differential-drive robot (SI units). brake_v / brake_omega of 0 mean: equal to the accelerations.
+    """
+    def __init__(self, v_min: typing.SupportsFloat | typing.SupportsIndex = 0.0, v_max: typing.SupportsFloat | typing.SupportsIndex = 1.2, omega_max: typing.SupportsFloat | typing.SupportsIndex = 1.0, acc_v: typing.SupportsFloat | typing.SupportsIndex = 1.0, acc_omega: typing.SupportsFloat | typing.SupportsIndex = 2.0, brake_v: typing.SupportsFloat | typing.SupportsIndex = 0.0, brake_omega: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def braking_omega(self) -> float:
+        ...
+    def braking_v(self) -> float:
+        ...
+    def validate(self) -> None:
+        """
+        Raise FgdwaError naming the first bad field.
+        """
+    @property
+    def acc_omega(self) -> float:
+        ...
+    @acc_omega.setter
+    def acc_omega(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def acc_v(self) -> float:
+        ...
+    @acc_v.setter
+    def acc_v(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def brake_omega(self) -> float:
+        ...
+    @brake_omega.setter
+    def brake_omega(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def brake_v(self) -> float:
+        ...
+    @brake_v.setter
+    def brake_v(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def omega_max(self) -> float:
+        ...
+    @omega_max.setter
+    def omega_max(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def v_max(self) -> float:
+        ...
+    @v_max.setter
+    def v_max(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def v_min(self) -> float:
+        ...
+    @v_min.setter
+    def v_min(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class RobotState:
+    """
+    Pose and velocity of the robot.
+    """
+    pose: Pose2
+    twist: Twist
+    def __init__(self, pose: typing.Any = ..., twist: typing.Any = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+class Footprint:
+    """
+    The robot's outline: a circle, or a convex polygon in the robot frame.
+    """
+    @staticmethod
+    def circle(radius: typing.SupportsFloat | typing.SupportsIndex) -> Footprint:
+        """
+        A circle of `radius` metres about the robot origin.
+        """
+    @staticmethod
+    def polygon(vertices: typing.Any) -> Footprint:
+        """
+        A convex polygon, (n, 2) vertices in metres, robot frame (x forward, y left).
+        """
+    def __repr__(self) -> str:
+        ...
+    def signed_distance(self, pose: typing.Any, point: typing.Any) -> float:
+        ...
+    @property
+    def inscribed_radius(self) -> float:
+        ...
+    @property
+    def is_circle(self) -> bool:
+        ...
+    @property
+    def radius(self) -> float:
+        """
+        Circle radius or circumscribed radius, m.
+        """
+    @property
+    def vertices(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+class OccupancyGrid:
+    """
+    An occupancy grid: cells[row, col], row 0 at the bottom (lowest y), 1 = obstacle. Cell (row, col) covers x in origin.x + [col, col + 1) * resolution and y in origin.y + [row, row + 1) * resolution. Outside the grid is free.
+    """
+    def __init__(self, cells: typing.Any, resolution: typing.SupportsFloat | typing.SupportsIndex, origin: typing.Any = (0.0, 0.0)) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def cell_center(self, row: typing.SupportsInt | typing.SupportsIndex, col: typing.SupportsInt | typing.SupportsIndex) -> tuple[float, float]:
+        ...
+    def occupied_at(self, points: typing.Any) -> numpy.typing.NDArray[numpy.bool]:
+        """
+        Whether each of (n, 2) points lies in an occupied cell.
+        """
+    @property
+    def cells(self) -> numpy.typing.NDArray[numpy.uint8]:
+        """
+        A copy of the cells, (rows, cols) uint8.
+        """
+    @property
+    def cols(self) -> int:
+        ...
+    @property
+    def extent(self) -> tuple[float, float, float, float]:
+        """
+        (x_min, x_max, y_min, y_max) in metres, as matplotlib's imshow takes it.
+        """
+    @property
+    def origin(self) -> tuple[float, float]:
+        ...
+    @property
+    def resolution(self) -> float:
+        ...
+    @property
+    def rows(self) -> int:
+        ...
+    @property
+    def shape(self) -> tuple[int, int]:
+        ...
+class DistanceField:
+    """
+    Exact Euclidean distance transform of a grid. `cells` holds centre-to-centre distances in metres (scipy's distance_transform_edt(cells == 0) * resolution); `distance(points)` estimates the distance to the nearest obstacle cell's edge, within one cell of the exact value.
+    """
+    def __init__(self, grid: OccupancyGrid) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def distance(self, points: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Distance in metres from each of (n, 2) points to the nearest obstacle edge.
+        """
+    @property
+    def cells(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def grid(self) -> OccupancyGrid:
+        ...
+class Disc:
+    """
+    A disc obstacle moving at constant velocity; radius 0 is a point.
+    """
+    def __init__(self, center: typing.Any, radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, velocity: typing.Any = (0.0, 0.0)) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def center_at(self, t: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
+        ...
+    @property
+    def center(self) -> tuple[float, float]:
+        ...
+    @property
+    def radius(self) -> float:
+        ...
+    @property
+    def velocity(self) -> tuple[float, float]:
+        ...
+class ClearanceSource:
+    """
+    Where a rollout's clearance comes from (FieldClearance or CollisionWorld).
+    """
+    def clearance(self, footprint: Footprint, poses: typing.Any, t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> typing.Any:
+        """
+        Clearance in metres of the footprint at each of (n, 3) poses (or one pose), moving obstacles predicted t seconds ahead; <= 0 means contact.
+        """
+class FieldClearance(ClearanceSource):
+    """
+    The fast clearance: a distance field of the static map plus analytic discs.
+    """
+    def __init__(self, field: DistanceField = None, discs: collections.abc.Sequence[Disc] = []) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def discs(self) -> list[Disc]:
+        ...
+    @discs.setter
+    def discs(self, arg1: collections.abc.Sequence[Disc]) -> None:
+        ...
+    @property
+    def field(self) -> DistanceField:
+        ...
+class CollisionWorld(ClearanceSource):
+    """
+    The exact world on FCL: the grid's occupied cells merged into boxes, plus moving discs. The simulator's ground truth.
+    """
+    def __init__(self, grid: OccupancyGrid = None, discs: collections.abc.Sequence[Disc] = []) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def in_collision(self, footprint: Footprint, pose: typing.Any, t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> bool:
+        ...
+    @property
+    def boxes(self) -> numpy.typing.NDArray[numpy.int32]:
+        """
+        (k, 4) merged boxes as (row, col, rows, cols) of cells.
+        """
+    @property
+    def discs(self) -> list[Disc]:
+        ...
+    @discs.setter
+    def discs(self, arg1: collections.abc.Sequence[Disc]) -> None:
+        ...
+class VelocityWindow:
+    """
+    Vm ∩ Vd: the commands reachable in one control period.
+    """
+    def __repr__(self) -> str:
+        ...
+    def contains(self, twist: typing.Any) -> bool:
+        ...
+    @property
+    def omega_hi(self) -> float:
+        ...
+    @property
+    def omega_lo(self) -> float:
+        ...
+    @property
+    def v_hi(self) -> float:
+        ...
+    @property
+    def v_lo(self) -> float:
+        ...
+class CriticConfig:
+    """
+    A critic by registered name, its weight, and its own parameters (e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).
+    """
+    name: str
+    def __init__(self, name: str, weight: typing.SupportsFloat | typing.SupportsIndex = 1.0, params: collections.abc.Mapping[str, typing.SupportsFloat | typing.SupportsIndex] = {}) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def params(self) -> dict[str, float]:
+        ...
+    @params.setter
+    def params(self, arg0: collections.abc.Mapping[str, typing.SupportsFloat | typing.SupportsIndex]) -> None:
+        ...
+    @property
+    def weight(self) -> float:
+        ...
+    @weight.setter
+    def weight(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class Status:
+    """
+    Outcome of one control cycle.
+    
+    Members:
+    
+      Ok
+    
+      NoAdmissibleVelocity
+    
+      GoalReached
+    """
+    GoalReached: typing.ClassVar[Status]
+    NoAdmissibleVelocity: typing.ClassVar[Status]
+    Ok: typing.ClassVar[Status]
+    __members__: typing.ClassVar[dict[str, Status]]
+    @typing.overload
+    def __eq__(self, other: Status) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: Status) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class RejectReason:
+    """
+    Why a sampled command was rejected.
+    
+    Members:
+    
+      None_
+    
+      Collision
+    """
+    Collision: typing.ClassVar[RejectReason]
+    None_: typing.ClassVar[RejectReason]
+    __members__: typing.ClassVar[dict[str, RejectReason]]
+    @typing.overload
+    def __eq__(self, other: RejectReason) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: RejectReason) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class PlannerParams:
+    """
+    Parameters of the local planner (SI units).
+    """
+    def __init__(self, dt: typing.SupportsFloat | typing.SupportsIndex = 0.15, sim_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21, normalization: str = 'sum', braking: str = 'discrete', goal_tolerance: typing.SupportsFloat | typing.SupportsIndex = 0.3, critics: typing.Any = None) -> None:
+        """
+        dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0).
+        """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def braking(self) -> str:
+        ...
+    @property
+    def critics(self) -> list[CriticConfig]:
+        ...
+    @property
+    def dt(self) -> float:
+        ...
+    @property
+    def goal_tolerance(self) -> float:
+        ...
+    @property
+    def n_omega(self) -> int:
+        ...
+    @property
+    def n_steps(self) -> int:
+        ...
+    @property
+    def n_v(self) -> int:
+        ...
+    @property
+    def normalization(self) -> str:
+        ...
+    @property
+    def sim_time(self) -> float:
+        ...
+class PlanResult:
+    """
+    One control cycle's command, status and per-sample diagnostics.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def admissible(self) -> numpy.typing.NDArray[numpy.bool]:
+        ...
+    @property
+    def best_index(self) -> int:
+        ...
+    @property
+    def command(self) -> Twist:
+        ...
+    @property
+    def critic_names(self) -> list[str]:
+        ...
+    @property
+    def free_distance(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def min_clearance(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def normalized(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        (n, critics) normalised terms; 0 for rejected samples.
+        """
+    @property
+    def raw(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        (n, critics) raw terms; 0 for rejected samples.
+        """
+    @property
+    def reasons(self) -> list:
+        """
+        Per sample: 'None' (admissible) or the reject reason.
+        """
+    @property
+    def reject_counts(self) -> dict:
+        ...
+    @property
+    def samples(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 2) sampled commands (v, omega).
+        """
+    @property
+    def status(self) -> Status:
+        ...
+    @property
+    def target(self) -> tuple[float, float]:
+        ...
+    @property
+    def total(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        (n,) weighted totals; -inf for rejected samples.
+        """
+    @property
+    def weights(self) -> list[float]:
+        ...
+class LocalPlanner:
+    """
+    The dynamic window planner: one control cycle in, one command and its diagnostics out.
+    """
+    def __init__(self, limits: RobotLimits, footprint: Footprint, params: PlannerParams = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def plan(self, state: RobotState, goal: typing.Any, world: ClearanceSource, target: typing.Any = None) -> PlanResult:
+        """
+        One control cycle toward `goal`; the heading aims at `target` (default: the goal).
+        """
+    def rollouts(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (samples, n_steps, 3) rollouts of the last cycle.
+        """
+    def set_weight(self, critic: str, weight: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    def weight(self, critic: str) -> float:
+        ...
+    @property
+    def footprint(self) -> Footprint:
+        ...
+    @property
+    def limits(self) -> RobotLimits:
+        ...
+    @property
+    def params(self) -> PlannerParams:
+        ...
+def angle_difference(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    The signed difference a - b in (-pi, pi].
+    """
+def critic_names() -> list[str]:
+    """
+    Names of the critics that can be configured.
+    """
+def dynamic_window(limits: RobotLimits, current: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex) -> VelocityWindow:
+    """
+    Vm ∩ Vd for the current (v, omega).
+    """
+def rollout(pose: typing.Any, twist: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex, n_steps: typing.SupportsInt | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    (n_steps, 3) poses of a constant command, each after one more step (the start is not included).
+    """
+def sample_window(window: VelocityWindow, current: typing.Any, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    (n_v * n_omega, 2) sampled commands (v, omega), v-major.
+    """
+def step(pose: typing.Any, twist: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex) -> Pose2:
+    """
+    One unicycle step: theta += omega dt, then x += v cos(theta) dt, y += v sin(theta) dt.
+    """
+def wrap_angle(angle: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    The angle in (-pi, pi].
+    """

@@ -1,0 +1,139 @@
+"""Every public entry point rejects bad input with FgdwaError naming what was wrong."""
+
+import math
+
+import numpy as np
+import pytest
+
+import fgdwa
+from fgdwa.sim import World, run_episode
+
+NAN = float("nan")
+INF = float("inf")
+
+
+def raises(match):
+    return pytest.raises(fgdwa.FgdwaError, match=match)
+
+
+def test_error_is_a_value_error():
+    assert issubclass(fgdwa.FgdwaError, ValueError)
+
+
+@pytest.mark.parametrize("field,value", [("v_max", NAN), ("v_max", INF), ("v_max", -1.0), ("omega_max", 0.0),
+                                         ("acc_v", -0.5), ("acc_omega", NAN), ("v_min", -0.1),
+                                         ("brake_v", -1.0), ("brake_omega", INF)])
+def test_robot_limits(field, value):
+    with raises(field):
+        fgdwa.RobotLimits(**{field: value})
+
+
+def test_inverted_speed_limits():
+    with raises("v_min"):
+        fgdwa.RobotLimits(v_min=1.0, v_max=0.5)
+
+
+def test_footprints():
+    with raises("radius"):
+        fgdwa.Footprint.circle(0.0)
+    with raises("radius"):
+        fgdwa.Footprint.circle(NAN)
+    with raises("at least 3"):
+        fgdwa.Footprint.polygon([[0, 0], [1, 0]])
+    with raises("convex"):
+        fgdwa.Footprint.polygon([[1, 1], [-1, 1], [0, 0.2], [-1, -1], [1, -1]])
+    with raises("origin"):
+        fgdwa.Footprint.polygon([[1, 1], [2, 1], [2, 2], [1, 2]])
+    with raises("vertices"):
+        fgdwa.Footprint.polygon(np.zeros((4, 3)))
+    with raises("not finite"):
+        fgdwa.Footprint.polygon([[1, 1], [-1, 1], [-1, NAN]])
+
+
+def test_grids():
+    with raises("empty"):
+        fgdwa.OccupancyGrid(np.zeros((0, 5), np.uint8), 0.1)
+    with raises("dtype"):
+        fgdwa.OccupancyGrid(np.zeros((5, 5), np.float64), 0.1)
+    with raises("2-D"):
+        fgdwa.OccupancyGrid(np.zeros(5, np.uint8), 0.1)
+    with raises("resolution"):
+        fgdwa.OccupancyGrid(np.zeros((5, 5), np.uint8), -0.1)
+    with raises("resolution"):
+        fgdwa.OccupancyGrid(np.zeros((5, 5), np.uint8), NAN)
+    with raises("origin"):
+        fgdwa.OccupancyGrid(np.zeros((5, 5), np.uint8), 0.1, (0.0, INF))
+    with raises("origin"):
+        fgdwa.OccupancyGrid(np.zeros((5, 5), np.uint8), 0.1, (0.0, 1.0, 2.0))
+    grid = fgdwa.OccupancyGrid(np.zeros((5, 5), np.uint8), 0.1)
+    with raises("points"):
+        fgdwa.DistanceField(grid).distance(np.zeros((3, 3)))
+    with raises("outside the grid"):
+        grid.cell_center(5, 0)
+
+
+def test_discs():
+    with raises("radius"):
+        fgdwa.Disc((0, 0), -1.0)
+    with raises("center"):
+        fgdwa.Disc((NAN, 0), 1.0)
+    with raises("velocity"):
+        fgdwa.Disc((0, 0), 1.0, velocity=(1.0,))
+
+
+@pytest.mark.parametrize("kwargs,match", [({"dt": 0.0}, "dt"), ({"dt": NAN}, "dt"), ({"sim_time": -1.0}, "sim_time"),
+                                          ({"sim_time": 0.01}, "sim_time"), ({"n_v": 0}, "n_v"),
+                                          ({"n_omega": -3}, "n_omega"), ({"normalization": "l2"}, "normalization"),
+                                          ({"braking": "soft"}, "braking"), ({"goal_tolerance": -1.0}, "goal_tolerance"),
+                                          ({"critics": []}, "at least one"),
+                                          ({"critics": [("heading", 1.0), ("heading", 2.0)]}, "twice"),
+                                          ({"critics": [("nonsense", 1.0)]}, "unknown critic"),
+                                          ({"critics": [("clearance", 1.0, {"radius": 1.0})]}, "no parameter 'radius'"),
+                                          ({"critics": [("clearance", 1.0, {"cap": -1.0})]}, "cap"),
+                                          ({"critics": [("heading", NAN)]}, "weight"),
+                                          ({"critics": [{"name": "heading", "wieght": 1.0}]}, "unknown key 'wieght'"),
+                                          ({"critics": [42]}, "each entry")])
+def test_planner_params(kwargs, match):
+    with raises(match):
+        fgdwa.PlannerParams(**kwargs)
+
+
+def test_plan_arguments(open_world):
+    planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.25))
+    world = fgdwa.FieldClearance(fgdwa.DistanceField(open_world))
+    with raises("goal"):
+        planner.plan(fgdwa.RobotState((0, 0, 0)), (1.0, NAN), world)
+    with raises("goal"):
+        planner.plan(fgdwa.RobotState((0, 0, 0)), (1.0, 2.0, 3.0), world)
+    with raises("pose"):
+        fgdwa.RobotState((NAN, 0, 0))
+    state = fgdwa.RobotState()
+    state.pose = fgdwa.Pose2(NAN, 0.0, 0.0)
+    with raises("state x"):
+        planner.plan(state, (1.0, 2.0), world)
+    with raises("pose"):
+        fgdwa.RobotState((0, 0), (0, 0))
+    with raises("dtype"):
+        fgdwa.RobotState(("a", "b", "c"))
+    with raises("no critic 'similarity'"):
+        planner.set_weight("similarity", 1.0)
+    with raises("weight"):
+        planner.set_weight("heading", INF)
+    with raises("dt"):
+        fgdwa.step((0, 0, 0), (1, 0), -0.1)
+    with raises("n_steps"):
+        fgdwa.rollout((0, 0, 0), (1, 0), 0.1, 0)
+
+
+def test_episode_arguments(open_world):
+    cells = np.zeros((30, 30), np.uint8)
+    cells[10:20, 10:20] = 1
+    world = World(grid=fgdwa.OccupancyGrid(cells, 0.1))
+    with raises("start"):
+        run_episode(world, (1.5, 1.5, 0.0), (2.8, 2.8))
+    with raises("start"):
+        run_episode(world, (0.5, 0.5), (2.8, 2.8))
+    with raises("goal"):
+        run_episode(world, (0.5, 0.5, 0.0), (math.nan, 2.8))
+    with raises("max_steps"):
+        run_episode(world, (0.5, 0.5, 0.0), (2.8, 2.8), max_steps=0)

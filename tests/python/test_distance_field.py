@@ -1,0 +1,51 @@
+import numpy as np
+import pytest
+from scipy import ndimage
+
+import fgdwa
+from conftest import brute_force_square_distance, random_block_grid
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_cell_distances_equal_scipy_edt(seed):
+    rng = np.random.default_rng(seed)
+    cells = (rng.random((37, 53)) < rng.uniform(0.01, 0.4)).astype(np.uint8)
+    field = fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.15, (1.0, -2.0)))
+    expected = ndimage.distance_transform_edt(cells == 0) * 0.15
+    np.testing.assert_allclose(field.cells, expected, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_point_distance_is_exact_inside_the_grid(seed):
+    rng = np.random.default_rng(100 + seed)
+    cells = random_block_grid(rng)
+    origin = (-1.0, 0.5)
+    field = fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.1, origin))
+    points = np.column_stack([rng.uniform(-1.0, 7.0, 4000), rng.uniform(0.5, 6.5, 4000)])
+    exact = brute_force_square_distance(points, cells, 0.1, origin)
+    np.testing.assert_allclose(field.distance(points), exact, rtol=0, atol=1e-9)
+
+
+def test_point_distance_outside_the_grid_is_a_lower_bound(rng):
+    cells = random_block_grid(rng)
+    field = fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.1))
+    points = np.column_stack([rng.uniform(-3.0, 11.0, 4000), rng.uniform(-3.0, 9.0, 4000)])
+    outside = (points[:, 0] < 0) | (points[:, 0] > 8) | (points[:, 1] < 0) | (points[:, 1] > 6)
+    exact = brute_force_square_distance(points[outside], cells, 0.1, (0.0, 0.0))
+    got = field.distance(points[outside])
+    assert np.all(got <= exact + 1e-9)
+    assert np.all(got >= 0.0)
+
+
+def test_no_obstacle_gives_infinity(open_world):
+    field = fgdwa.DistanceField(open_world)
+    assert np.all(np.isinf(field.cells))
+    assert np.isinf(field.distance(np.array([[1.0, 1.0]]))[0])
+
+
+def test_inside_an_obstacle_is_zero():
+    cells = np.zeros((10, 10), dtype=np.uint8)
+    cells[4, 6] = 1
+    field = fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.5))
+    assert field.distance(np.array([[3.25, 2.25]]))[0] == 0.0
+    assert field.distance(np.array([[4.0, 2.25]]))[0] == pytest.approx(0.5)

@@ -1,0 +1,30 @@
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import fgdwa
+
+PACKAGE = Path(fgdwa.__file__).parent
+SOURCE_STUB = Path(__file__).resolve().parents[2] / "python" / "fgdwa" / "_core.pyi"
+
+
+def test_typing_markers_ship_with_the_package():
+    assert (PACKAGE / "py.typed").exists()
+    assert (PACKAGE / "_core.pyi").exists()
+
+
+def test_stub_matches_the_compiled_module(tmp_path):
+    pytest.importorskip("pybind11_stubgen")
+    subprocess.run([sys.executable, "-m", "pybind11_stubgen", "fgdwa._core", "-o", str(tmp_path)], check=True,
+                   capture_output=True)
+    generated = (tmp_path / "fgdwa" / "_core.pyi").read_text()
+    assert generated == SOURCE_STUB.read_text(), "python/fgdwa/_core.pyi is stale: run `make stubs`"
+
+
+def test_reprs_say_what_they_hold():
+    assert repr(fgdwa.RobotLimits()).startswith("RobotLimits(v_min=0")
+    assert repr(fgdwa.Footprint.circle(0.25)) == "Footprint.circle(radius=0.25)"
+    assert "critics=[('heading', 0.5)" in repr(fgdwa.PlannerParams())
+    assert repr(fgdwa.Disc((1, 2), 0.5)) == "Disc(center=(1, 2), radius=0.5, velocity=(0, 0))"

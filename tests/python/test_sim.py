@@ -1,0 +1,68 @@
+import numpy as np
+import pytest
+
+import fgdwa
+from fgdwa.builtin import demo_scenario
+from fgdwa.cli import main
+from fgdwa.sim import World, collides_during_step, path_length, run_episode
+
+
+def test_path_length_of_a_hand_made_path():
+    assert path_length(np.array([[0, 0], [3, 4], [3, 0]])) == pytest.approx(9.0)
+    assert path_length(np.zeros((1, 2))) == 0.0
+
+
+def test_demo_scenario_succeeds_with_classic_dwa():
+    scenario = demo_scenario()
+    result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=400)
+    assert result.outcome == "success"
+    assert np.hypot(*(result.poses[-1, :2] - scenario.goal)) <= 0.3
+    assert result.min_clearance > 0.0
+    assert result.steps == len(result.commands) == len(result.poses) - 1
+    assert result.sim_time == pytest.approx(result.steps * 0.15)
+    assert result.mileage == pytest.approx(path_length(result.poses))
+    assert result.mileage >= np.hypot(10.0, 0.0) - 0.3
+    assert 0 < result.min_clearance <= result.mean_clearance
+    assert result.planning_time > 0
+
+
+def test_episode_is_deterministic():
+    scenario = demo_scenario()
+    a = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=60)
+    b = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=60)
+    np.testing.assert_array_equal(a.poses, b.poses)
+
+
+def test_timeout_when_steps_run_out():
+    scenario = demo_scenario()
+    result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=5)
+    assert result.outcome == "timeout"
+    assert result.steps == 5
+
+
+def test_a_disc_driving_into_the_robot_is_a_collision():
+    disc = fgdwa.Disc((3.0, 0.0), 0.3, velocity=(-2.0, 0.0))
+    params = fgdwa.PlannerParams(critics=[("heading", 1.0), ("velocity", 1.0)])
+    result = run_episode(World(discs=[disc]), (0.0, 0.0, np.pi), (-20.0, 0.0),
+                         limits=fgdwa.RobotLimits(v_max=0.2), params=params, max_steps=50)
+    assert result.outcome == "collision"
+    assert result.clearances[-1] == pytest.approx(0.0, abs=1e-6)
+
+
+def test_contact_between_poses_is_found():
+    cells = np.zeros((10, 40), np.uint8)
+    cells[:, 20] = 1  # a wall one cell thick at x = 2.0 .. 2.1
+    truth = fgdwa.CollisionWorld(fgdwa.OccupancyGrid(cells, 0.1))
+    footprint = fgdwa.Footprint.circle(0.05)
+    before, after = (1.8, 0.5, 0.0), (2.3, 0.5, 0.0)  # both ends free, the wall in between
+    assert not truth.in_collision(footprint, before) and not truth.in_collision(footprint, after)
+    assert collides_during_step(truth, footprint, before, after, 0.0, 0.15)
+
+
+def test_cli_demo_writes_the_figure(tmp_path, capsys):
+    assert main(["demo", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "outcome          success" in out
+    png = tmp_path / "demo.png"
+    assert png.stat().st_size > 10_000
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
