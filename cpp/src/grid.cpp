@@ -137,6 +137,19 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
         }
       candidate_start_[grid.index(r, c) + 1] = candidates_.size();
     }
+
+  row_first_.assign(rows, -1);
+  row_last_.assign(rows, -1);
+  col_first_.assign(cols, -1);
+  col_last_.assign(cols, -1);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      if (grid.occupied(r, c)) {
+        if (row_first_[r] < 0) row_first_[r] = c;
+        row_last_[r] = c;
+        if (col_first_[c] < 0) col_first_[c] = r;
+        col_last_[c] = r;
+      }
 }
 
 double DistanceField::distance(const Vec2& p) const {
@@ -144,25 +157,41 @@ double DistanceField::distance(const Vec2& p) const {
   const double res = grid_.resolution();
   const double half = 0.5 * res;
   const int rows = grid_.rows(), cols = grid_.cols();
-  // Outside the grid: obstacles all lie inside it, so from the projection q of p
-  // onto the grid's rectangle, |p - o|^2 >= |q - o|^2 + |p - q|^2 for every o (a
-  // lower bound, exact when p faces the nearest obstacle squarely).
   const Vec2& lo = grid_.origin();
   const Vec2 hi = lo + Vec2(cols * res, rows * res);
-  const Vec2 q(std::clamp(p.x(), lo.x(), hi.x()), std::clamp(p.y(), lo.y(), hi.y()));
-  const double outside = (p - q).squaredNorm();
-
-  const int col = std::clamp(static_cast<int>(std::floor((q.x() - lo.x()) / res)), 0, cols - 1);
-  const int row = std::clamp(static_cast<int>(std::floor((q.y() - lo.y()) / res)), 0, rows - 1);
+  const auto square_distance = [&](int row, int col) {
+    const Vec2 o = grid_.cell_center(row, col);
+    const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
+    const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
+    return dx * dx + dy * dy;
+  };
+  // Outside the grid every cell of a row lies on the same side of p in x, so the
+  // row's outermost obstacle toward p is its nearest; likewise per column in y.
+  if (p.x() < lo.x() || p.x() > hi.x()) {
+    const std::vector<int>& outermost = p.x() < lo.x() ? row_first_ : row_last_;
+    double best = kInf;
+    for (int r = 0; r < rows; ++r)
+      if (outermost[r] >= 0) best = std::min(best, square_distance(r, outermost[r]));
+    return std::sqrt(best);
+  }
+  if (p.y() < lo.y() || p.y() > hi.y()) {
+    const std::vector<int>& outermost = p.y() < lo.y() ? col_first_ : col_last_;
+    double best = kInf;
+    for (int c = 0; c < cols; ++c)
+      if (outermost[c] >= 0) best = std::min(best, square_distance(outermost[c], c));
+    return std::sqrt(best);
+  }
+  const int col = std::clamp(static_cast<int>(std::floor((p.x() - lo.x()) / res)), 0, cols - 1);
+  const int row = std::clamp(static_cast<int>(std::floor((p.y() - lo.y()) / res)), 0, rows - 1);
   const std::size_t cell = grid_.index(row, col);
   double best = kInf;
   for (std::size_t k = candidate_start_[cell]; k < candidate_start_[cell + 1]; ++k) {
     const Vec2& o = candidates_[k];
-    const double dx = std::max(std::abs(q.x() - o.x()) - half, 0.0);
-    const double dy = std::max(std::abs(q.y() - o.y()) - half, 0.0);
+    const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
+    const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
     best = std::min(best, dx * dx + dy * dy);
   }
-  return std::sqrt(best + outside);
+  return std::sqrt(best);
 }
 
 }  // namespace fgdwa

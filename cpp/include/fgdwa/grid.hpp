@@ -48,7 +48,8 @@ class OccupancyGrid {
 // distance_transform_edt(grid == 0) * resolution.
 // `distance(p)` is the distance from a point to the nearest occupied cell's
 // square (0 inside one), measured exactly to the nearest obstacles of the cells
-// around `p`; outside the grid it is a lower bound.
+// around `p`; outside the grid, exactly to the outermost obstacle of each row or
+// column facing `p`.
 class DistanceField {
  public:
   explicit DistanceField(const OccupancyGrid& grid);
@@ -66,6 +67,8 @@ class DistanceField {
   // (compressed rows: cell i owns candidates_[candidate_start_[i] .. candidate_start_[i + 1])).
   std::vector<std::size_t> candidate_start_;
   std::vector<Vec2> candidates_;
+  // Outermost occupied column of each row and row of each column, -1 for none.
+  std::vector<int> row_first_, row_last_, col_first_, col_last_;
   bool has_obstacles_ = false;
 };
 
