@@ -12,18 +12,20 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 namespace {
-OccupancyGrid grid_from_array(py::handle cells, double resolution, py::handle origin) {
+OccupancyGrid grid_from_array(py::handle cells, double resolution, py::handle origin, const std::string& name = "cells",
+                              bool allow_bool = true) {
   py::array array;
   try {
     array = py::array::ensure(cells);
   } catch (const py::error_already_set&) {
   }
-  if (!array) throw Error("cells: expected a 2-D numpy array");
+  if (!array) throw Error(name + ": expected a 2-D numpy array");
   const char kind = array.dtype().kind();
-  if (!(kind == 'b' || (kind == 'u' && array.itemsize() == 1)))
-    throw Error("cells: expected dtype uint8 or bool (1 = obstacle), got " + std::string(py::str(array.dtype())));
-  if (array.ndim() != 2) throw Error("cells: expected a 2-D array, got " + std::to_string(array.ndim()) + " dimensions");
-  if (array.shape(0) == 0 || array.shape(1) == 0) throw Error("cells: the grid is empty");
+  if (!((allow_bool && kind == 'b') || (kind == 'u' && array.itemsize() == 1)))
+    throw Error(name + ": expected dtype uint8" + (allow_bool ? std::string(" or bool (1 = obstacle)") : "") + ", got " +
+                std::string(py::str(array.dtype())));
+  if (array.ndim() != 2) throw Error(name + ": expected a 2-D array, got " + std::to_string(array.ndim()) + " dimensions");
+  if (array.shape(0) == 0 || array.shape(1) == 0) throw Error(name + ": the grid is empty");
   auto c = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(array);
   std::vector<std::uint8_t> data(c.data(), c.data() + c.size());
   return OccupancyGrid(static_cast<int>(c.shape(0)), static_cast<int>(c.shape(1)), resolution,
@@ -42,7 +44,10 @@ void init_grid(py::module_& m) {
                             "An occupancy grid: cells[row, col], row 0 at the bottom (lowest y), 1 = obstacle. "
                             "Cell (row, col) covers x in origin.x + [col, col + 1) * resolution and "
                             "y in origin.y + [row, row + 1) * resolution. Outside the grid is free.")
-      .def(py::init(&grid_from_array), py::arg("cells"), py::arg("resolution"),
+      .def(py::init([](py::handle cells, double resolution, py::handle origin) {
+             return grid_from_array(cells, resolution, origin);
+           }),
+           py::arg("cells"), py::arg("resolution"),
            py::arg("origin") = py::make_tuple(0.0, 0.0))
       .def_property_readonly("rows", &OccupancyGrid::rows)
       .def_property_readonly("cols", &OccupancyGrid::cols)
@@ -76,6 +81,28 @@ void init_grid(py::module_& m) {
         std::ostringstream s;
         s << "OccupancyGrid(" << g.rows() << "x" << g.cols() << ", resolution=" << g.resolution() << ", origin=("
           << g.origin().x() << ", " << g.origin().y() << "), occupied=" << g.occupied_count() << ")";
+        return s.str();
+      });
+
+  py::class_<TerrainGrid>(m, "TerrainGrid",
+                          "Slope grades 0-4 per cell, laid out like an OccupancyGrid (grades[row, col]); grade 4 "
+                          "cannot be entered.")
+      .def(py::init([](py::handle grades, double resolution, py::handle origin) {
+             const OccupancyGrid layout = grid_from_array(grades, resolution, origin, "grades", false);
+             return TerrainGrid(layout.rows(), layout.cols(), resolution, layout.origin(), layout.cells());
+           }),
+           py::arg("grades"), py::arg("resolution"), py::arg("origin") = py::make_tuple(0.0, 0.0))
+      .def_property_readonly("grades", [](const TerrainGrid& t) {
+        py::array_t<std::uint8_t> out({t.rows(), t.cols()});
+        std::copy(t.grades().begin(), t.grades().end(), out.mutable_data());
+        return out;
+      })
+      .def_property_readonly("shape", [](const TerrainGrid& t) { return py::make_tuple(t.rows(), t.cols()); })
+      .def_property_readonly("resolution", &TerrainGrid::resolution)
+      .def("grade_at", [](const TerrainGrid& t, py::handle p) { return t.grade_at(to_vec2(p, "point")); }, py::arg("point"))
+      .def("__repr__", [](const TerrainGrid& t) {
+        std::ostringstream s;
+        s << "TerrainGrid(" << t.rows() << "x" << t.cols() << ", resolution=" << t.resolution() << ")";
         return s.str();
       });
 

@@ -5,6 +5,8 @@
 
 #include <sstream>
 
+#include <cmath>
+
 #include "convert.hpp"
 #include "fgdwa/planner.hpp"
 
@@ -48,6 +50,12 @@ BrakingModel braking_from_string(const std::string& name) {
   throw Error("braking = '" + name + "': expected 'discrete' or 'continuous'");
 }
 
+HeadingTarget heading_target_from_string(const std::string& name) {
+  if (name == "goal") return HeadingTarget::Goal;
+  if (name == "key_nodes") return HeadingTarget::KeyNodes;
+  throw Error("heading_target = '" + name + "': expected 'goal' or 'key_nodes'");
+}
+
 Normalization normalization_from_string(const std::string& name) {
   if (name == "sum") return Normalization::Sum;
   if (name == "minmax") return Normalization::MinMax;
@@ -76,7 +84,8 @@ void init_planner(py::module_& m) {
 
   py::class_<PlannerParams>(m, "PlannerParams", "Parameters of the local planner (SI units).")
       .def(py::init([](double dt, double sim_time, int n_v, int n_omega, const std::string& normalization,
-                       const std::string& braking, double goal_tolerance, py::object critics) {
+                       const std::string& braking, double goal_tolerance, py::object critics,
+                       const std::string& heading_target, double key_node_angle_deg, double key_node_radius) {
              PlannerParams p;
              p.dt = dt;
              p.sim_time = sim_time;
@@ -85,6 +94,9 @@ void init_planner(py::module_& m) {
              p.normalization = normalization_from_string(normalization);
              p.braking = braking_from_string(braking);
              p.goal_tolerance = goal_tolerance;
+             p.heading_target = heading_target_from_string(heading_target);
+             p.key_nodes.min_turn = key_node_angle_deg * M_PI / 180.0;
+             p.key_nodes.reach_radius = key_node_radius;
              if (!critics.is_none()) {
                p.critics.clear();
                for (auto item : critics) p.critics.push_back(critic_from_python(item));
@@ -94,10 +106,14 @@ void init_planner(py::module_& m) {
            }),
            py::arg("dt") = 0.15, py::arg("sim_time") = 3.0, py::arg("n_v") = 21, py::arg("n_omega") = 21,
            py::arg("normalization") = "sum", py::arg("braking") = "discrete", py::arg("goal_tolerance") = 0.3, py::arg("critics") = py::none(),
+           py::arg("heading_target") = "goal", py::arg("key_node_angle_deg") = 10.0, py::arg("key_node_radius") = 1.0,
            "dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample "
            "counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance "
            "with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts "
-           "or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0).")
+           "or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0); "
+           "heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet "
+           "reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this "
+           "near is reached.")
       .def_readonly("dt", &PlannerParams::dt)
       .def_readonly("sim_time", &PlannerParams::sim_time)
       .def_property_readonly("n_v", [](const PlannerParams& p) { return p.window.n_v; })
@@ -105,13 +121,16 @@ void init_planner(py::module_& m) {
       .def_property_readonly("normalization", [](const PlannerParams& p) { return std::string(to_string(p.normalization)); })
       .def_property_readonly("braking", [](const PlannerParams& p) { return std::string(to_string(p.braking)); })
       .def_readonly("goal_tolerance", &PlannerParams::goal_tolerance)
+      .def_property_readonly("heading_target", [](const PlannerParams& p) { return std::string(to_string(p.heading_target)); })
+      .def_property_readonly("key_node_angle_deg", [](const PlannerParams& p) { return p.key_nodes.min_turn * 180.0 / M_PI; })
+      .def_property_readonly("key_node_radius", [](const PlannerParams& p) { return p.key_nodes.reach_radius; })
       .def_readonly("critics", &PlannerParams::critics)
       .def_property_readonly("n_steps", &PlannerParams::n_steps)
       .def("__repr__", [](const PlannerParams& p) {
         std::ostringstream s;
         s << "PlannerParams(dt=" << p.dt << ", sim_time=" << p.sim_time << ", n_v=" << p.window.n_v
           << ", n_omega=" << p.window.n_omega << ", normalization='" << to_string(p.normalization)
-          << "', braking='" << to_string(p.braking) << "', goal_tolerance=" << p.goal_tolerance << ", critics=[";
+          << "', braking='" << to_string(p.braking) << "', goal_tolerance=" << p.goal_tolerance << ", heading_target='" << to_string(p.heading_target) << "'" << ", critics=[";
         for (std::size_t i = 0; i < p.critics.size(); ++i)
           s << (i ? ", " : "") << "('" << p.critics[i].name << "', " << p.critics[i].weight << ")";
         s << "])";
@@ -123,6 +142,7 @@ void init_planner(py::module_& m) {
       .def_readonly("command", &PlanResult::command)
       .def_readonly("best_index", &PlanResult::best_index)
       .def_property_readonly("target", [](const PlanResult& r) { return py::make_tuple(r.target.x(), r.target.y()); })
+      .def_readonly("key_node", &PlanResult::key_node, "Index of the target among the key nodes; -1 when aiming at the goal.")
       .def_readonly("critic_names", &PlanResult::critic_names)
       .def_readonly("weights", &PlanResult::weights)
       .def_property_readonly("samples", [](const PlanResult& r) { return twists_array(r.samples); },
@@ -168,11 +188,27 @@ void init_planner(py::module_& m) {
           "plan",
           [](LocalPlanner& p, const RobotState& state, py::handle goal, const ClearanceSource& world, py::object target) {
             const Vec2 g = to_vec2(goal, "goal");
-            const Vec2 t = target.is_none() ? g : to_vec2(target, "target");
-            return p.plan(state, g, t, world);
+            if (target.is_none()) return p.plan(state, g, world);
+            return p.plan(state, g, to_vec2(target, "target"), world);
           },
           py::arg("state"), py::arg("goal"), py::arg("world"), py::arg("target") = py::none(),
-          "One control cycle toward `goal`; the heading aims at `target` (default: the goal).")
+          "One control cycle toward `goal`. The heading aims at `target` when given, else at the goal or the "
+          "current key node per the params' heading_target.")
+      .def(
+          "set_global_path",
+          [](LocalPlanner& p, py::handle path) {
+            if (py::isinstance<GlobalPath>(path))
+              p.set_global_path(path.cast<const GlobalPath&>());
+            else
+              p.set_global_path(GlobalPath(to_points(path, "path")));
+          },
+          py::arg("path"), "The global path to follow (a GlobalPath or (n, 2) points); resets key-node tracking.")
+      .def("clear_global_path", &LocalPlanner::clear_global_path)
+      .def_property_readonly("global_path", [](const LocalPlanner& p) -> py::object {
+        if (!p.global_path()) return py::none();
+        return py::cast(*p.global_path());
+      })
+      .def_property_readonly("key_nodes", &LocalPlanner::key_nodes, "Indices of the key nodes in the global path's points.")
       .def("set_weight", &LocalPlanner::set_weight, py::arg("critic"), py::arg("weight"))
       .def("weight", &LocalPlanner::weight, py::arg("critic"))
       .def_property_readonly("limits", &LocalPlanner::limits)

@@ -77,4 +77,14 @@ py::array_t<double> poses_to_array(const Trajectory& poses) {
   return out;
 }
 
+py::array_t<double> points_array(const std::vector<Vec2>& points) {
+  py::array_t<double> out({static_cast<py::ssize_t>(points.size()), py::ssize_t{2}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    a(i, 0) = points[i].x();
+    a(i, 1) = points[i].y();
+  }
+  return out;
+}
+
 }  // namespace fgdwa::py_convert

@@ -25,5 +25,6 @@ Twist to_twist(py::handle obj, const std::string& name);
 std::vector<Vec2> to_points(py::handle obj, const std::string& name);
 
 py::array_t<double> poses_to_array(const Trajectory& poses);
+py::array_t<double> points_array(const std::vector<Vec2>& points);
 
 }  // namespace fgdwa::py_convert

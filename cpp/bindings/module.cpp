@@ -11,6 +11,8 @@ void init_clearance(py::module_& m);
 void init_collision(py::module_& m);
 void init_window(py::module_& m);
 void init_critics(py::module_& m);
+void init_path(py::module_& m);
+void init_global_planner(py::module_& m);
 void init_planner(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
@@ -23,5 +25,7 @@ PYBIND11_MODULE(_core, m) {
   init_collision(m);
   init_window(m);
   init_critics(m);
+  init_path(m);
+  init_global_planner(m);
   init_planner(m);
 }

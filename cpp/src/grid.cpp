@@ -44,6 +44,27 @@ std::size_t OccupancyGrid::occupied_count() const {
   return static_cast<std::size_t>(std::count_if(cells_.begin(), cells_.end(), [](std::uint8_t c) { return c != 0; }));
 }
 
+TerrainGrid::TerrainGrid(int rows, int cols, double resolution, Vec2 origin, std::vector<std::uint8_t> grades)
+    : rows_(rows), cols_(cols), resolution_(resolution), origin_(origin), grades_(std::move(grades)) {
+  // The occupancy grid's constructor checks the same layout rules.
+  OccupancyGrid layout(rows, cols, resolution, origin, std::vector<std::uint8_t>(grades_.size()));
+  for (std::size_t i = 0; i < grades_.size(); ++i)
+    if (grades_[i] > kMaxGrade)
+      throw Error(describe("terrain grade at cell " + std::to_string(i), int(grades_[i]), "must be 0-4"));
+}
+
+int TerrainGrid::grade_at(const Vec2& p) const {
+  const double fc = std::floor((p.x() - origin_.x()) / resolution_);
+  const double fr = std::floor((p.y() - origin_.y()) / resolution_);
+  if (!(fr >= 0.0 && fr < rows_ && fc >= 0.0 && fc < cols_)) return 0;
+  return grade(static_cast<int>(fr), static_cast<int>(fc));
+}
+
+bool TerrainGrid::matches(const OccupancyGrid& grid) const {
+  return rows_ == grid.rows() && cols_ == grid.cols() && std::abs(resolution_ - grid.resolution()) < 1e-12 &&
+         (origin_ - grid.origin()).norm() < 1e-12;
+}
+
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 

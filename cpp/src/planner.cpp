@@ -17,6 +17,14 @@ const char* to_string(Status status) {
   return "?";
 }
 
+const char* to_string(HeadingTarget target) {
+  switch (target) {
+    case HeadingTarget::Goal: return "goal";
+    case HeadingTarget::KeyNodes: return "key_nodes";
+  }
+  return "?";
+}
+
 const char* to_string(RejectReason reason) {
   switch (reason) {
     case RejectReason::None: return "None";
@@ -49,6 +57,7 @@ void PlannerParams::validate() const {
   if (n_steps() < 1) throw Error(detail::describe("sim_time", sim_time, "must be at least one dt"));
   window.validate();
   detail::require_non_negative("goal_tolerance", goal_tolerance);
+  key_nodes.validate();
   if (critics.empty()) throw Error("critics: at least one critic is needed");
   for (std::size_t i = 0; i < critics.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
@@ -90,19 +99,43 @@ void require_finite_state(const RobotState& s) {
 }
 }  // namespace
 
+void LocalPlanner::set_global_path(const GlobalPath& path) {
+  path_ = std::make_unique<GlobalPath>(path);
+  tracker_ = std::make_unique<KeyNodeTracker>(*path_, params_.key_nodes);
+}
+
+void LocalPlanner::clear_global_path() {
+  tracker_.reset();
+  path_.reset();
+}
+
+const std::vector<std::size_t>& LocalPlanner::key_nodes() const {
+  static const std::vector<std::size_t> none;
+  return tracker_ ? tracker_->nodes() : none;
+}
+
 const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, const ClearanceSource& world) {
-  return plan(state, goal, goal, world);
+  require_finite_state(state);
+  if (params_.heading_target == HeadingTarget::Goal) return run_cycle(state, goal, goal, -1, world);
+  if (!tracker_) throw Error("heading_target = key_nodes needs a global path: call set_global_path first");
+  const Vec2 target = tracker_->update(state.pose.position());
+  return run_cycle(state, goal, target, static_cast<int>(tracker_->current()), world);
 }
 
 const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, const Vec2& target,
                                      const ClearanceSource& world) {
   require_finite_state(state);
-  detail::require_finite("goal x", goal.x());
-  detail::require_finite("goal y", goal.y());
   detail::require_finite("target x", target.x());
   detail::require_finite("target y", target.y());
+  return run_cycle(state, goal, target, -1, world);
+}
 
+const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& goal, const Vec2& target, int key_node,
+                                          const ClearanceSource& world) {
+  detail::require_finite("goal x", goal.x());
+  detail::require_finite("goal y", goal.y());
   result_.target = target;
+  result_.key_node = key_node;
   result_.best_index = -1;
   result_.reject_counts.fill(0);
   if ((goal - state.pose.position()).norm() <= params_.goal_tolerance) {
@@ -122,6 +155,7 @@ const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, 
   context.target = target;
   context.dt = params_.dt;
   context.n_steps = n_steps_;
+  context.path = path_.get();
   score_and_choose(context);
 
   if (result_.best_index < 0) {

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ClearanceSource', 'CollisionWorld', 'CriticConfig', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'LocalPlanner', 'OccupancyGrid', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Status', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dynamic_window', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LocalPlanner', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dynamic_window', 'inflate', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -198,6 +198,25 @@ class OccupancyGrid:
     @property
     def shape(self) -> tuple[int, int]:
         ...
+class TerrainGrid:
+    """
+    Slope grades 0-4 per cell, laid out like an OccupancyGrid (grades[row, col]); grade 4 cannot be entered.
+    """
+    def __init__(self, grades: typing.Any, resolution: typing.SupportsFloat | typing.SupportsIndex, origin: typing.Any = (0.0, 0.0)) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def grade_at(self, point: typing.Any) -> int:
+        ...
+    @property
+    def grades(self) -> numpy.typing.NDArray[numpy.uint8]:
+        ...
+    @property
+    def resolution(self) -> float:
+        ...
+    @property
+    def shape(self) -> tuple[int, int]:
+        ...
 class DistanceField:
     """
     Exact Euclidean distance transform of a grid. `cells` holds centre-to-centre distances in metres (scipy's distance_transform_edt(cells == 0) * resolution); `distance(points)` estimates the distance to the nearest obstacle cell's edge, within one cell of the exact value.
@@ -322,6 +341,154 @@ class CriticConfig:
     @weight.setter
     def weight(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
+class PathProjection:
+    """
+    The nearest point of a path to a query point.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def arc_length(self) -> float:
+        ...
+    @property
+    def distance(self) -> float:
+        ...
+    @property
+    def point(self) -> tuple[float, float]:
+        ...
+    @property
+    def segment(self) -> int:
+        ...
+class GlobalPath:
+    """
+    A global path: a polyline of (n, 2) points in metres, with projection, deviation, arc-length walking and key nodes.
+    """
+    def __init__(self, points: typing.Any) -> None:
+        ...
+    def __len__(self) -> int:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def deviation(self, point: typing.Any) -> float:
+        """
+        Distance in metres from the point to the path (D).
+        """
+    def key_nodes(self, min_turn_deg: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> list[int]:
+        """
+        Indices of the vertices where the path turns by more than min_turn_deg degrees, then the last vertex.
+        """
+    def point_at(self, s: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
+        """
+        The point at arc length s metres (clamped to the path).
+        """
+    def project(self, point: typing.Any) -> PathProjection:
+        ...
+    def segment_direction(self, segment: typing.SupportsInt | typing.SupportsIndex) -> float:
+        ...
+    @property
+    def length(self) -> float:
+        ...
+    @property
+    def points(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def segment_count(self) -> int:
+        ...
+class GlobalStatus:
+    """
+    Outcome of a global planning query.
+    
+    Members:
+    
+      Found
+    
+      NoPath
+    
+      Timeout
+    """
+    Found: typing.ClassVar[GlobalStatus]
+    NoPath: typing.ClassVar[GlobalStatus]
+    Timeout: typing.ClassVar[GlobalStatus]
+    __members__: typing.ClassVar[dict[str, GlobalStatus]]
+    @typing.overload
+    def __eq__(self, other: GlobalStatus) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: GlobalStatus) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class GlobalPlan:
+    """
+    A global planner's result: status, (n, 2) path, cost, planning time (s).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def cost(self) -> float:
+        ...
+    @property
+    def found(self) -> bool:
+        ...
+    @property
+    def path(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def planning_time(self) -> float:
+        ...
+    @property
+    def status(self) -> GlobalStatus:
+        ...
+class AStarPlanner:
+    """
+    8-connected grid A* (octile heuristic, no corner cutting, inflated obstacles, optional terrain cost = step length x (1 + w_risk x risk[grade])).
+    """
+    def __init__(self, grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing.SupportsIndex = 0.25, simplify: bool = True, terrain: TerrainGrid = None, w_risk: typing.SupportsFloat | typing.SupportsIndex = 1.0, risk: typing.Any = (0.0, 0.5, 1.0, 2.0)) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def plan(self, start: typing.Any, goal: typing.Any) -> GlobalPlan:
+        ...
+    @property
+    def blocked(self) -> numpy.typing.NDArray[numpy.uint8]:
+        ...
+class OmplPlanner:
+    """
+    OMPL's sampling-based planners over the same map, with a weighted cost of path length, clearance and terrain risk; seeded and time-bounded.
+    """
+    @staticmethod
+    def planner_names() -> list[str]:
+        ...
+    def __init__(self, grid: OccupancyGrid, footprint: Footprint, planner: str = 'RRTstar', time_limit: typing.SupportsFloat | typing.SupportsIndex = 1.0, range: typing.SupportsFloat | typing.SupportsIndex = 1.0, seed: typing.SupportsInt | typing.SupportsIndex = 0, inflation_radius: typing.Any = None, w_length: typing.SupportsFloat | typing.SupportsIndex = 1.0, w_clearance: typing.SupportsFloat | typing.SupportsIndex = 0.5, clearance_reference: typing.SupportsFloat | typing.SupportsIndex = 1.0, terrain: TerrainGrid = None, w_risk: typing.SupportsFloat | typing.SupportsIndex = 1.0, risk: typing.Any = (0.0, 0.5, 1.0, 2.0), simplify: bool = True, interpolation: typing.SupportsFloat | typing.SupportsIndex = 0.1, verbose: bool = False) -> None:
+        ...
+    def plan(self, start: typing.Any, goal: typing.Any) -> GlobalPlan:
+        ...
 class Status:
     """
     Outcome of one control cycle.
@@ -423,9 +590,9 @@ class PlannerParams:
     """
     Parameters of the local planner (SI units).
     """
-    def __init__(self, dt: typing.SupportsFloat | typing.SupportsIndex = 0.15, sim_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21, normalization: str = 'sum', braking: str = 'discrete', goal_tolerance: typing.SupportsFloat | typing.SupportsIndex = 0.3, critics: typing.Any = None) -> None:
+    def __init__(self, dt: typing.SupportsFloat | typing.SupportsIndex = 0.15, sim_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21, normalization: str = 'sum', braking: str = 'discrete', goal_tolerance: typing.SupportsFloat | typing.SupportsIndex = 0.3, critics: typing.Any = None, heading_target: str = 'goal', key_node_angle_deg: typing.SupportsFloat | typing.SupportsIndex = 10.0, key_node_radius: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
         """
-        dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0).
+        dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0); heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this near is reached.
         """
     def __repr__(self) -> str:
         ...
@@ -440,6 +607,15 @@ class PlannerParams:
         ...
     @property
     def goal_tolerance(self) -> float:
+        ...
+    @property
+    def heading_target(self) -> str:
+        ...
+    @property
+    def key_node_angle_deg(self) -> float:
+        ...
+    @property
+    def key_node_radius(self) -> float:
         ...
     @property
     def n_omega(self) -> int:
@@ -477,6 +653,11 @@ class PlanResult:
     @property
     def free_distance(self) -> numpy.typing.NDArray[numpy.float64]:
         ...
+    @property
+    def key_node(self) -> int:
+        """
+        Index of the target among the key nodes; -1 when aiming at the goal.
+        """
     @property
     def min_clearance(self) -> numpy.typing.NDArray[numpy.float64]:
         ...
@@ -525,13 +706,19 @@ class LocalPlanner:
         ...
     def __repr__(self) -> str:
         ...
+    def clear_global_path(self) -> None:
+        ...
     def plan(self, state: RobotState, goal: typing.Any, world: ClearanceSource, target: typing.Any = None) -> PlanResult:
         """
-        One control cycle toward `goal`; the heading aims at `target` (default: the goal).
+        One control cycle toward `goal`. The heading aims at `target` when given, else at the goal or the current key node per the params' heading_target.
         """
     def rollouts(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (samples, n_steps, 3) rollouts of the last cycle.
+        """
+    def set_global_path(self, path: typing.Any) -> None:
+        """
+        The global path to follow (a GlobalPath or (n, 2) points); resets key-node tracking.
         """
     def set_weight(self, critic: str, weight: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
@@ -540,6 +727,14 @@ class LocalPlanner:
     @property
     def footprint(self) -> Footprint:
         ...
+    @property
+    def global_path(self) -> typing.Any:
+        ...
+    @property
+    def key_nodes(self) -> list[int]:
+        """
+        Indices of the key nodes in the global path's points.
+        """
     @property
     def limits(self) -> RobotLimits:
         ...
@@ -557,6 +752,10 @@ def critic_names() -> list[str]:
 def dynamic_window(limits: RobotLimits, current: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex) -> VelocityWindow:
     """
     Vm ∩ Vd for the current (v, omega).
+    """
+def inflate(grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing.SupportsIndex, terrain: TerrainGrid = None) -> numpy.typing.NDArray[numpy.uint8]:
+    """
+    (rows, cols) uint8, 1 where a robot of that radius cannot centre: obstacles, cells nearer than the radius to one, and grade-4 terrain.
     """
 def rollout(pose: typing.Any, twist: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex, n_steps: typing.SupportsInt | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """

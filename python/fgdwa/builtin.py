@@ -47,3 +47,25 @@ def demo_scenario() -> Scenario:
         goal=(11.0, 4.0),
         description="Blocks beside the straight line and a wall with a 2.2 m gap between start and goal.",
     )
+
+
+def c_trap_scenario() -> Scenario:
+    """A C-shaped obstacle group open toward the start, right between start and goal.
+
+    Heading straight for the goal leads into the C's pocket, where every way
+    forward is blocked: plain DWA is trapped. The global path runs around the C."""
+    resolution = 0.1
+    cells = np.zeros((100, 140), dtype=np.uint8)
+    cells[0, :] = cells[-1, :] = 1
+    cells[:, 0] = cells[:, -1] = 1
+    _fill(cells, resolution, 8.0, 2.5, 8.5, 7.5)  # back of the C, facing the start
+    _fill(cells, resolution, 5.0, 2.5, 8.5, 3.0)  # lower arm
+    _fill(cells, resolution, 5.0, 7.0, 8.5, 7.5)  # upper arm
+    grid = OccupancyGrid(cells, resolution, (0.0, 0.0))
+    return Scenario(
+        name="c_trap",
+        world=World(grid=grid),
+        start=(1.5, 5.0, 0.0),
+        goal=(12.5, 5.0),
+        description="A C-shaped obstacle group open toward the start, between start and goal.",
+    )

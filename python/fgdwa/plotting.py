@@ -48,6 +48,9 @@ def plot_episode(result: EpisodeResult, world: World, goal, path: Optional[Path]
     """Map, executed path, start and goal, and the last cycle's rollout fan."""
     fig, ax = plt.subplots(figsize=(9, 6.5))
     draw_world(ax, world, result.sim_time)
+    if result.global_path is not None:
+        ax.plot(*result.global_path.T, color="tab:red", linewidth=1.0, linestyle="--", label="global path")
+        ax.plot(*result.key_nodes.T, "+", color="tab:red", markersize=10, markeredgewidth=2, label="key nodes")
     ax.plot(*result.poses[:, :2].T, color="tab:blue", linewidth=1.8, label="executed path")
     ax.add_patch(plt.Circle(result.poses[-1, :2], footprint_radius, fill=False, color="tab:blue"))
     if result.last_plan is not None:

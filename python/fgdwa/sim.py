@@ -20,6 +20,8 @@ from fgdwa._core import (
     FgdwaError,
     FieldClearance,
     Footprint,
+    GlobalPath,
+    GlobalStatus,
     LocalPlanner,
     OccupancyGrid,
     PlannerParams,
@@ -29,8 +31,10 @@ from fgdwa._core import (
     Status,
     step,
 )
+from fgdwa.global_planning import plan_global
 
 OUTCOMES = ("success", "collision", "timeout")
+GLOBAL_PATH_MARGIN = 0.3  # m kept beyond the footprint's radius by the global path where the map allows
 
 
 @dataclass(frozen=True)
@@ -63,6 +67,9 @@ class EpisodeResult:
     cycle_times: np.ndarray = field(default_factory=lambda: np.zeros(0))  # s, per cycle
     last_plan: Optional[PlanResult] = None
     last_rollouts: Optional[np.ndarray] = None  # (samples, n_steps, 3)
+    global_path: Optional[np.ndarray] = None  # (n, 2), when the planner followed one
+    key_nodes: Optional[np.ndarray] = None  # (k, 2) key-node positions
+    targets: Optional[np.ndarray] = None  # (steps, 2) the heading's target each cycle
 
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
@@ -126,6 +133,9 @@ def run_episode(
     params: Optional[PlannerParams] = None,
     max_steps: int = 1000,
     goal_tolerance: Optional[float] = None,
+    global_path=None,
+    global_method: str = "astar",
+    global_options: Optional[dict] = None,
 ) -> EpisodeResult:
     """Drive from ``start`` (x, y, theta, at rest) to ``goal`` (x, y).
 
@@ -134,6 +144,12 @@ def run_episode(
     success (within ``goal_tolerance`` of the goal, default the planner's),
     collision (exact footprint contact anywhere along a step), or ``max_steps``
     cycles (timeout).
+
+    With ``params.heading_target == "key_nodes"`` the planner follows a global
+    path: ``global_path`` ((n, 2) points) when given, else one planned once on
+    the map by ``plan_global(method=global_method, **global_options)``, with
+    obstacles inflated by the footprint's radius plus GLOBAL_PATH_MARGIN (or the
+    radius alone where the margin closes every way) unless the options say otherwise.
     """
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
@@ -152,6 +168,9 @@ def run_episode(
     field_ = DistanceField(world.grid) if world.grid is not None else None
     seen = FieldClearance(field_, list(world.discs))
     planner = LocalPlanner(limits, footprint, params)
+    path = _global_path(world, start_pose, goal_point, footprint, params, global_path, global_method, global_options)
+    if path is not None:
+        planner.set_global_path(path)
 
     dt = params.dt
     state = RobotState(start_pose, (0.0, 0.0))
@@ -160,6 +179,7 @@ def run_episode(
     clearances = [truth.clearance(footprint, start_pose, 0.0)]
     statuses = []
     cycle_times = []
+    targets = []
     outcome = "timeout"
     last_plan = None
     last_rollouts = None
@@ -176,6 +196,7 @@ def run_episode(
         last_plan = plan
         last_rollouts = planner.rollouts()
         statuses.append(plan.status.name)
+        targets.append(plan.target)
         command = plan.command
         pose = step(state.pose, command, dt)
         state = RobotState(pose, command)
@@ -209,4 +230,32 @@ def run_episode(
         cycle_times=np.array(cycle_times),
         last_plan=last_plan,
         last_rollouts=last_rollouts,
+        global_path=None if path is None else path.points,
+        key_nodes=None if path is None else path.points[planner.key_nodes],
+        targets=np.array(targets, dtype=float).reshape(-1, 2),
     )
+
+
+def _global_path(world: World, start, goal, footprint: Footprint, params: PlannerParams, given, method: str,
+                 options: Optional[dict]) -> Optional[GlobalPath]:
+    if given is not None:
+        return given if isinstance(given, GlobalPath) else GlobalPath(np.asarray(given, dtype=float))
+    if params.heading_target != "key_nodes":
+        return None
+    if world.grid is None:
+        raise FgdwaError("heading_target = key_nodes needs a global path: give global_path or a world with a grid")
+    options = dict(options or {})
+    if method.startswith("ompl:"):
+        options.setdefault("footprint", footprint)
+    # A path that keeps a margin beyond the footprint gives the local planner
+    # room at the corners where key nodes sit; where the margin closes every
+    # passage, the footprint's radius alone decides.
+    radii = [options.pop("inflation_radius")] if "inflation_radius" in options else \
+        [footprint.radius + GLOBAL_PATH_MARGIN, footprint.radius]
+    for radius in radii:
+        plan = plan_global(world.grid, start[:2], goal, method=method, inflation_radius=radius, **options)
+        if plan.status == GlobalStatus.Found:
+            break
+    if plan.status != GlobalStatus.Found:
+        raise FgdwaError(f"global planner {method}: no path from start to goal ({plan.status.name})")
+    return GlobalPath(plan.path)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fgdwa/geometry.hpp"
+#include "fgdwa/path.hpp"
 #include "fgdwa/robot.hpp"
 
 namespace fgdwa {
@@ -22,6 +23,7 @@ struct CriticContext {
   Vec2 target = Vec2::Zero();  // what the heading aims at: the goal, or a key node
   double dt = 0.0;             // s, rollout step
   int n_steps = 0;
+  const GlobalPath* path = nullptr;  // the global path, when the planner has one
 };
 
 // One sampled command with what the planner measured about it.

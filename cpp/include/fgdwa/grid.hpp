@@ -40,6 +40,32 @@ class OccupancyGrid {
   std::vector<std::uint8_t> cells_;
 };
 
+// Slope grades 0-4 on the same cell layout as an OccupancyGrid (Section 3.3.3):
+// 0 is flat, 4 cannot be entered.
+class TerrainGrid {
+ public:
+  static constexpr int kMaxGrade = 4;
+  TerrainGrid(int rows, int cols, double resolution, Vec2 origin, std::vector<std::uint8_t> grades);
+
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+  double resolution() const { return resolution_; }
+  const Vec2& origin() const { return origin_; }
+  const std::vector<std::uint8_t>& grades() const { return grades_; }
+  int grade(int row, int col) const { return grades_[static_cast<std::size_t>(row) * cols_ + col]; }
+  // Grade under `p`; 0 outside the grid.
+  int grade_at(const Vec2& p) const;
+  // Whether this terrain lies exactly on the cells of `grid`.
+  bool matches(const OccupancyGrid& grid) const;
+
+ private:
+  int rows_;
+  int cols_;
+  double resolution_;
+  Vec2 origin_;
+  std::vector<std::uint8_t> grades_;
+};
+
 // Exact Euclidean distance transform of a grid (Felzenszwalb and Huttenlocher).
 //
 // `cell_distance(row, col)` is measured between cell centres: from this cell's

@@ -14,6 +14,7 @@
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/critics.hpp"
+#include "fgdwa/path.hpp"
 #include "fgdwa/robot.hpp"
 #include "fgdwa/window.hpp"
 
@@ -36,7 +37,14 @@ enum class Normalization : std::uint8_t {
   MinMax,  // each term mapped to [0, 1] over the admissible samples
 };
 
+// What the heading critic aims at (SPEC 5).
+enum class HeadingTarget : std::uint8_t {
+  Goal,      // the goal itself: plain DWA
+  KeyNodes,  // the first key node of the global path not yet reached: GDWA
+};
+
 const char* to_string(Status status);
+const char* to_string(HeadingTarget target);
 const char* to_string(RejectReason reason);
 const char* to_string(Normalization normalization);
 const char* to_string(BrakingModel braking);
@@ -48,6 +56,8 @@ struct PlannerParams {
   Normalization normalization = Normalization::Sum;
   BrakingModel braking = BrakingModel::Discrete;  // admissibility (Eq. 3); Continuous is the paper's literal form
   double goal_tolerance = 0.3;  // m, GoalReached within this distance of the goal
+  HeadingTarget heading_target = HeadingTarget::Goal;
+  KeyNodeParams key_nodes;      // key-node angle and reach radius, for HeadingTarget::KeyNodes
   std::vector<CriticConfig> critics = {
       {"heading", 0.5, {}}, {"clearance", 0.15, {}}, {"velocity", 1.0, {}}};  // Table 5
 
@@ -63,6 +73,7 @@ struct PlanResult {
   Twist command;
   int best_index = -1;         // index into samples, -1 when no sample was chosen
   Vec2 target = Vec2::Zero();  // what the heading critic aimed at
+  int key_node = -1;           // index of the target in the key nodes, -1 when aiming at the goal
   std::vector<std::string> critic_names;
   std::vector<double> weights;                  // per critic, this cycle
   std::vector<Twist> samples;                   // n_v x n_omega, v-major
@@ -80,10 +91,19 @@ class LocalPlanner {
  public:
   LocalPlanner(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& params = {});
 
-  // One control cycle from `state` toward `goal`, heading for `target` (the goal
-  // itself for plain DWA). The reference stays valid until the next call.
+  // One control cycle from `state` toward `goal`, the heading aiming at the goal
+  // or at the current key node per `heading_target`. The reference stays valid
+  // until the next call.
   const PlanResult& plan(const RobotState& state, const Vec2& goal, const ClearanceSource& world);
+  // The same with the heading's target given by the caller.
   const PlanResult& plan(const RobotState& state, const Vec2& goal, const Vec2& target, const ClearanceSource& world);
+
+  // The global path to follow; resets the key-node tracking. HeadingTarget::KeyNodes
+  // needs one; the path-aware critics read it.
+  void set_global_path(const GlobalPath& path);
+  void clear_global_path();
+  const GlobalPath* global_path() const { return path_.get(); }
+  const std::vector<std::size_t>& key_nodes() const;
 
   // Weight of a critic by name, e.g. set each cycle by a weight policy.
   void set_weight(const std::string& critic, double weight);
@@ -100,6 +120,8 @@ class LocalPlanner {
   std::size_t critic_index(const std::string& name) const;
   void evaluate_rollouts(const RobotState& state, const ClearanceSource& world);
   void score_and_choose(const CriticContext& context);
+  const PlanResult& run_cycle(const RobotState& state, const Vec2& goal, const Vec2& target, int key_node,
+                              const ClearanceSource& world);
 
   RobotLimits limits_;
   Footprint footprint_;
@@ -107,6 +129,8 @@ class LocalPlanner {
   int n_steps_;
   std::vector<std::unique_ptr<Critic>> critics_;
   std::vector<Trajectory> rollouts_;
+  std::unique_ptr<GlobalPath> path_;
+  std::unique_ptr<KeyNodeTracker> tracker_;
   PlanResult result_;
 };
 

@@ -1,0 +1,58 @@
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <sstream>
+
+#include "convert.hpp"
+#include "fgdwa/path.hpp"
+
+namespace py = pybind11;
+using namespace fgdwa;
+using namespace fgdwa::py_convert;
+
+void init_path(py::module_& m) {
+  py::class_<PathProjection>(m, "PathProjection", "The nearest point of a path to a query point.")
+      .def_property_readonly("point", [](const PathProjection& p) { return py::make_tuple(p.point.x(), p.point.y()); })
+      .def_readonly("segment", &PathProjection::segment)
+      .def_readonly("arc_length", &PathProjection::arc_length)
+      .def_readonly("distance", &PathProjection::distance)
+      .def("__repr__", [](const PathProjection& p) {
+        std::ostringstream s;
+        s << "PathProjection(point=(" << p.point.x() << ", " << p.point.y() << "), segment=" << p.segment
+          << ", arc_length=" << p.arc_length << ", distance=" << p.distance << ")";
+        return s.str();
+      });
+
+  py::class_<GlobalPath>(m, "GlobalPath",
+                         "A global path: a polyline of (n, 2) points in metres, with projection, deviation, "
+                         "arc-length walking and key nodes.")
+      .def(py::init([](py::handle points) { return GlobalPath(to_points(points, "points")); }), py::arg("points"))
+      .def_property_readonly("points", [](const GlobalPath& p) { return points_array(p.points()); })
+      .def_property_readonly("length", &GlobalPath::length)
+      .def_property_readonly("segment_count", &GlobalPath::segment_count)
+      .def("segment_direction", [](const GlobalPath& p, std::size_t i) {
+        if (i >= p.segment_count()) throw Error("segment " + std::to_string(i) + " does not exist");
+        return p.segment_direction(i);
+      }, py::arg("segment"))
+      .def("project", [](const GlobalPath& p, py::handle point) { return p.project(to_vec2(point, "point")); },
+           py::arg("point"))
+      .def("deviation", [](const GlobalPath& p, py::handle point) { return p.deviation(to_vec2(point, "point")); },
+           py::arg("point"), "Distance in metres from the point to the path (D).")
+      .def("point_at", [](const GlobalPath& p, double s) {
+        if (!std::isfinite(s)) throw Error("s: must be finite");
+        const Vec2 q = p.point_at(s);
+        return py::make_tuple(q.x(), q.y());
+      }, py::arg("s"), "The point at arc length s metres (clamped to the path).")
+      .def("key_nodes", [](const GlobalPath& p, double min_turn_deg) {
+        if (!(min_turn_deg >= 0.0 && min_turn_deg < 180.0)) throw Error("min_turn_deg = " + std::to_string(min_turn_deg) + ": must be in [0, 180)");
+        return p.key_nodes(min_turn_deg * M_PI / 180.0);
+      }, py::arg("min_turn_deg") = 10.0,
+           "Indices of the vertices where the path turns by more than min_turn_deg degrees, then the last vertex.")
+      .def("__len__", [](const GlobalPath& p) { return p.points().size(); })
+      .def("__repr__", [](const GlobalPath& p) {
+        std::ostringstream s;
+        s << "GlobalPath(" << p.points().size() << " points, length=" << p.length() << ")";
+        return s.str();
+      });
+}

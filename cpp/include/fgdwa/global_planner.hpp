@@ -1,0 +1,112 @@
+#pragma once
+// Global planners (SPEC 8): grid A* and OMPL's sampling-based planners, with
+// one result type. No path is a status; a start or goal inside an obstacle is
+// misuse and throws.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fgdwa/grid.hpp"
+#include "fgdwa/robot.hpp"
+
+namespace fgdwa {
+
+enum class GlobalStatus : std::uint8_t { Found, NoPath, Timeout };
+const char* to_string(GlobalStatus status);
+
+struct GlobalPlan {
+  GlobalStatus status = GlobalStatus::NoPath;
+  std::vector<Vec2> path;      // m, start to goal; empty unless Found
+  double cost = 0.0;           // the planner's own cost of the path
+  double planning_time = 0.0;  // s, wall clock
+};
+
+// Terrain risk in the cost: step length x (1 + w_risk x risk[grade]); grade 4 is impassable.
+struct TerrainCost {
+  double w_risk = 1.0;                            // weight of the risk
+  std::array<double, 4> risk = {0.0, 0.5, 1.0, 2.0};  // risk of grades 0-3
+  void validate() const;
+  double multiplier(int grade) const { return 1.0 + w_risk * risk[static_cast<std::size_t>(grade)]; }
+};
+
+// Cells a robot of `inflation_radius` cannot centre on: occupied cells, cells
+// whose centre is nearer than the radius to an obstacle square, and grade-4
+// terrain. Row-major, 1 = blocked.
+std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_radius,
+                                  const TerrainGrid* terrain = nullptr);
+
+struct AStarParams {
+  double inflation_radius = 0.25;  // m, usually the footprint's radius
+  bool simplify = true;            // shortcut the cell path by line of sight
+  TerrainCost terrain;
+  void validate() const;
+};
+
+// 8-connected A* over cell centres with the octile heuristic. A diagonal step
+// needs both cells beside it free (no corner cutting). Ties are broken by the
+// smaller heuristic, then the smaller cell index, so results are reproducible.
+// The start and goal cells may lie in the inflated band (a robot parked near a
+// wall) but not in an obstacle.
+class AStarPlanner {
+ public:
+  AStarPlanner(const OccupancyGrid& grid, const AStarParams& params = {},
+               std::optional<TerrainGrid> terrain = std::nullopt);
+
+  GlobalPlan plan(const Vec2& start, const Vec2& goal) const;
+
+  const OccupancyGrid& grid() const { return grid_; }
+  const std::vector<std::uint8_t>& blocked() const { return blocked_; }
+  const AStarParams& params() const { return params_; }
+  // Whether the straight segment a-b crosses only free cells whose grade is at
+  // most `max_grade`.
+  bool line_of_sight(const Vec2& a, const Vec2& b, int max_grade) const;
+
+ private:
+  int grade(std::size_t cell) const;
+  OccupancyGrid grid_;
+  AStarParams params_;
+  std::optional<TerrainGrid> terrain_;
+  std::vector<std::uint8_t> blocked_;
+};
+
+struct OmplParams {
+  std::string planner = "RRTstar";  // RRTstar, InformedRRTstar, PRMstar, BITstar, RRTConnect
+  double time_limit = 1.0;          // s
+  double range = 1.0;               // m, longest tree edge of the planners that have one; 0 = OMPL's default
+  std::uint32_t seed = 0;           // runs with the same seed and inputs give the same path
+  double inflation_radius = 0.25;   // m, for a circle footprint
+  double w_length = 1.0;            // weight of path length in the cost
+  double w_clearance = 0.5;         // weight of the clearance cost
+  double clearance_reference = 1.0; // m, clearance beyond which a state costs nothing
+  TerrainCost terrain;              // weight of terrain risk is terrain.w_risk
+  bool simplify = true;             // OMPL's path simplifier
+  double interpolation = 0.1;       // m, spacing of the interpolated output path
+  bool verbose = false;             // OMPL's console output
+  void validate() const;
+};
+
+// OMPL over the same inflated grid (and, for a polygon footprint, the exact
+// footprint against the map with FCL, planning over SE(2)). The cost is a
+// weighted sum of OMPL objectives: path length, a clearance integral and a
+// terrain-risk integral.
+class OmplPlanner {
+ public:
+  OmplPlanner(const OccupancyGrid& grid, const Footprint& footprint, const OmplParams& params = {},
+              std::optional<TerrainGrid> terrain = std::nullopt);
+  ~OmplPlanner();
+  OmplPlanner(OmplPlanner&&) noexcept;
+  OmplPlanner& operator=(OmplPlanner&&) noexcept;
+
+  GlobalPlan plan(const Vec2& start, const Vec2& goal) const;
+  static std::vector<std::string> planner_names();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fgdwa

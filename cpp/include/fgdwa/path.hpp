@@ -1,0 +1,78 @@
+#pragma once
+// The global path as the local planner sees it: a polyline with projection,
+// deviation, segment directions, arc-length walking and key nodes (SPEC 5).
+#include <cstddef>
+#include <vector>
+
+#include "fgdwa/geometry.hpp"
+
+namespace fgdwa {
+
+struct PathProjection {
+  Vec2 point = Vec2::Zero();  // nearest point of the polyline
+  std::size_t segment = 0;    // index of the segment holding it
+  double arc_length = 0.0;    // m from the start of the path
+  double distance = 0.0;      // m from the query point
+};
+
+class GlobalPath {
+ public:
+  // At least two points; repeated consecutive points are dropped, and at least
+  // two distinct ones must remain.
+  explicit GlobalPath(std::vector<Vec2> points);
+
+  const std::vector<Vec2>& points() const { return points_; }
+  std::size_t segment_count() const { return points_.size() - 1; }
+  double length() const { return cumulative_.back(); }
+  // Arc length from the start to vertex i.
+  double arc_length_at_vertex(std::size_t i) const { return cumulative_[i]; }
+  // Direction of segment i, rad.
+  double segment_direction(std::size_t i) const { return directions_[i]; }
+
+  // Orthogonal projection onto the nearest segment (the first one on ties).
+  PathProjection project(const Vec2& p) const;
+  // Distance from p to the polyline (the deviation D).
+  double deviation(const Vec2& p) const { return project(p).distance; }
+  // The point at arc length s, clamped to [0, length()].
+  Vec2 point_at(double s) const;
+  // The segment holding arc length s (clamped).
+  std::size_t segment_at(double s) const;
+
+  // Vertices where the direction turns by more than `min_turn` rad, then the
+  // last vertex (the goal). Indices into points().
+  std::vector<std::size_t> key_nodes(double min_turn) const;
+
+ private:
+  std::vector<Vec2> points_;
+  std::vector<double> cumulative_;
+  std::vector<double> directions_;
+};
+
+struct KeyNodeParams {
+  double min_turn = 0.17453292519943295;  // rad (10 deg), turn that makes a vertex a key node
+  double reach_radius = 1.0;              // m, a key node closer than this is reached
+  void validate() const;
+};
+
+// The temporary target of GDWA: the first key node not yet reached. A node is
+// reached when the robot comes within reach_radius of it or its projection on
+// the path passes it; reached nodes stay reached.
+class KeyNodeTracker {
+ public:
+  KeyNodeTracker(const GlobalPath& path, const KeyNodeParams& params);
+
+  // Advances past reached nodes and returns the current target.
+  Vec2 update(const Vec2& robot);
+  Vec2 target() const { return path_->points()[nodes_[current_]]; }
+  // Position of the current target in key_nodes(), and the nodes themselves.
+  std::size_t current() const { return current_; }
+  const std::vector<std::size_t>& nodes() const { return nodes_; }
+
+ private:
+  const GlobalPath* path_;
+  KeyNodeParams params_;
+  std::vector<std::size_t> nodes_;
+  std::size_t current_ = 0;
+};
+
+}  // namespace fgdwa

@@ -1,0 +1,208 @@
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "fgdwa/global_planner.hpp"
+#include "validation.hpp"
+
+namespace fgdwa {
+
+const char* to_string(GlobalStatus status) {
+  switch (status) {
+    case GlobalStatus::Found: return "Found";
+    case GlobalStatus::NoPath: return "NoPath";
+    case GlobalStatus::Timeout: return "Timeout";
+  }
+  return "?";
+}
+
+void TerrainCost::validate() const {
+  detail::require_non_negative("w_risk", w_risk);
+  for (std::size_t g = 0; g < risk.size(); ++g) detail::require_non_negative("risk[" + std::to_string(g) + "]", risk[g]);
+}
+
+void AStarParams::validate() const {
+  detail::require_non_negative("inflation_radius", inflation_radius);
+  terrain.validate();
+}
+
+std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_radius, const TerrainGrid* terrain) {
+  detail::require_non_negative("inflation_radius", inflation_radius);
+  if (terrain && !terrain->matches(grid)) throw Error("terrain: its cells must match the occupancy grid's");
+  std::vector<std::uint8_t> blocked(grid.cells().size(), 0);
+  const DistanceField field(grid);
+  for (int r = 0; r < grid.rows(); ++r)
+    for (int c = 0; c < grid.cols(); ++c) {
+      const std::size_t i = grid.index(r, c);
+      blocked[i] = grid.occupied(r, c) || field.distance(grid.cell_center(r, c)) < inflation_radius ||
+                   (terrain && terrain->grade(r, c) >= TerrainGrid::kMaxGrade);
+    }
+  return blocked;
+}
+
+AStarPlanner::AStarPlanner(const OccupancyGrid& grid, const AStarParams& params, std::optional<TerrainGrid> terrain)
+    : grid_(grid), params_(params), terrain_(std::move(terrain)) {
+  params_.validate();
+  blocked_ = inflate(grid_, params_.inflation_radius, terrain_ ? &*terrain_ : nullptr);
+}
+
+int AStarPlanner::grade(std::size_t cell) const { return terrain_ ? terrain_->grades()[cell] : 0; }
+
+bool AStarPlanner::line_of_sight(const Vec2& a, const Vec2& b, int max_grade) const {
+  // Grid traversal (Amanatides and Woo); where the segment passes exactly
+  // through a cell corner, both cells beside the corner must be free.
+  const double res = grid_.resolution();
+  const Vec2 p = (a - grid_.origin()) / res, q = (b - grid_.origin()) / res;
+  int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
+  const int end_col = static_cast<int>(std::floor(q.x())), end_row = static_cast<int>(std::floor(q.y()));
+  const auto free = [&](int r, int c) {
+    if (!grid_.in_bounds(r, c)) return false;
+    const std::size_t i = grid_.index(r, c);
+    return !blocked_[i] && grade(static_cast<std::size_t>(i)) <= max_grade;
+  };
+  if (!free(row, col)) return false;
+  const Vec2 d = q - p;
+  const int step_c = d.x() > 0 ? 1 : -1, step_r = d.y() > 0 ? 1 : -1;
+  const double inf = std::numeric_limits<double>::infinity();
+  const double delta_c = d.x() != 0.0 ? std::abs(1.0 / d.x()) : inf;
+  const double delta_r = d.y() != 0.0 ? std::abs(1.0 / d.y()) : inf;
+  double t_c = d.x() != 0.0 ? ((step_c > 0 ? col + 1 - p.x() : p.x() - col) * delta_c) : inf;
+  double t_r = d.y() != 0.0 ? ((step_r > 0 ? row + 1 - p.y() : p.y() - row) * delta_r) : inf;
+  while (col != end_col || row != end_row) {
+    if (std::min(t_c, t_r) > 1.0) break;
+    if (std::abs(t_c - t_r) < 1e-12) {
+      if (!free(row, col + step_c) || !free(row + step_r, col)) return false;
+      col += step_c;
+      row += step_r;
+      t_c += delta_c;
+      t_r += delta_r;
+    } else if (t_c < t_r) {
+      col += step_c;
+      t_c += delta_c;
+    } else {
+      row += step_r;
+      t_r += delta_r;
+    }
+    if (!free(row, col)) return false;
+  }
+  return true;
+}
+
+GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
+  const auto tic = std::chrono::steady_clock::now();
+  detail::require_finite("start x", start.x());
+  detail::require_finite("start y", start.y());
+  detail::require_finite("goal x", goal.x());
+  detail::require_finite("goal y", goal.y());
+  int sr, sc, gr, gc;
+  if (!grid_.cell_of(start, sr, sc))
+    throw Error("start (" + std::to_string(start.x()) + ", " + std::to_string(start.y()) + ") lies outside the map");
+  if (!grid_.cell_of(goal, gr, gc))
+    throw Error("goal (" + std::to_string(goal.x()) + ", " + std::to_string(goal.y()) + ") lies outside the map");
+  if (grid_.occupied(sr, sc) || grade(grid_.index(sr, sc)) >= TerrainGrid::kMaxGrade)
+    throw Error("start (" + std::to_string(start.x()) + ", " + std::to_string(start.y()) + ") lies inside an obstacle");
+  if (grid_.occupied(gr, gc) || grade(grid_.index(gr, gc)) >= TerrainGrid::kMaxGrade)
+    throw Error("goal (" + std::to_string(goal.x()) + ", " + std::to_string(goal.y()) + ") lies inside an obstacle");
+
+  const int rows = grid_.rows(), cols = grid_.cols();
+  const double res = grid_.resolution();
+  const std::size_t n = static_cast<std::size_t>(rows) * cols;
+  const std::size_t start_cell = grid_.index(sr, sc), goal_cell = grid_.index(gr, gc);
+  double min_multiplier = params_.terrain.multiplier(0);
+  for (int g = 1; g < TerrainGrid::kMaxGrade; ++g) min_multiplier = std::min(min_multiplier, params_.terrain.multiplier(g));
+  const auto heuristic = [&](int r, int c) {
+    const double dr = std::abs(r - gr), dc = std::abs(c - gc);
+    return res * min_multiplier * (std::max(dr, dc) + (M_SQRT2 - 1.0) * std::min(dr, dc));
+  };
+  const auto passable = [&](std::size_t i) { return !blocked_[i] || i == start_cell || i == goal_cell; };
+
+  struct Node {
+    double f, h;
+    std::size_t cell;
+    bool operator>(const Node& o) const {
+      if (f != o.f) return f > o.f;
+      if (h != o.h) return h > o.h;
+      return cell > o.cell;
+    }
+  };
+  std::vector<double> g(n, std::numeric_limits<double>::infinity());
+  std::vector<std::int64_t> parent(n, -1);
+  std::vector<std::uint8_t> closed(n, 0);
+  std::priority_queue<Node, std::vector<Node>, std::greater<Node>> open;
+  g[start_cell] = 0.0;
+  open.push({heuristic(sr, sc), heuristic(sr, sc), start_cell});
+  static const int kDr[8] = {1, -1, 0, 0, 1, 1, -1, -1};
+  static const int kDc[8] = {0, 0, 1, -1, 1, -1, 1, -1};
+  bool found = false;
+  while (!open.empty()) {
+    const Node node = open.top();
+    open.pop();
+    if (closed[node.cell]) continue;
+    closed[node.cell] = 1;
+    if (node.cell == goal_cell) {
+      found = true;
+      break;
+    }
+    const int r = static_cast<int>(node.cell / cols), c = static_cast<int>(node.cell % cols);
+    for (int k = 0; k < 8; ++k) {
+      const int nr = r + kDr[k], nc = c + kDc[k];
+      if (!grid_.in_bounds(nr, nc)) continue;
+      const std::size_t next = grid_.index(nr, nc);
+      if (closed[next] || !passable(next)) continue;
+      if (k >= 4 && (!passable(grid_.index(r, nc)) || !passable(grid_.index(nr, c)))) continue;
+      const double length = k >= 4 ? res * M_SQRT2 : res;
+      const double cost = g[node.cell] + length * params_.terrain.multiplier(grade(next));
+      if (cost < g[next]) {
+        g[next] = cost;
+        parent[next] = static_cast<std::int64_t>(node.cell);
+        const double h = heuristic(nr, nc);
+        open.push({cost + h, h, next});
+      }
+    }
+  }
+
+  GlobalPlan plan;
+  if (!found) {
+    plan.status = GlobalStatus::NoPath;
+  } else {
+    std::vector<std::size_t> cells;
+    for (std::int64_t i = static_cast<std::int64_t>(goal_cell); i >= 0; i = parent[static_cast<std::size_t>(i)])
+      cells.push_back(static_cast<std::size_t>(i));
+    std::reverse(cells.begin(), cells.end());
+    std::vector<Vec2> points;
+    std::vector<int> grades;
+    for (std::size_t i : cells) {
+      points.push_back(grid_.cell_center(static_cast<int>(i / cols), static_cast<int>(i % cols)));
+      grades.push_back(grade(i));
+    }
+    points.front() = start;
+    points.back() = goal;
+    if (params_.simplify && points.size() > 2) {
+      // Greedy shortcut: from each kept vertex, jump as far along the path as the
+      // line of sight holds, over cells no steeper than those of the stretch it replaces.
+      std::vector<Vec2> kept{points.front()};
+      std::size_t i = 0;
+      while (i + 1 < points.size()) {
+        std::size_t best = i + 1;
+        int steepest = std::max(grades[i], grades[i + 1]);
+        for (std::size_t j = i + 2; j < points.size(); ++j) {
+          steepest = std::max(steepest, grades[j]);
+          if (!line_of_sight(points[i], points[j], steepest)) break;
+          best = j;
+        }
+        kept.push_back(points[best]);
+        i = best;
+      }
+      points = std::move(kept);
+    }
+    plan.status = GlobalStatus::Found;
+    plan.path = std::move(points);
+    plan.cost = g[goal_cell];
+  }
+  plan.planning_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - tic).count();
+  return plan;
+}
+
+}  // namespace fgdwa

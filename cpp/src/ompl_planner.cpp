@@ -1,0 +1,243 @@
+#include <ompl/base/Planner.h>
+#include <ompl/base/ProblemDefinition.h>
+#include <ompl/base/SpaceInformation.h>
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/objectives/StateCostIntegralObjective.h>
+#include <ompl/base/spaces/RealVectorStateSpace.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/geometric/PathSimplifier.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <mutex>
+
+#include "fgdwa/collision.hpp"
+#include "fgdwa/global_planner.hpp"
+#include "validation.hpp"
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace fgdwa {
+
+void OmplParams::validate() const {
+  const auto names = OmplPlanner::planner_names();
+  if (std::find(names.begin(), names.end(), planner) == names.end()) {
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw Error("planner = '" + planner + "': unknown OMPL planner (known: " + known + ")");
+  }
+  detail::require_positive("time_limit", time_limit);
+  detail::require_non_negative("range", range);
+  detail::require_non_negative("inflation_radius", inflation_radius);
+  detail::require_non_negative("w_length", w_length);
+  detail::require_non_negative("w_clearance", w_clearance);
+  detail::require_positive("clearance_reference", clearance_reference);
+  detail::require_positive("interpolation", interpolation);
+  terrain.validate();
+  if (w_length + w_clearance + terrain.w_risk <= 0.0) throw Error("OMPL cost: every weight is 0");
+}
+
+namespace {
+using PlannerFactory = std::function<ob::PlannerPtr(const ob::SpaceInformationPtr&)>;
+
+const std::map<std::string, PlannerFactory>& planner_factories() {
+  static const std::map<std::string, PlannerFactory> factories = {
+      {"RRTstar", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::RRTstar>(si); }},
+      {"InformedRRTstar", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::InformedRRTstar>(si); }},
+      {"PRMstar", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::PRMstar>(si); }},
+      {"BITstar", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::BITstar>(si); }},
+      {"RRTConnect", [](const ob::SpaceInformationPtr& si) { return std::make_shared<og::RRTConnect>(si); }},
+  };
+  return factories;
+}
+
+// OMPL's seed generator is process-wide: plans are serialised so that each one
+// reseeds it and then creates its own random generators in a fixed order.
+std::mutex& ompl_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// A state's cost from a function of its planar pose.
+class PoseCostObjective : public ob::StateCostIntegralObjective {
+ public:
+  PoseCostObjective(const ob::SpaceInformationPtr& si, std::function<double(const Pose2&)> cost,
+                    std::function<Pose2(const ob::State*)> pose)
+      : ob::StateCostIntegralObjective(si, false), cost_(std::move(cost)), pose_(std::move(pose)) {}
+  ob::Cost stateCost(const ob::State* s) const override { return ob::Cost(cost_(pose_(s))); }
+
+ private:
+  std::function<double(const Pose2&)> cost_;
+  std::function<Pose2(const ob::State*)> pose_;
+};
+}  // namespace
+
+std::vector<std::string> OmplPlanner::planner_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, factory] : planner_factories()) names.push_back(name);
+  return names;
+}
+
+struct OmplPlanner::Impl {
+  OccupancyGrid grid;
+  Footprint footprint;
+  OmplParams params;
+  std::optional<TerrainGrid> terrain;
+  std::vector<std::uint8_t> blocked;    // inflated grid, circle footprint
+  std::shared_ptr<DistanceField> field;
+  std::unique_ptr<CollisionWorld> world;  // exact footprint checks, polygon footprint
+
+  bool se2() const { return !footprint.is_circle(); }
+
+  Pose2 pose_of(const ob::State* s) const {
+    if (se2()) {
+      const auto* st = s->as<ob::SE2StateSpace::StateType>();
+      return {st->getX(), st->getY(), st->getYaw()};
+    }
+    const auto* st = s->as<ob::RealVectorStateSpace::StateType>();
+    return {st->values[0], st->values[1], 0.0};
+  }
+
+  bool valid(const Pose2& p) const {
+    int r, c;
+    if (!grid.cell_of(p.position(), r, c)) return false;
+    if (terrain && terrain->grade(r, c) >= TerrainGrid::kMaxGrade) return false;
+    if (se2()) return !world->in_collision(footprint, p);
+    return !blocked[grid.index(r, c)];
+  }
+
+  double clearance(const Pose2& p) const {
+    return se2() ? world->clearance(footprint, p, 0.0) : field->distance(p.position()) - params.inflation_radius;
+  }
+};
+
+OmplPlanner::OmplPlanner(const OccupancyGrid& grid, const Footprint& footprint, const OmplParams& params,
+                         std::optional<TerrainGrid> terrain)
+    : impl_(std::make_unique<Impl>(Impl{grid, footprint, params, std::move(terrain), {}, nullptr, nullptr})) {
+  impl_->params.validate();
+  const TerrainGrid* t = impl_->terrain ? &*impl_->terrain : nullptr;
+  impl_->blocked = inflate(grid, params.inflation_radius, t);
+  impl_->field = std::make_shared<DistanceField>(grid);
+  if (!footprint.is_circle()) impl_->world = std::make_unique<CollisionWorld>(grid);
+}
+
+OmplPlanner::~OmplPlanner() = default;
+OmplPlanner::OmplPlanner(OmplPlanner&&) noexcept = default;
+OmplPlanner& OmplPlanner::operator=(OmplPlanner&&) noexcept = default;
+
+GlobalPlan OmplPlanner::plan(const Vec2& start, const Vec2& goal) const {
+  const auto tic = std::chrono::steady_clock::now();
+  const Impl& im = *impl_;
+  for (const auto& [name, v] : {std::pair{"start x", start.x()}, {"start y", start.y()}, {"goal x", goal.x()},
+                                {"goal y", goal.y()}})
+    detail::require_finite(name, v);
+  const auto where = [](const Vec2& p) {
+    return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ")";
+  };
+  int r, c;
+  if (!im.grid.cell_of(start, r, c)) throw Error("start " + where(start) + " lies outside the map");
+  if (im.grid.occupied(r, c)) throw Error("start " + where(start) + " lies inside an obstacle");
+  if (!im.grid.cell_of(goal, r, c)) throw Error("goal " + where(goal) + " lies outside the map");
+  if (im.grid.occupied(r, c)) throw Error("goal " + where(goal) + " lies inside an obstacle");
+  const double heading = std::atan2(goal.y() - start.y(), goal.x() - start.x());
+  if (!im.valid(Pose2{start.x(), start.y(), heading}))
+    throw Error("start " + where(start) + " is too close to an obstacle for the robot's footprint");
+  if (!im.valid(Pose2{goal.x(), goal.y(), heading}))
+    throw Error("goal " + where(goal) + " is too close to an obstacle for the robot's footprint");
+
+  std::lock_guard<std::mutex> lock(ompl_mutex());
+  ompl::msg::setLogLevel(im.params.verbose ? ompl::msg::LOG_INFO : ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(im.params.seed + 1);  // OMPL ignores a seed of 0
+
+  const Vec2 lo = im.grid.origin();
+  const Vec2 hi = lo + Vec2(im.grid.cols(), im.grid.rows()) * im.grid.resolution();
+  ob::StateSpacePtr space;
+  if (im.se2()) {
+    auto se2 = std::make_shared<ob::SE2StateSpace>();
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(0, lo.x()), bounds.setHigh(0, hi.x()), bounds.setLow(1, lo.y()), bounds.setHigh(1, hi.y());
+    se2->setBounds(bounds);
+    space = se2;
+  } else {
+    auto r2 = std::make_shared<ob::RealVectorStateSpace>(2);
+    r2->setBounds(ob::RealVectorBounds(2));
+    ob::RealVectorBounds bounds(2);
+    bounds.setLow(0, lo.x()), bounds.setHigh(0, hi.x()), bounds.setLow(1, lo.y()), bounds.setHigh(1, hi.y());
+    r2->setBounds(bounds);
+    space = r2;
+  }
+  auto si = std::make_shared<ob::SpaceInformation>(space);
+  si->setStateValidityChecker([&im](const ob::State* s) { return im.valid(im.pose_of(s)); });
+  // Motions are checked every quarter cell.
+  si->setStateValidityCheckingResolution(0.25 * im.grid.resolution() / space->getMaximumExtent());
+  si->setup();
+
+  const auto pose_of = [&im](const ob::State* s) { return im.pose_of(s); };
+  auto objective = std::make_shared<ob::MultiOptimizationObjective>(si);
+  if (im.params.w_length > 0.0)
+    objective->addObjective(std::make_shared<ob::PathLengthOptimizationObjective>(si), im.params.w_length);
+  if (im.params.w_clearance > 0.0) {
+    const double ref = im.params.clearance_reference;
+    objective->addObjective(std::make_shared<PoseCostObjective>(
+                                si, [&im, ref](const Pose2& p) { return std::max(0.0, ref - im.clearance(p)) / ref; },
+                                pose_of),
+                            im.params.w_clearance);
+  }
+  if (im.terrain && im.params.terrain.w_risk > 0.0) {
+    objective->addObjective(std::make_shared<PoseCostObjective>(
+                                si,
+                                [&im](const Pose2& p) {
+                                  const int g = std::min(im.terrain->grade_at(p.position()), TerrainGrid::kMaxGrade - 1);
+                                  return im.params.terrain.risk[static_cast<std::size_t>(g)];
+                                },
+                                pose_of),
+                            im.params.terrain.w_risk);
+  }
+  objective->lock();
+
+  ob::ScopedState<> s(space), g(space);
+  s[0] = start.x(), s[1] = start.y();
+  g[0] = goal.x(), g[1] = goal.y();
+  if (im.se2()) s[2] = heading, g[2] = heading;
+  auto pdef = std::make_shared<ob::ProblemDefinition>(si);
+  pdef->setStartAndGoalStates(s, g, 0.5 * im.grid.resolution());
+  pdef->setOptimizationObjective(objective);
+
+  ob::PlannerPtr planner = planner_factories().at(im.params.planner)(si);
+  if (im.params.range > 0.0 && planner->params().hasParam("range"))
+    planner->params().setParam("range", std::to_string(im.params.range));
+  planner->setProblemDefinition(pdef);
+  planner->setup();
+  const ob::PlannerStatus status = planner->solve(im.params.time_limit);
+
+  GlobalPlan plan;
+  if (status == ob::PlannerStatus::EXACT_SOLUTION) {
+    auto path = *pdef->getSolutionPath()->as<og::PathGeometric>();
+    if (im.params.simplify) og::PathSimplifier(si, pdef->getGoal(), objective).simplifyMax(path);
+    const double length = path.length();
+    path.interpolate(std::max<unsigned>(2, static_cast<unsigned>(std::ceil(length / im.params.interpolation)) + 1));
+    plan.status = GlobalStatus::Found;
+    for (std::size_t i = 0; i < path.getStateCount(); ++i) plan.path.push_back(im.pose_of(path.getState(i)).position());
+    plan.path.front() = start;
+    plan.path.back() = goal;
+    plan.cost = path.cost(objective).value();
+  } else {
+    plan.status = GlobalStatus::Timeout;
+  }
+  plan.planning_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - tic).count();
+  return plan;
+}
+
+}  // namespace fgdwa

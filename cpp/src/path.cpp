@@ -1,0 +1,90 @@
+#include "fgdwa/path.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "validation.hpp"
+
+namespace fgdwa {
+
+GlobalPath::GlobalPath(std::vector<Vec2> points) {
+  if (points.size() < 2)
+    throw Error(detail::describe("global path points", points.size(), "a path needs at least 2 points"));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    detail::require_finite("global path point " + std::to_string(i) + " x", points[i].x());
+    detail::require_finite("global path point " + std::to_string(i) + " y", points[i].y());
+    if (points_.empty() || (points[i] - points_.back()).norm() > 1e-12) points_.push_back(points[i]);
+  }
+  if (points_.size() < 2) throw Error("global path: all points coincide, the path has no length");
+  cumulative_.assign(1, 0.0);
+  for (std::size_t i = 1; i < points_.size(); ++i) {
+    const Vec2 d = points_[i] - points_[i - 1];
+    cumulative_.push_back(cumulative_.back() + d.norm());
+    directions_.push_back(std::atan2(d.y(), d.x()));
+  }
+}
+
+PathProjection GlobalPath::project(const Vec2& p) const {
+  PathProjection best;
+  best.distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
+    const Vec2 a = points_[i], ab = points_[i + 1] - a;
+    const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    const Vec2 q = a + t * ab;
+    const double d = (p - q).norm();
+    if (d < best.distance) {
+      best.distance = d;
+      best.point = q;
+      best.segment = i;
+      best.arc_length = cumulative_[i] + t * (cumulative_[i + 1] - cumulative_[i]);
+    }
+  }
+  return best;
+}
+
+std::size_t GlobalPath::segment_at(double s) const {
+  const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
+  const std::size_t i = it == cumulative_.begin() ? 0 : static_cast<std::size_t>(it - cumulative_.begin()) - 1;
+  return std::min(i, segment_count() - 1);
+}
+
+Vec2 GlobalPath::point_at(double s) const {
+  s = std::clamp(s, 0.0, length());
+  const std::size_t i = segment_at(s);
+  const double span = cumulative_[i + 1] - cumulative_[i];
+  return points_[i] + (points_[i + 1] - points_[i]) * ((s - cumulative_[i]) / span);
+}
+
+std::vector<std::size_t> GlobalPath::key_nodes(double min_turn) const {
+  std::vector<std::size_t> nodes;
+  for (std::size_t i = 1; i + 1 < points_.size(); ++i)
+    if (std::abs(angle_difference(directions_[i], directions_[i - 1])) > min_turn) nodes.push_back(i);
+  nodes.push_back(points_.size() - 1);
+  return nodes;
+}
+
+void KeyNodeParams::validate() const {
+  detail::require_non_negative("key_node_angle", min_turn);
+  if (min_turn >= M_PI) throw Error(detail::describe("key_node_angle", min_turn, "must be < pi"));
+  detail::require_non_negative("key_node_radius", reach_radius);
+}
+
+KeyNodeTracker::KeyNodeTracker(const GlobalPath& path, const KeyNodeParams& params)
+    : path_(&path), params_(params), nodes_(path.key_nodes(params.min_turn)) {
+  params_.validate();
+}
+
+Vec2 KeyNodeTracker::update(const Vec2& robot) {
+  const double along = path_->project(robot).arc_length;
+  while (current_ + 1 < nodes_.size()) {
+    const std::size_t vertex = nodes_[current_];
+    const bool near = (robot - path_->points()[vertex]).norm() <= params_.reach_radius;
+    const bool passed = along > path_->arc_length_at_vertex(vertex);
+    if (!near && !passed) break;
+    ++current_;
+  }
+  return target();
+}
+
+}  // namespace fgdwa
