@@ -141,8 +141,15 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   if ((goal - state.pose.position()).norm() <= params_.goal_tolerance) {
     result_.status = Status::GoalReached;
     result_.command = braking_command(limits_, state.twist, params_.dt);
+    // No samples this cycle: the per-sample diagnostics of the last one must go too.
     result_.samples.clear();
     rollouts_.clear();
+    result_.reasons.clear();
+    result_.min_clearance.clear();
+    result_.free_distance.clear();
+    result_.raw.resize(0, static_cast<Eigen::Index>(critics_.size()));
+    result_.normalized.resize(0, static_cast<Eigen::Index>(critics_.size()));
+    result_.total.resize(0);
     return result_;
   }
 
