@@ -50,19 +50,15 @@ AStarPlanner::AStarPlanner(const OccupancyGrid& grid, const AStarParams& params,
 
 int AStarPlanner::grade(std::size_t cell) const { return terrain_ ? terrain_->grades()[cell] : 0; }
 
-bool AStarPlanner::line_of_sight(const Vec2& a, const Vec2& b, int max_grade) const {
-  // Grid traversal (Amanatides and Woo); where the segment passes exactly
-  // through a cell corner, both cells beside the corner must be free.
-  const double res = grid_.resolution();
-  const Vec2 p = (a - grid_.origin()) / res, q = (b - grid_.origin()) / res;
+bool segment_free(const OccupancyGrid& layout, const Vec2& a, const Vec2& b,
+                  const std::function<bool(int, int)>& free) {
+  // Amanatides and Woo's traversal of the cells the segment crosses.
+  const double res = layout.resolution();
+  const Vec2 p = (a - layout.origin()) / res, q = (b - layout.origin()) / res;
   int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
   const int end_col = static_cast<int>(std::floor(q.x())), end_row = static_cast<int>(std::floor(q.y()));
-  const auto free = [&](int r, int c) {
-    if (!grid_.in_bounds(r, c)) return false;
-    const std::size_t i = grid_.index(r, c);
-    return !blocked_[i] && grade(static_cast<std::size_t>(i)) <= max_grade;
-  };
-  if (!free(row, col)) return false;
+  const auto ok = [&](int r, int c) { return layout.in_bounds(r, c) && free(r, c); };
+  if (!ok(row, col)) return false;
   const Vec2 d = q - p;
   const int step_c = d.x() > 0 ? 1 : -1, step_r = d.y() > 0 ? 1 : -1;
   const double inf = std::numeric_limits<double>::infinity();
@@ -73,7 +69,7 @@ bool AStarPlanner::line_of_sight(const Vec2& a, const Vec2& b, int max_grade) co
   while (col != end_col || row != end_row) {
     if (std::min(t_c, t_r) > 1.0) break;
     if (std::abs(t_c - t_r) < 1e-12) {
-      if (!free(row, col + step_c) || !free(row + step_r, col)) return false;
+      if (!ok(row, col + step_c) || !ok(row + step_r, col)) return false;
       col += step_c;
       row += step_r;
       t_c += delta_c;
@@ -85,9 +81,16 @@ bool AStarPlanner::line_of_sight(const Vec2& a, const Vec2& b, int max_grade) co
       row += step_r;
       t_r += delta_r;
     }
-    if (!free(row, col)) return false;
+    if (!ok(row, col)) return false;
   }
   return true;
+}
+
+bool AStarPlanner::line_of_sight(const Vec2& a, const Vec2& b, int max_grade) const {
+  return segment_free(grid_, a, b, [&](int r, int c) {
+    const std::size_t i = grid_.index(r, c);
+    return !blocked_[i] && grade(i) <= max_grade;
+  });
 }
 
 GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {

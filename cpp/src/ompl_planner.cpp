@@ -1,3 +1,4 @@
+#include <ompl/base/MotionValidator.h>
 #include <ompl/base/Planner.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/SpaceInformation.h>
@@ -69,6 +70,50 @@ std::mutex& ompl_mutex() {
   static std::mutex m;
   return m;
 }
+
+// Motions of a point robot over the inflated grid, checked exactly cell by cell.
+class GridMotionValidator : public ob::MotionValidator {
+ public:
+  GridMotionValidator(const ob::SpaceInformationPtr& si, const OccupancyGrid& grid,
+                      const std::vector<std::uint8_t>& blocked)
+      : ob::MotionValidator(si), grid_(grid), blocked_(blocked) {}
+
+  bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
+    if (clear(s1, s2)) return true;
+    ++invalid_;
+    return false;
+  }
+
+  bool checkMotion(const ob::State* s1, const ob::State* s2, std::pair<ob::State*, double>& last_valid) const override {
+    if (clear(s1, s2)) return true;
+    ++invalid_;
+    // The last valid state: walk back from s2 in quarter cells until the rest is clear.
+    const double length = (point(s2) - point(s1)).norm();
+    const int pieces = std::max(1, static_cast<int>(std::ceil(length / (0.25 * grid_.resolution()))));
+    double t = 0.0;
+    ob::State* probe = si_->allocState();
+    for (int k = 1; k <= pieces; ++k) {
+      si_->getStateSpace()->interpolate(s1, s2, double(k) / pieces, probe);
+      if (!clear(s1, probe)) break;
+      t = double(k) / pieces;
+    }
+    si_->freeState(probe);
+    if (last_valid.first) si_->getStateSpace()->interpolate(s1, s2, t, last_valid.first);
+    last_valid.second = t;
+    return false;
+  }
+
+ private:
+  static Vec2 point(const ob::State* s) {
+    const auto* st = s->as<ob::RealVectorStateSpace::StateType>();
+    return {st->values[0], st->values[1]};
+  }
+  bool clear(const ob::State* s1, const ob::State* s2) const {
+    return segment_free(grid_, point(s1), point(s2), [this](int r, int c) { return !blocked_[grid_.index(r, c)]; });
+  }
+  const OccupancyGrid& grid_;
+  const std::vector<std::uint8_t>& blocked_;
+};
 
 // A state's cost from a function of its planar pose.
 class PoseCostObjective : public ob::StateCostIntegralObjective {
@@ -180,8 +225,12 @@ GlobalPlan OmplPlanner::plan(const Vec2& start, const Vec2& goal) const {
   }
   auto si = std::make_shared<ob::SpaceInformation>(space);
   si->setStateValidityChecker([&im](const ob::State* s) { return im.valid(im.pose_of(s)); });
-  // Motions are checked every quarter cell.
-  si->setStateValidityCheckingResolution(0.25 * im.grid.resolution() / space->getMaximumExtent());
+  if (im.se2()) {
+    // The footprint turns along a motion: its poses are checked every quarter cell.
+    si->setStateValidityCheckingResolution(0.25 * im.grid.resolution() / space->getMaximumExtent());
+  } else {
+    si->setMotionValidator(std::make_shared<GridMotionValidator>(si, im.grid, im.blocked));
+  }
   si->setup();
 
   const auto pose_of = [&im](const ob::State* s) { return im.pose_of(s); };

@@ -4,6 +4,7 @@
 // misuse and throws.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -38,6 +39,13 @@ struct TerrainCost {
 // terrain. Row-major, 1 = blocked.
 std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_radius,
                                   const TerrainGrid* terrain = nullptr);
+
+// Whether the segment a-b crosses only cells (of `layout`'s cell layout) for
+// which `free(row, col)` holds: an exact grid traversal, and where the segment
+// passes exactly through a cell corner both cells beside it must be free.
+// Cells outside the grid are not free.
+bool segment_free(const OccupancyGrid& layout, const Vec2& a, const Vec2& b,
+                  const std::function<bool(int, int)>& free);
 
 struct AStarParams {
   double inflation_radius = 0.25;  // m, usually the footprint's radius

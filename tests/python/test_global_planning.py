@@ -1,0 +1,199 @@
+import numpy as np
+import pytest
+from scipy.sparse import csr_matrix
+from scipy.sparse.csgraph import dijkstra
+
+import fgdwa
+from fgdwa.builtin import c_trap_scenario
+from fgdwa.global_planning import global_methods, plan_global
+from fgdwa.sim import run_episode
+from conftest import random_block_grid
+
+RISK = np.array([0.0, 0.5, 1.0, 2.0])
+
+
+def grid_graph(blocked, grades, resolution, w_risk):
+    """The 8-connected graph A* searches: no corner cutting, cost = length x (1 + w_risk risk[grade of the cell entered])."""
+    rows, cols = blocked.shape
+    index = np.arange(rows * cols).reshape(rows, cols)
+    src, dst, weight = [], [], []
+    for dr, dc in [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (1, -1), (-1, 1), (-1, -1)]:
+        r0, r1 = max(0, -dr), rows - max(0, dr)
+        c0, c1 = max(0, -dc), cols - max(0, dc)
+        a = (slice(r0, r1), slice(c0, c1))
+        b = (slice(r0 + dr, r1 + dr), slice(c0 + dc, c1 + dc))
+        ok = ~blocked[a] & ~blocked[b]
+        if dr and dc:
+            ok &= ~blocked[(slice(r0, r1), slice(c0 + dc, c1 + dc))] & ~blocked[(slice(r0 + dr, r1 + dr), slice(c0, c1))]
+        length = resolution * (np.sqrt(2.0) if dr and dc else 1.0)
+        src.append(index[a][ok])
+        dst.append(index[b][ok])
+        weight.append(length * (1.0 + w_risk * RISK[grades[b][ok]]))
+    n = rows * cols
+    return csr_matrix((np.concatenate(weight), (np.concatenate(src), np.concatenate(dst))), shape=(n, n))
+
+
+@pytest.mark.parametrize("seed", range(50))
+def test_astar_cost_equals_dijkstra(seed):
+    rng = np.random.default_rng(seed)
+    cells = random_block_grid(rng, rows=40, cols=50, blocks=25, max_size=7)
+    use_terrain = seed % 2 == 1
+    grades = rng.integers(0, 5, size=cells.shape).astype(np.uint8) if use_terrain else np.zeros_like(cells)
+    if use_terrain:
+        grades[rng.random(cells.shape) < 0.7] = 0  # mostly flat, some steep patches
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    terrain = fgdwa.TerrainGrid(grades, 0.1) if use_terrain else None
+    planner = fgdwa.AStarPlanner(grid, inflation_radius=0.12, terrain=terrain, w_risk=1.5, risk=RISK)
+    blocked = planner.blocked.astype(bool)
+    free = np.argwhere(~blocked)
+    start_cell, goal_cell = free[rng.integers(len(free))], free[rng.integers(len(free))]
+    start = grid.cell_center(*start_cell)
+    goal = grid.cell_center(*goal_cell)
+    result = planner.plan(start, goal)
+    distances = dijkstra(grid_graph(blocked, grades, 0.1, 1.5), indices=start_cell[0] * 50 + start_cell[1])
+    expected = distances[goal_cell[0] * 50 + goal_cell[1]]
+    if np.isinf(expected):
+        assert result.status == fgdwa.GlobalStatus.NoPath
+    else:
+        assert result.status == fgdwa.GlobalStatus.Found
+        assert result.cost == pytest.approx(expected, abs=1e-9)
+        assert_path_clear(result.path, blocked, grid)
+
+
+def assert_path_clear(path, blocked, grid, spacing_cells=0.25):
+    """Every point every quarter cell along the path lies on an unblocked cell (ends excepted)."""
+    res = grid.resolution
+    x0, _, y0, _ = grid.extent
+    for a, b in zip(path[:-1], path[1:]):
+        n = max(2, int(np.ceil(np.hypot(*(b - a)) / (spacing_cells * res))) + 1)
+        for p in np.linspace(a, b, n):
+            row, col = int((p[1] - y0) // res), int((p[0] - x0) // res)
+            assert not blocked[row, col], f"path crosses blocked cell ({row}, {col}) at {p}"
+
+
+def test_astar_simplified_path_never_crosses_the_inflated_grid(rng):
+    for _ in range(20):
+        cells = random_block_grid(rng, rows=60, cols=60, blocks=30)
+        cells[:4, :4] = 0
+        cells[-4:, -4:] = 0
+        grid = fgdwa.OccupancyGrid(cells, 0.1)
+        planner = fgdwa.AStarPlanner(grid, inflation_radius=0.1)
+        result = planner.plan((0.15, 0.15), (5.85, 5.85))
+        if result.found:
+            assert len(result.path) >= 2
+            assert_path_clear(result.path, planner.blocked.astype(bool), grid)
+
+
+def test_astar_is_deterministic(rng):
+    cells = random_block_grid(rng, rows=60, cols=60, blocks=20)
+    cells[:3, :3] = 0
+    cells[-3:, -3:] = 0
+    planner = fgdwa.AStarPlanner(fgdwa.OccupancyGrid(cells, 0.1), inflation_radius=0.0)
+    a, b = planner.plan((0.1, 0.1), (5.9, 5.9)), planner.plan((0.1, 0.1), (5.9, 5.9))
+    np.testing.assert_array_equal(a.path, b.path)
+
+
+def test_grade_four_is_impassable_and_risk_detours():
+    cells = np.zeros((30, 60), np.uint8)
+    grades = np.zeros((30, 60), np.uint8)
+    grades[:, 28:32] = 3  # a steep band across the map, with a flat gap at the top
+    grades[25:, 28:32] = 0
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    terrain = fgdwa.TerrainGrid(grades, 0.1)
+    cautious = fgdwa.AStarPlanner(grid, inflation_radius=0.0, terrain=terrain, w_risk=10.0).plan((0.5, 0.5), (5.5, 0.5))
+    assert cautious.path[:, 1].max() > 2.5  # goes round through the flat gap
+    bold = fgdwa.AStarPlanner(grid, inflation_radius=0.0, terrain=terrain, w_risk=0.0).plan((0.5, 0.5), (5.5, 0.5))
+    assert bold.path[:, 1].max() < 0.6
+    grades[25:, 28:32] = 4
+    grades[:25, 28:32] = 4
+    wall = fgdwa.AStarPlanner(grid, inflation_radius=0.0, terrain=fgdwa.TerrainGrid(grades, 0.1))
+    assert wall.plan((0.5, 0.5), (5.5, 0.5)).status == fgdwa.GlobalStatus.NoPath
+
+
+@pytest.mark.parametrize("method", ["ompl:RRTstar", "ompl:InformedRRTstar", "ompl:PRMstar", "ompl:BITstar"])
+def test_ompl_paths_are_valid_and_no_shorter_than_the_straight_line(method):
+    rng = np.random.default_rng(11)
+    cells = random_block_grid(rng, rows=60, cols=80, blocks=18, max_size=10)
+    cells[25:35, :8] = 0
+    cells[25:35, -8:] = 0
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    start, goal = np.array([0.4, 3.0]), np.array([7.6, 3.0])
+    result = plan_global(grid, start, goal, method=method, time_limit=0.3, seed=3,
+                         footprint=fgdwa.Footprint.circle(0.15))
+    assert result.status == fgdwa.GlobalStatus.Found
+    np.testing.assert_allclose(result.path[0], start)
+    np.testing.assert_allclose(result.path[-1], goal)
+    assert_path_clear(result.path, fgdwa.inflate(grid, 0.15).astype(bool), grid)
+    length = np.sum(np.hypot(*np.diff(result.path, axis=0).T))
+    assert length >= np.hypot(*(goal - start)) - 1e-9
+
+
+def test_ompl_same_seed_same_path():
+    rng = np.random.default_rng(5)
+    cells = random_block_grid(rng, rows=50, cols=50, blocks=12)
+    cells[:6, :6] = 0
+    cells[-6:, -6:] = 0
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    runs = [plan_global(grid, (0.3, 0.3), (4.7, 4.7), method="ompl:RRTstar", time_limit=0.15, seed=seed,
+                        footprint=fgdwa.Footprint.circle(0.1)) for seed in (7, 7)]
+    assert runs[0].found
+    np.testing.assert_array_equal(runs[0].path, runs[1].path)
+
+
+def test_ompl_polygon_footprint_plans_in_se2():
+    cells = np.zeros((40, 60), np.uint8)
+    cells[:, 30] = 1
+    cells[18:22, 30] = 0  # a gap 0.4 m wide: a 0.42 x 0.33 m robot passes only lengthwise
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    jackal = fgdwa.Footprint.polygon([[0.21, 0.165], [-0.21, 0.165], [-0.21, -0.165], [0.21, -0.165]])
+    result = plan_global(grid, (1.0, 2.0), (5.0, 2.0), method="ompl:RRTConnect", time_limit=2.0, seed=1,
+                         footprint=jackal)
+    assert result.found
+    # The returned path keeps positions only; whatever the heading, the footprint's
+    # inscribed circle is free at every point, and the path goes through the gap.
+    truth = fgdwa.CollisionWorld(grid)
+    inscribed = fgdwa.Footprint.circle(jackal.inscribed_radius)
+    poses = np.column_stack([result.path, np.zeros(len(result.path))])
+    assert np.all(truth.clearance(inscribed, poses) > 0.0)
+    assert np.all(np.abs(result.path[:, 1][np.abs(result.path[:, 0] - 3.05) < 0.1] - 2.0) < 0.2)
+
+
+def test_plan_global_errors():
+    grid = fgdwa.OccupancyGrid(np.pad(np.ones((2, 2), np.uint8), 4), 0.5)
+    with pytest.raises(fgdwa.FgdwaError, match="method"):
+        plan_global(grid, (0.2, 0.2), (4.5, 4.5), method="dijkstra")
+    with pytest.raises(fgdwa.FgdwaError, match="time_limit"):
+        plan_global(grid, (0.2, 0.2), (4.5, 4.5), method="astar", time_limit=1.0)
+    with pytest.raises(fgdwa.FgdwaError, match="start .* inside an obstacle"):
+        plan_global(grid, (2.2, 2.2), (4.5, 4.5))
+    with pytest.raises(fgdwa.FgdwaError, match="goal .* inside an obstacle"):
+        plan_global(grid, (0.2, 0.2), (2.2, 2.4), method="ompl:RRTstar")
+    with pytest.raises(fgdwa.FgdwaError, match="goal .* outside the map"):
+        plan_global(grid, (0.2, 0.2), (9.0, 0.0))
+    with pytest.raises(fgdwa.FgdwaError, match="unknown OMPL planner"):
+        plan_global(grid, (0.2, 0.2), (4.5, 4.5), method="ompl:Dijkstra")
+    with pytest.raises(fgdwa.FgdwaError, match="grade"):
+        fgdwa.TerrainGrid(np.full((3, 3), 5, np.uint8), 0.1)
+    with pytest.raises(fgdwa.FgdwaError, match="terrain"):
+        fgdwa.AStarPlanner(grid, terrain=fgdwa.TerrainGrid(np.zeros((3, 3), np.uint8), 0.1))
+    with pytest.raises(fgdwa.FgdwaError, match="risk"):
+        fgdwa.AStarPlanner(grid, risk=(0.0, -1.0, 0.0, 0.0))
+    assert "astar" in global_methods() and "ompl:BITstar" in global_methods()
+
+
+def test_c_shaped_trap_dwa_is_stuck_gdwa_gets_through():
+    scenario = c_trap_scenario()
+    dwa = run_episode(scenario.world, scenario.start, scenario.goal,
+                      params=fgdwa.PlannerParams(heading_target="goal"), max_steps=400)
+    gdwa = run_episode(scenario.world, scenario.start, scenario.goal,
+                       params=fgdwa.PlannerParams(heading_target="key_nodes"), max_steps=400)
+    assert dwa.outcome == "timeout"
+    assert np.hypot(*(dwa.poses[-1, :2] - scenario.goal)) > 4.0
+    assert gdwa.outcome == "success"
+    assert gdwa.min_clearance > 0.0
+    assert gdwa.global_path is not None and len(gdwa.key_nodes) >= 2
+    np.testing.assert_allclose(gdwa.key_nodes[-1], scenario.goal)
+    # The target walks through the key nodes in order.
+    seen = [tuple(t) for t in gdwa.targets]
+    order = [seen.index(tuple(k)) for k in gdwa.key_nodes if tuple(k) in seen]
+    assert order == sorted(order) and len(order) >= 2
