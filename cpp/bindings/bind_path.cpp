@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "convert.hpp"
@@ -12,6 +13,27 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_path(py::module_& m) {
+  m.def(
+      "reference_samples",
+      [](const GlobalPath& path, py::handle robot, double v_ref, double dt, int n, const std::string& sampling) {
+        if (!(v_ref >= 0.0) || !std::isfinite(v_ref)) throw Error("v_ref = " + std::to_string(v_ref) + ": must be >= 0");
+        if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + std::to_string(dt) + ": must be > 0");
+        if (n < 1) throw Error("n = " + std::to_string(n) + ": must be >= 1");
+        ReferenceSampling mode;
+        if (sampling == "polyline")
+          mode = ReferenceSampling::Polyline;
+        else if (sampling == "segment")
+          mode = ReferenceSampling::Segment;
+        else
+          throw Error("sampling = '" + sampling + "': expected 'polyline' or 'segment'");
+        std::vector<Vec2> out;
+        reference_samples(path, to_vec2(robot, "robot"), v_ref, dt, n, mode, out);
+        return points_array(out);
+      },
+      py::arg("path"), py::arg("robot"), py::arg("v_ref"), py::arg("dt"), py::arg("n"), py::arg("sampling") = "polyline",
+      "(n, 2) reference samples E of the similarity cost (SPEC 4, Eq. 9): from the robot's projection onto the "
+      "path, i * v_ref * dt further along the current segment ('segment') or along the path ('polyline').");
+
   py::class_<PathProjection>(m, "PathProjection", "The nearest point of a path to a query point.")
       .def_property_readonly("point", [](const PathProjection& p) { return py::make_tuple(p.point.x(), p.point.y()); })
       .def_readonly("segment", &PathProjection::segment)

@@ -27,15 +27,12 @@ CriticConfig critic_from_python(py::handle item) {
         throw Error("critics: unknown key '" + key + "' (expected name, weight, params)");
     }
     if (!d.contains("name")) throw Error("critics: an entry has no 'name'");
-    c.name = d["name"].cast<std::string>();
-    if (d.contains("weight")) c.weight = d["weight"].cast<double>();
-    if (d.contains("params")) c.params = d["params"].cast<std::map<std::string, double>>();
+    c = critic_config(d["name"].cast<std::string>(), d.contains("weight") ? d["weight"].cast<double>() : 1.0,
+                      d.contains("params") ? d["params"].cast<py::dict>() : py::dict());
   } else if (py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item)) {
     auto t = item.cast<py::sequence>();
     if (t.size() < 2 || t.size() > 3) throw Error("critics: a tuple entry is (name, weight[, params])");
-    c.name = t[0].cast<std::string>();
-    c.weight = t[1].cast<double>();
-    if (t.size() == 3) c.params = t[2].cast<std::map<std::string, double>>();
+    c = critic_config(t[0].cast<std::string>(), t[1].cast<double>(), t.size() == 3 ? t[2].cast<py::dict>() : py::dict());
   } else {
     throw Error("critics: each entry is a CriticConfig, a dict or a (name, weight[, params]) tuple, got " +
                 std::string(py::str(py::type::of(item))));

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fgdwa/critics.hpp"
 #include "fgdwa/error.hpp"
 #include "fgdwa/geometry.hpp"
 #include "fgdwa/robot.hpp"
@@ -26,5 +27,7 @@ std::vector<Vec2> to_points(py::handle obj, const std::string& name);
 
 py::array_t<double> poses_to_array(const Trajectory& poses);
 py::array_t<double> points_array(const std::vector<Vec2>& points);
+// A CriticConfig from Python: numeric params go to `params`, words to `options`.
+CriticConfig critic_config(std::string name, double weight, const py::dict& params);
 
 }  // namespace fgdwa::py_convert

@@ -12,6 +12,7 @@ void init_collision(py::module_& m);
 void init_window(py::module_& m);
 void init_critics(py::module_& m);
 void init_path(py::module_& m);
+void init_dtw(py::module_& m);
 void init_global_planner(py::module_& m);
 void init_planner(py::module_& m);
 
@@ -26,6 +27,7 @@ PYBIND11_MODULE(_core, m) {
   init_window(m);
   init_critics(m);
   init_path(m);
+  init_dtw(m);
   init_global_planner(m);
   init_planner(m);
 }

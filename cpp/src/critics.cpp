@@ -22,8 +22,38 @@ double ClearanceCritic::score(const Rollout& rollout) const {
   return std::clamp(rollout.min_clearance, 0.0, cap_);
 }
 
+void SimilarityParams::validate() const {
+  detail::require_positive("v_ref_min", v_ref_min);
+  if (band < kNoBand) throw Error(detail::describe("band", band, "must be >= 0, or -1 for no band"));
+}
+
+SimilarityCritic::SimilarityCritic(const SimilarityParams& params) : params_(params) { params_.validate(); }
+
+void SimilarityCritic::prepare(const CriticContext& context) {
+  if (!context.path) throw Error("critic 'similarity' needs a global path");
+  const double v_ref = std::max(context.state.twist.v, params_.v_ref_min);
+  reference_samples(*context.path, context.state.pose.position(), v_ref, context.dt, context.n_steps,
+                    params_.sampling, reference_);
+}
+
+double SimilarityCritic::score(const Rollout& rollout) const {
+  const Trajectory& poses = *rollout.poses;
+  positions_.resize(poses.size());
+  for (std::size_t i = 0; i < poses.size(); ++i) positions_[i] = poses[i].position();
+  return 1.0 / (workspace_.distance(positions_, reference_, params_.band) + 1.0);
+}
+
 namespace {
 using Params = std::map<std::string, double>;
+using Options = std::map<std::string, std::string>;
+
+std::string take_option(Options& options, const std::string& key, const std::string& fallback) {
+  auto it = options.find(key);
+  if (it == options.end()) return fallback;
+  const std::string value = it->second;
+  options.erase(it);
+  return value;
+}
 
 double take(Params& params, const std::string& key, double fallback) {
   auto it = params.find(key);
@@ -33,13 +63,28 @@ double take(Params& params, const std::string& key, double fallback) {
   return value;
 }
 
-using Factory = std::function<std::unique_ptr<Critic>(Params&)>;
+using Factory = std::function<std::unique_ptr<Critic>(Params&, Options&)>;
+
+std::unique_ptr<Critic> make_similarity(Params& p, Options& o) {
+  SimilarityParams params;
+  const std::string sampling = take_option(o, "sampling", "polyline");
+  if (sampling == "segment")
+    params.sampling = ReferenceSampling::Segment;
+  else if (sampling != "polyline")
+    throw Error("critic similarity: sampling = '" + sampling + "': expected 'polyline' or 'segment'");
+  params.v_ref_min = take(p, "v_ref_min", params.v_ref_min);
+  const double band = take(p, "band", kNoBand);
+  if (band != std::floor(band)) throw Error(detail::describe("critic similarity: band", band, "must be a whole number"));
+  params.band = static_cast<int>(band);
+  return std::make_unique<SimilarityCritic>(params);
+}
 
 const std::map<std::string, Factory>& registry() {
   static const std::map<std::string, Factory> factories = {
-      {"heading", [](Params&) { return std::make_unique<HeadingCritic>(); }},
-      {"clearance", [](Params& p) { return std::make_unique<ClearanceCritic>(take(p, "cap", 2.0)); }},
-      {"velocity", [](Params&) { return std::make_unique<VelocityCritic>(); }},
+      {"heading", [](Params&, Options&) { return std::make_unique<HeadingCritic>(); }},
+      {"clearance", [](Params& p, Options&) { return std::make_unique<ClearanceCritic>(take(p, "cap", 2.0)); }},
+      {"velocity", [](Params&, Options&) { return std::make_unique<VelocityCritic>(); }},
+      {"similarity", make_similarity},
   };
   return factories;
 }
@@ -56,9 +101,12 @@ std::unique_ptr<Critic> make_critic(const CriticConfig& config) {
   }
   Params params = config.params;
   for (const auto& [key, value] : params) detail::require_finite("critic " + config.name + "." + key, value);
-  auto critic = it->second(params);
+  Options options = config.options;
+  auto critic = it->second(params, options);
   if (!params.empty())
     throw Error("critic '" + config.name + "' has no parameter '" + params.begin()->first + "'");
+  if (!options.empty())
+    throw Error("critic '" + config.name + "' has no option '" + options.begin()->first + "'");
   return critic;
 }
 

@@ -64,6 +64,20 @@ std::vector<std::size_t> GlobalPath::key_nodes(double min_turn) const {
   return nodes;
 }
 
+void reference_samples(const GlobalPath& path, const Vec2& robot, double v_ref, double dt, int n,
+                       ReferenceSampling sampling, std::vector<Vec2>& out) {
+  out.resize(static_cast<std::size_t>(std::max(n, 0)));
+  const PathProjection p = path.project(robot);
+  const double spacing = v_ref * dt;
+  if (sampling == ReferenceSampling::Segment) {
+    const double theta = path.segment_direction(p.segment);
+    const Vec2 step(std::cos(theta) * spacing, std::sin(theta) * spacing);
+    for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = p.point + (i + 1) * step;
+  } else {
+    for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = path.point_at(p.arc_length + (i + 1) * spacing);
+  }
+}
+
 void KeyNodeParams::validate() const {
   detail::require_non_negative("key_node_angle", min_turn);
   if (min_turn >= M_PI) throw Error(detail::describe("key_node_angle", min_turn, "must be < pi"));

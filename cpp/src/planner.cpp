@@ -175,6 +175,41 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   return result_;
 }
 
+namespace {
+// The pose `steps` (a real number) steps into a constant-command rollout, on the
+// circle through its poses: the discrete model's poses all lie on one circle of
+// radius v dt / (2 sin(omega dt / 2)), with the heading turning omega dt per step.
+Pose2 pose_along_rollout(const Pose2& start, const Twist& cmd, double dt, double steps) {
+  const double a = start.theta, b = cmd.omega * dt, chord = cmd.v * dt;
+  if (std::abs(b) < 1e-9) {
+    const double d = steps * chord, th = a + steps * b;
+    return Pose2{start.x + d * std::cos(th), start.y + d * std::sin(th), wrap_angle(th)};
+  }
+  const double radius = chord / (2.0 * std::sin(0.5 * b));  // signed: negative turning right
+  const double cx = start.x - radius * std::sin(a + 0.5 * b), cy = start.y + radius * std::cos(a + 0.5 * b);
+  const double phi = a + 0.5 * b + steps * b;
+  return Pose2{cx + radius * std::sin(phi), cy - radius * std::cos(phi), wrap_angle(a + steps * b)};
+}
+
+// Whether the footprint stays clear along the rollout's arc between steps s0
+// and s1, given the clearances c0 and c1 there. No footprint point moves more
+// than `sweep_per_step` per step and the clearance changes no faster than the
+// footprint moves, so a piece with c0 + c1 above its sweep is clear; others are
+// halved until they are, down to a millimetre. The poses alone miss an obstacle
+// corner that the footprint clips between two of them.
+bool clear_between(const ClearanceSource& world, const Footprint& footprint, const Pose2& start, const Twist& cmd,
+                   double dt, double s0, double c0, double s1, double c1, double sweep_per_step) {
+  if (c0 <= 0.0 || c1 <= 0.0) return false;
+  const double sweep = (s1 - s0) * sweep_per_step;
+  if (c0 + c1 > sweep) return true;
+  if (sweep < 1e-3) return false;
+  const double sm = 0.5 * (s0 + s1);
+  const double cm = world.clearance(footprint, pose_along_rollout(start, cmd, dt, sm), sm * dt);
+  return clear_between(world, footprint, start, cmd, dt, s0, c0, sm, cm, sweep_per_step) &&
+         clear_between(world, footprint, start, cmd, dt, sm, cm, s1, c1, sweep_per_step);
+}
+}  // namespace
+
 void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSource& world) {
   const std::size_t n = result_.samples.size();
   rollouts_.resize(n);
@@ -182,20 +217,33 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   result_.min_clearance.resize(n);
   result_.free_distance.resize(n);
   const double inf = std::numeric_limits<double>::infinity();
+  // A start already in contact is not held against the first step, so the robot can still leave.
+  const double start_clearance = world.clearance(footprint_, state.pose, 0.0);
+  const double turn_reach = footprint_.is_circle() ? 0.0 : footprint_.radius();
   for (std::size_t i = 0; i < n; ++i) {
     const Twist& cmd = result_.samples[i];
     Trajectory& poses = rollouts_[i];
     rollout(state.pose, cmd, params_.dt, n_steps_, poses);
+    // Farthest any footprint point moves per step: the arc (a little longer than
+    // the chord v dt) plus the turn.
+    const double b = std::abs(cmd.omega) * params_.dt;
+    const double arc = b < 1e-9 ? cmd.v * params_.dt : cmd.v * params_.dt * (0.5 * b) / std::sin(0.5 * b);
+    const double sweep_per_step = arc + turn_reach * b;
     double min_clearance = inf;
     double free_distance = inf;
+    double previous = start_clearance;
     for (int k = 0; k < n_steps_; ++k) {
       const double c = world.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt);
       min_clearance = std::min(min_clearance, c);
-      if (c <= 0.0) {
-        // Contact at pose k + 1: the robot travels k full steps in free space.
+      const bool clear = c > 0.0 && (k == 0 && previous <= 0.0 ? true
+                                     : clear_between(world, footprint_, state.pose, cmd, params_.dt, k, previous,
+                                                     k + 1, c, sweep_per_step));
+      if (!clear) {
+        // Contact at or before pose k + 1: the robot travels k full steps in free space.
         free_distance = k * cmd.v * params_.dt;
         break;
       }
+      previous = c;
     }
     result_.min_clearance[i] = min_clearance;
     result_.free_distance[i] = free_distance;
@@ -207,7 +255,11 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
 void LocalPlanner::score_and_choose(const CriticContext& context) {
   const std::size_t n = result_.samples.size();
   const std::size_t m = critics_.size();
-  for (auto& critic : critics_) critic->prepare(context);
+  for (auto& critic : critics_) {
+    if (critic->needs_path() && !context.path)
+      throw Error("critic '" + critic->name() + "' needs a global path: call set_global_path first");
+    critic->prepare(context);
+  }
   result_.raw.setZero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
   result_.normalized.setZero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
   result_.total.setConstant(static_cast<Eigen::Index>(n), -std::numeric_limits<double>::infinity());

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LocalPlanner', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dynamic_window', 'inflate', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LocalPlanner', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -325,15 +325,14 @@ class CriticConfig:
     A critic by registered name, its weight, and its own parameters (e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).
     """
     name: str
-    def __init__(self, name: str, weight: typing.SupportsFloat | typing.SupportsIndex = 1.0, params: collections.abc.Mapping[str, typing.SupportsFloat | typing.SupportsIndex] = {}) -> None:
-        ...
+    def __init__(self, name: str, weight: typing.SupportsFloat | typing.SupportsIndex = 1.0, params: dict = {}) -> None:
+        """
+        params: numbers (e.g. {'cap': 2.0}) and words (e.g. {'sampling': 'segment'}).
+        """
     def __repr__(self) -> str:
         ...
     @property
-    def params(self) -> dict[str, float]:
-        ...
-    @params.setter
-    def params(self, arg0: collections.abc.Mapping[str, typing.SupportsFloat | typing.SupportsIndex]) -> None:
+    def params(self) -> dict:
         ...
     @property
     def weight(self) -> float:
@@ -749,6 +748,10 @@ def critic_names() -> list[str]:
     """
     Names of the critics that can be configured.
     """
+def dtw(a: typing.Any, b: typing.Any, band: typing.SupportsInt | typing.SupportsIndex = -1) -> float:
+    """
+    Dynamic time warping between (n, 2) and (m, 2) point sequences: the sum of Euclidean point distances along the optimal warping path (steps (i-1, j), (i, j-1), (i-1, j-1)). band >= 0: Sakoe-Chiba band around the diagonal, in samples (widened where too narrow to connect the ends); -1: none.
+    """
 def dynamic_window(limits: RobotLimits, current: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex) -> VelocityWindow:
     """
     Vm ∩ Vd for the current (v, omega).
@@ -756,6 +759,10 @@ def dynamic_window(limits: RobotLimits, current: typing.Any, dt: typing.Supports
 def inflate(grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing.SupportsIndex, terrain: TerrainGrid = None) -> numpy.typing.NDArray[numpy.uint8]:
     """
     (rows, cols) uint8, 1 where a robot of that radius cannot centre: obstacles, cells nearer than the radius to one, and grade-4 terrain.
+    """
+def reference_samples(path: ..., robot: typing.Any, v_ref: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex, n: typing.SupportsInt | typing.SupportsIndex, sampling: str = 'polyline') -> numpy.typing.NDArray[numpy.float64]:
+    """
+    (n, 2) reference samples E of the similarity cost (SPEC 4, Eq. 9): from the robot's projection onto the path, i * v_ref * dt further along the current segment ('segment') or along the path ('polyline').
     """
 def rollout(pose: typing.Any, twist: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex, n_steps: typing.SupportsInt | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """
@@ -773,3 +780,4 @@ def wrap_angle(angle: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
     The angle in (-pi, pi].
     """
+NO_BAND: int = -1

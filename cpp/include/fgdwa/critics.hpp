@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "fgdwa/dtw.hpp"
 #include "fgdwa/geometry.hpp"
 #include "fgdwa/path.hpp"
 #include "fgdwa/robot.hpp"
@@ -39,15 +40,24 @@ class Critic {
   virtual ~Critic() = default;
   virtual std::string name() const = 0;
   virtual void prepare(const CriticContext& context) { (void)context; }
+  // Whether the critic reads the global path (the planner refuses to run it without one).
+  virtual bool needs_path() const { return false; }
   virtual double score(const Rollout& rollout) const = 0;
 };
 
 // How a critic is named in configuration: its registered name, the weight the
-// planner gives it, and its own parameters (unknown keys are an error).
+// planner gives it, and its own numeric parameters and word options (unknown
+// keys are an error).
 struct CriticConfig {
+  CriticConfig() = default;
+  CriticConfig(std::string name_, double weight_ = 1.0, std::map<std::string, double> params_ = {},
+               std::map<std::string, std::string> options_ = {})
+      : name(std::move(name_)), weight(weight_), params(std::move(params_)), options(std::move(options_)) {}
+
   std::string name;
   double weight = 1.0;
   std::map<std::string, double> params;
+  std::map<std::string, std::string> options;
 };
 
 // pi - |angle between the final heading and the direction from the final position to the target|.
@@ -78,6 +88,32 @@ class VelocityCritic : public Critic {
  public:
   std::string name() const override { return "velocity"; }
   double score(const Rollout& rollout) const override { return rollout.command.v; }
+};
+
+// Eq. 11: 1 / (DTW(R, E) + 1) between the rollout's positions R and n reference
+// samples E of the global path, with v_ref = max(v_current, v_ref_min).
+struct SimilarityParams {
+  ReferenceSampling sampling = ReferenceSampling::Polyline;
+  double v_ref_min = 0.1;  // m/s, keeps E from collapsing onto one point at standstill
+  int band = kNoBand;      // Sakoe-Chiba band in samples, kNoBand for the full DTW
+  void validate() const;
+};
+
+class SimilarityCritic : public Critic {
+ public:
+  explicit SimilarityCritic(const SimilarityParams& params = {});
+  std::string name() const override { return "similarity"; }
+  bool needs_path() const override { return true; }
+  void prepare(const CriticContext& context) override;
+  double score(const Rollout& rollout) const override;
+  // The reference samples of the current cycle.
+  const std::vector<Vec2>& reference() const { return reference_; }
+
+ private:
+  SimilarityParams params_;
+  std::vector<Vec2> reference_;
+  mutable std::vector<Vec2> positions_;
+  mutable DtwWorkspace workspace_;
 };
 
 // Builds a critic by registered name; throws fgdwa::Error on an unknown name,

@@ -2,6 +2,7 @@
 // The global path as the local planner sees it: a polyline with projection,
 // deviation, segment directions, arc-length walking and key nodes (SPEC 5).
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "fgdwa/geometry.hpp"
@@ -47,6 +48,18 @@ class GlobalPath {
   std::vector<double> cumulative_;
   std::vector<double> directions_;
 };
+
+// How the reference samples E of the similarity cost follow the path (SPEC 4).
+enum class ReferenceSampling : std::uint8_t {
+  Segment,   // Eq. 9 as written: a straight line along the current segment
+  Polyline,  // the same spacing walked along the path's arc length, turning its corners
+};
+
+// E_i, i = 1..n: from the robot's projection P onto the path, i * v_ref * dt
+// further along the current segment's direction (Segment) or along the path
+// (Polyline, stopping at its end). Written into `out` (resized).
+void reference_samples(const GlobalPath& path, const Vec2& robot, double v_ref, double dt, int n,
+                       ReferenceSampling sampling, std::vector<Vec2>& out);
 
 struct KeyNodeParams {
   double min_turn = 0.17453292519943295;  // rad (10 deg), turn that makes a vertex a key node

@@ -59,7 +59,7 @@ struct PlannerParams {
   HeadingTarget heading_target = HeadingTarget::Goal;
   KeyNodeParams key_nodes;      // key-node angle and reach radius, for HeadingTarget::KeyNodes
   std::vector<CriticConfig> critics = {
-      {"heading", 0.5, {}}, {"clearance", 0.15, {}}, {"velocity", 1.0, {}}};  // Table 5
+      {"heading", 0.5}, {"clearance", 0.15}, {"velocity", 1.0}};  // Table 5
 
   // Poses per rollout: sim_time / dt, rounded.
   int n_steps() const;

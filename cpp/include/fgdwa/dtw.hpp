@@ -1,0 +1,32 @@
+#pragma once
+// Dynamic time warping between two planar point sequences (SPEC 4, Eq. 10):
+// steps (i-1, j), (i, j-1), (i-1, j-1), point distance the 2-D Euclidean
+// distance, DTW the sum of point distances along the optimal warping path.
+#include <cstddef>
+#include <vector>
+
+#include "fgdwa/geometry.hpp"
+
+namespace fgdwa {
+
+// Sakoe-Chiba band: cell (i, j) is allowed when j lies within `band` of the
+// diagonal through (0, 0) and (n - 1, m - 1) at row i. A negative band means no
+// band. A band too narrow to connect the corners is widened until it does.
+constexpr int kNoBand = -1;
+
+// Reusable buffers, so the control loop allocates nothing per call.
+class DtwWorkspace {
+ public:
+  double distance(const Vec2* a, std::size_t n, const Vec2* b, std::size_t m, int band = kNoBand);
+  double distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b, int band = kNoBand) {
+    return distance(a.data(), a.size(), b.data(), b.size(), band);
+  }
+
+ private:
+  std::vector<double> previous_, current_, bx_, by_, row_;
+};
+
+// One-off DTW; throws fgdwa::Error on an empty sequence or a non-finite point.
+double dtw(const std::vector<Vec2>& a, const std::vector<Vec2>& b, int band = kNoBand);
+
+}  // namespace fgdwa
