@@ -1,0 +1,122 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "fgdwa/grid.hpp"
+#include "test_support.hpp"
+
+namespace fgdwa {
+namespace {
+
+using test::expect_error_naming;
+using test::kInf;
+
+TEST(OccupancyGrid, RejectsBadShapes) {
+  expect_error_naming([] { OccupancyGrid(2, 3, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(5)); }, "cells");
+  expect_error_naming([] { OccupancyGrid(2, 3, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(7)); }, "cells");
+  expect_error_naming([] { OccupancyGrid(0, 3, 0.1, Vec2::Zero(), {}); }, "rows");
+  expect_error_naming([] { OccupancyGrid(-1, 3, 0.1, Vec2::Zero(), {}); }, "rows");
+  expect_error_naming([] { OccupancyGrid(3, 0, 0.1, Vec2::Zero(), {}); }, "cols");
+  for (double res : {0.0, -0.1, std::nan(""), kInf})
+    expect_error_naming([&] { OccupancyGrid(1, 1, res, Vec2::Zero(), {0}); }, "resolution");
+  expect_error_naming([] { OccupancyGrid(1, 1, 0.1, Vec2(std::nan(""), 0), {0}); }, "origin");
+}
+
+TEST(OccupancyGrid, RowZeroIsTheBottomRow) {
+  // 2 rows x 3 cols; only (row 1, col 2) is occupied: the top-right cell.
+  const OccupancyGrid grid(2, 3, 0.5, Vec2(-1.0, 2.0), {0, 0, 0, 0, 0, 7});
+  EXPECT_EQ(grid.occupied_count(), 1u);
+  EXPECT_TRUE(grid.occupied(1, 2));
+  EXPECT_TRUE(grid.occupied_at(Vec2(0.4, 2.9)));
+  EXPECT_FALSE(grid.occupied_at(Vec2(0.4, 2.4)));
+  EXPECT_FALSE(grid.occupied_at(Vec2(0.6, 2.9)));  // outside the grid is free
+  int row = -1, col = -1;
+  ASSERT_TRUE(grid.cell_of(Vec2(-0.9, 2.6), row, col));
+  EXPECT_EQ(row, 1);
+  EXPECT_EQ(col, 0);
+  EXPECT_FALSE(grid.cell_of(Vec2(-1.1, 2.6), row, col));
+  EXPECT_TRUE(grid.cell_center(1, 2).isApprox(Vec2(0.25, 2.75)));
+}
+
+TEST(DistanceField, CellDistanceEqualsBruteForceCentreDistance) {
+  std::mt19937 rng(31337);
+  std::uniform_int_distribution<int> size(1, 16);
+  std::uniform_real_distribution<double> density(0.0, 0.5), res(0.05, 1.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int rows = size(rng), cols = size(rng);
+    const double resolution = res(rng);
+    const OccupancyGrid grid = test::random_cells(rng, rows, cols, resolution, Vec2(-1.0, 0.5), density(rng));
+    const DistanceField field(grid);
+    EXPECT_EQ(field.has_obstacles(), grid.occupied_count() > 0);
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c) {
+        double best = kInf;
+        for (int r2 = 0; r2 < rows; ++r2)
+          for (int c2 = 0; c2 < cols; ++c2)
+            if (grid.occupied(r2, c2)) best = std::min(best, std::hypot(r - r2, c - c2) * resolution);
+        if (std::isinf(best)) {
+          ASSERT_TRUE(std::isinf(field.cell_distance(r, c)));
+        } else {
+          ASSERT_NEAR(field.cell_distance(r, c), best, 1e-12) << "trial " << trial << " cell " << r << "," << c;
+        }
+      }
+  }
+}
+
+TEST(DistanceField, PointDistanceIsWithinOneCellOfTheExactDistance) {
+  std::mt19937 rng(4242);
+  std::uniform_int_distribution<int> size(1, 30);
+  std::uniform_real_distribution<double> density(0.01, 0.3), res(0.05, 0.5), u(-0.3, 1.3);
+  double worst = 0.0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const int rows = size(rng), cols = size(rng);
+    const double resolution = res(rng);
+    const Vec2 origin(-2.0, 1.0);
+    const OccupancyGrid grid = test::random_cells(rng, rows, cols, resolution, origin, density(rng));
+    const DistanceField field(grid);
+    if (!field.has_obstacles()) continue;
+    // Points over the grid and up to 30 % of its size beyond every side.
+    for (int i = 0; i < 50; ++i) {
+      const Vec2 p = origin + Vec2(u(rng) * cols * resolution, u(rng) * rows * resolution);
+      const double exact = test::brute_point_distance(grid, p);
+      const double estimate = field.distance(p);
+      ASSERT_GE(estimate, 0.0);
+      ASSERT_LE(std::abs(estimate - exact), resolution + 1e-12)
+          << "trial " << trial << " p " << p.transpose() << " exact " << exact;
+      worst = std::max(worst, std::abs(estimate - exact) / resolution);
+      if (grid.occupied_at(p)) {
+        ASSERT_EQ(estimate, 0.0);
+      }
+    }
+  }
+  RecordProperty("worst_error_in_cells", std::to_string(worst));
+}
+
+TEST(DistanceField, NoObstaclesIsInfinite) {
+  const OccupancyGrid grid(4, 5, 0.2, Vec2::Zero(), std::vector<std::uint8_t>(20, 0));
+  const DistanceField field(grid);
+  EXPECT_FALSE(field.has_obstacles());
+  for (double d : field.cell_distances()) EXPECT_TRUE(std::isinf(d));
+  EXPECT_TRUE(std::isinf(field.distance(Vec2(0.5, 0.5))));
+  EXPECT_TRUE(std::isinf(field.distance(Vec2(-3.0, 9.0))));
+}
+
+TEST(DistanceField, SingleObstacleHandCase) {
+  // One occupied cell at (row 2, col 2) of a 5 x 5 grid of 1 m cells.
+  std::vector<std::uint8_t> cells(25, 0);
+  cells[2 * 5 + 2] = 1;
+  const DistanceField field(OccupancyGrid(5, 5, 1.0, Vec2::Zero(), cells));
+  EXPECT_EQ(field.cell_distance(2, 2), 0.0);
+  EXPECT_DOUBLE_EQ(field.cell_distance(0, 0), std::sqrt(8.0));
+  EXPECT_DOUBLE_EQ(field.cell_distance(2, 4), 2.0);
+  EXPECT_EQ(field.distance(Vec2(2.5, 2.5)), 0.0);
+  // From a cell centre straight out, the estimate is exact: centre distance less half a cell.
+  EXPECT_NEAR(field.distance(Vec2(4.5, 2.5)), 1.5, 1e-12);
+  // Beyond the grid, straight out from the obstacle: the exact distance is 4.5 m.
+  EXPECT_NEAR(field.distance(Vec2(7.5, 2.5)), 4.5, 1.0);
+  EXPECT_NEAR(field.distance(Vec2(-4.0, -4.0)), std::hypot(6.0, 6.0), 1.0);
+}
+
+}  // namespace
+}  // namespace fgdwa

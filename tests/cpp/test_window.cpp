@@ -1,0 +1,188 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "fgdwa/window.hpp"
+#include "test_support.hpp"
+
+namespace fgdwa {
+namespace {
+
+RobotLimits random_limits(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  RobotLimits l;
+  l.v_min = u(rng) < 0.5 ? 0.0 : 0.3 * u(rng);
+  l.v_max = l.v_min + 0.1 + 2.0 * u(rng);
+  l.omega_max = 0.1 + 3.0 * u(rng);
+  l.acc_v = 0.05 + 3.0 * u(rng);
+  l.acc_omega = 0.05 + 5.0 * u(rng);
+  l.validate();
+  return l;
+}
+
+Twist random_twist_within(std::mt19937& rng, const RobotLimits& l) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Twist t{l.v_min + (l.v_max - l.v_min) * u(rng), l.omega_max * (2.0 * u(rng) - 1.0)};
+  // The ends of the range are where clipping matters most.
+  if (u(rng) < 0.1) t.v = u(rng) < 0.5 ? l.v_min : l.v_max;
+  if (u(rng) < 0.1) t.omega = u(rng) < 0.5 ? -l.omega_max : l.omega_max;
+  if (u(rng) < 0.1) t.omega = 0.0;
+  return t;
+}
+
+bool in_vm_and_vd(const Twist& s, const RobotLimits& l, const Twist& c, double dt, double tol = 1e-9) {
+  return s.v >= l.v_min - tol && s.v <= l.v_max + tol && std::abs(s.omega) <= l.omega_max + tol &&
+         std::abs(s.v - c.v) <= l.acc_v * dt + tol && std::abs(s.omega - c.omega) <= l.acc_omega * dt + tol;
+}
+
+TEST(Window, EverySampleLiesInsideVmAndVd) {
+  std::vector<Twist> samples;
+  std::uniform_int_distribution<int> count(1, 25);
+  std::uniform_real_distribution<double> dts(0.02, 0.5);
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    std::mt19937 rng(seed);
+    for (int trial = 0; trial < 100; ++trial) {
+      const RobotLimits limits = random_limits(rng);
+      const Twist current = random_twist_within(rng, limits);
+      const double dt = dts(rng);
+      WindowParams params;
+      params.n_v = count(rng);
+      params.n_omega = count(rng);
+      const VelocityWindow w = dynamic_window(limits, current, dt);
+      sample_window(w, current, params, samples);
+      SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial << " v " << current.v << " omega "
+                                        << current.omega << " n " << params.n_v << "x" << params.n_omega);
+      ASSERT_EQ(samples.size(), static_cast<std::size_t>(params.n_v * params.n_omega));
+      for (const Twist& s : samples) {
+        ASSERT_TRUE(in_vm_and_vd(s, limits, current, dt)) << s.v << ", " << s.omega;
+        ASSERT_TRUE(w.contains(s));
+      }
+      // v-major: the first n_omega samples share the first speed.
+      for (int i = 0; i < params.n_v; ++i)
+        for (int j = 0; j < params.n_omega; ++j)
+          ASSERT_EQ(samples[static_cast<std::size_t>(i * params.n_omega + j)].v, samples[i * params.n_omega].v);
+      const auto has = [&](auto pred) { return std::any_of(samples.begin(), samples.end(), pred); };
+      // The current speed is always inside the window for a state within the limits.
+      ASSERT_TRUE(has([&](const Twist& s) { return s.v == current.v; }));
+      if (w.omega_lo <= 0.0 && 0.0 <= w.omega_hi) {
+        ASSERT_TRUE(has([](const Twist& s) { return s.omega == 0.0; }));
+      }
+      // Keeping the current command: one slot goes to omega = 0, so it needs two.
+      if (params.n_omega >= 2 || current.omega == 0.0) {
+        ASSERT_TRUE(has([&](const Twist& s) { return s.v == current.v && s.omega == current.omega; }));
+      }
+      // The grid spans the window. An end may give its place to the current
+      // velocity or to omega = 0, but only for a value within one spacing of it.
+      if (params.n_v >= 2) {
+        const double spacing = (w.v_hi - w.v_lo) / (params.n_v - 1) + 1e-12;
+        ASSERT_TRUE(has([&](const Twist& s) { return s.v <= w.v_lo + spacing; }));
+        ASSERT_TRUE(has([&](const Twist& s) { return s.v >= w.v_hi - spacing; }));
+      }
+      if (params.n_omega >= 2) {
+        const double spacing = (w.omega_hi - w.omega_lo) / (params.n_omega - 1) + 1e-12;
+        ASSERT_TRUE(has([&](const Twist& s) { return s.omega <= w.omega_lo + spacing; }));
+        ASSERT_TRUE(has([&](const Twist& s) { return s.omega >= w.omega_hi - spacing; }));
+      }
+    }
+  }
+}
+
+TEST(Window, WindowIsTheIntersectionOfLimitsAndReachableVelocities) {
+  RobotLimits limits;  // v in [0, 1.2], |omega| <= 1, acc 1 and 2
+  const VelocityWindow w = dynamic_window(limits, Twist{1.1, -0.9}, 0.15);
+  EXPECT_NEAR(w.v_lo, 0.95, 1e-12);
+  EXPECT_NEAR(w.v_hi, 1.2, 1e-12);
+  EXPECT_NEAR(w.omega_lo, -1.0, 1e-12);
+  EXPECT_NEAR(w.omega_hi, -0.6, 1e-12);
+  // A speed beyond what any command could produce: the window is the reachable
+  // point nearest to the limits rather than empty.
+  const VelocityWindow far = dynamic_window(limits, Twist{2.0, 0.0}, 0.15);
+  EXPECT_NEAR(far.v_lo, 1.85, 1e-12);
+  EXPECT_EQ(far.v_lo, far.v_hi);
+}
+
+TEST(Window, BrakingCommandIsTheWindowPointNearestToRest) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const RobotLimits limits = random_limits(rng);
+    const Twist current = random_twist_within(rng, limits);
+    const double dt = 0.02 + 0.4 * u(rng);
+    const VelocityWindow w = dynamic_window(limits, current, dt);
+    const Twist b = braking_command(limits, current, dt);
+    ASSERT_TRUE(w.contains(b, 0.0));
+    ASSERT_TRUE(in_vm_and_vd(b, limits, current, dt));
+    // The box's nearest point to (0, 0): no point of the window is slower in v or in omega.
+    for (int k = 0; k < 20; ++k) {
+      const Twist p{w.v_lo + (w.v_hi - w.v_lo) * u(rng), w.omega_lo + (w.omega_hi - w.omega_lo) * u(rng)};
+      ASSERT_LE(std::abs(b.v), std::abs(p.v));
+      ASSERT_LE(std::abs(b.omega), std::abs(p.omega));
+    }
+  }
+  RobotLimits limits;
+  const Twist b = braking_command(limits, Twist{1.0, 0.5}, 0.15);
+  EXPECT_NEAR(b.v, 0.85, 1e-12);
+  EXPECT_NEAR(b.omega, 0.2, 1e-12);
+  const Twist stop = braking_command(limits, Twist{0.1, -0.1}, 0.15);
+  EXPECT_EQ(stop.v, 0.0);
+  EXPECT_EQ(stop.omega, 0.0);
+}
+
+TEST(Window, SampleCountsMustBePositive) {
+  WindowParams params;
+  params.n_v = 0;
+  test::expect_error_naming([&] { params.validate(); }, "n_v");
+  params.n_v = 3;
+  params.n_omega = -2;
+  test::expect_error_naming([&] { params.validate(); }, "n_omega");
+}
+
+// Eq. 3 as written: both the speed and the turn rate must be able to stop within dist.
+TEST(Window, ContinuousAdmissibilityIsEquationThree) {
+  RobotLimits limits;  // braking 1 m/s^2 and 2 rad/s^2
+  const double dt = 0.15;
+  const auto ok = [&](Twist t, double d) { return is_admissible(t, d, limits, dt, BrakingModel::Continuous); };
+  EXPECT_TRUE(ok(Twist{1.2, 1.0}, test::kInf));
+  EXPECT_TRUE(ok(Twist{1.0, 0.0}, 0.5));  // 1.0 <= sqrt(2 * 0.5 * 1)
+  EXPECT_FALSE(ok(Twist{1.0 + 1e-9, 0.0}, 0.5));
+  EXPECT_TRUE(ok(Twist{0.1, -2.0}, 1.0));  // |omega| 2 <= sqrt(2 * 1 * 2)
+  EXPECT_FALSE(ok(Twist{0.1, -2.0 - 1e-9}, 1.0));
+  EXPECT_TRUE(ok(Twist{0.0, 0.0}, 0.0));
+  EXPECT_FALSE(ok(Twist{0.01, 0.0}, 0.0));
+  limits.brake_v = 4.0;  // harder braking admits more speed
+  EXPECT_TRUE(ok(Twist{2.0, 0.0}, 0.5));
+}
+
+// The stepped model: one period at the command, then min(acc_v, brake_v) dt less per period.
+TEST(Window, DiscreteStoppingDistanceSumsTheSteppedSpeeds) {
+  EXPECT_EQ(stopping_distance(0.0, 1.0, 0.15), 0.0);
+  // 1.0, 0.85, ..., 0.1 m/s for 0.15 s each.
+  EXPECT_NEAR(stopping_distance(1.0, 1.0, 0.15), 0.15 * (7 * 1.0 - 0.15 * 21), 1e-12);
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> speed(0.0, 2.0), decel(0.1, 3.0), dts(0.02, 0.5);
+  for (int i = 0; i < 2000; ++i) {
+    const double v = speed(rng), b = decel(rng), dt = dts(rng);
+    double sum = 0.0;
+    for (double u = v; u > 0.0; u -= b * dt) sum += u * dt;
+    ASSERT_NEAR(stopping_distance(v, b, dt), sum, 1e-9);
+    // Never shorter than continuous braking, and at most one period longer.
+    ASSERT_GE(stopping_distance(v, b, dt), v * v / (2 * b) - 1e-12);
+    ASSERT_LE(stopping_distance(v, b, dt), v * v / (2 * b) + v * dt + 1e-12);
+  }
+  RobotLimits limits;
+  const double d = stopping_distance(1.0, 1.0, 0.15);
+  EXPECT_TRUE(is_admissible(Twist{1.0, 0.0}, d, limits, 0.15));  // the default model
+  EXPECT_FALSE(is_admissible(Twist{1.0, 0.0}, d - 1e-9, limits, 0.15, BrakingModel::Discrete));
+  EXPECT_TRUE(is_admissible(Twist{1.0, 0.0}, 0.5, limits, 0.15, BrakingModel::Continuous));
+  EXPECT_FALSE(is_admissible(Twist{1.0, 0.0}, 0.5, limits, 0.15, BrakingModel::Discrete));
+  // A weaker acceleration than braking: the window can only slow by acc_v dt per period.
+  limits.acc_v = 0.5;
+  limits.brake_v = 2.0;
+  EXPECT_FALSE(is_admissible(Twist{1.0, 0.0}, d, limits, 0.15));
+  EXPECT_TRUE(is_admissible(Twist{1.0, 0.0}, stopping_distance(1.0, 0.5, 0.15), limits, 0.15));
+}
+
+}  // namespace
+}  // namespace fgdwa
