@@ -1,0 +1,193 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "fgdwa/clearance.hpp"
+#include "fgdwa/collision.hpp"
+#include "test_support.hpp"
+
+namespace fgdwa {
+namespace {
+
+using test::kInf;
+
+void expect_exact_cover(const OccupancyGrid& grid, const std::vector<CellRect>& rects) {
+  std::vector<int> covered(grid.cells().size(), 0);
+  for (const CellRect& r : rects) {
+    ASSERT_GE(r.rows, 1);
+    ASSERT_GE(r.cols, 1);
+    ASSERT_TRUE(grid.in_bounds(r.row, r.col));
+    ASSERT_TRUE(grid.in_bounds(r.row + r.rows - 1, r.col + r.cols - 1));
+    for (int row = r.row; row < r.row + r.rows; ++row)
+      for (int col = r.col; col < r.col + r.cols; ++col) ++covered[grid.index(row, col)];
+  }
+  for (int row = 0; row < grid.rows(); ++row)
+    for (int col = 0; col < grid.cols(); ++col)
+      ASSERT_EQ(covered[grid.index(row, col)], grid.occupied(row, col) ? 1 : 0) << "cell " << row << "," << col;
+}
+
+TEST(MergeOccupiedCells, CoversExactlyTheOccupiedCellsWithDisjointRectangles) {
+  std::mt19937 rng(1001);
+  std::uniform_int_distribution<int> size(1, 40);
+  std::uniform_real_distribution<double> density(0.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const int rows = size(rng), cols = size(rng);
+    const OccupancyGrid grid = trial % 2 ? test::random_cells(rng, rows, cols, 0.1, Vec2::Zero(), density(rng))
+                                         : test::random_rectangles(rng, rows, cols, 0.1, Vec2::Zero(), 0.3, 6);
+    expect_exact_cover(grid, merge_occupied_cells(grid));
+  }
+  const OccupancyGrid full(7, 9, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(63, 1));
+  const auto one = merge_occupied_cells(full);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].rows, 7);
+  EXPECT_EQ(one[0].cols, 9);
+  EXPECT_TRUE(merge_occupied_cells(OccupancyGrid(3, 3, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(9, 0))).empty());
+}
+
+// Clustered obstacles (rectangles, as in real maps) collapse into few boxes,
+// which is what keeps the FCL broadphase small.
+TEST(MergeOccupiedCells, ClusteredMapNeedsFarFewerBoxesThanCells) {
+  std::mt19937 rng(15);
+  const OccupancyGrid grid = test::random_rectangles(rng, 100, 100, 0.1, Vec2::Zero(), 0.15);
+  const auto boxes = merge_occupied_cells(grid);
+  expect_exact_cover(grid, boxes);
+  EXPECT_GE(grid.occupied_count(), 1400u);
+  EXPECT_LT(boxes.size() * 4, grid.occupied_count()) << boxes.size() << " boxes for " << grid.occupied_count();
+}
+
+struct Query {
+  Pose2 pose;
+  bool near_obstacle;
+};
+
+// Half the poses anywhere in free space, half within 1 m of an obstacle cell.
+std::vector<Query> random_queries(std::mt19937& rng, const OccupancyGrid& grid, int n) {
+  std::uniform_real_distribution<double> x(0.0, grid.cols() * grid.resolution()),
+      y(0.0, grid.rows() * grid.resolution()), angle(-M_PI, M_PI), offset(0.0, 1.0);
+  std::vector<Vec2> obstacles;
+  for (int r = 0; r < grid.rows(); ++r)
+    for (int c = 0; c < grid.cols(); ++c)
+      if (grid.occupied(r, c)) obstacles.push_back(grid.cell_center(r, c));
+  std::uniform_int_distribution<std::size_t> pick(0, obstacles.size() - 1);
+  std::vector<Query> out;
+  while (static_cast<int>(out.size()) < n) {
+    const bool near = out.size() % 2 == 1;
+    Vec2 p;
+    if (near) {
+      const double a = angle(rng);
+      p = obstacles[pick(rng)] + offset(rng) * Vec2(std::cos(a), std::sin(a));
+    } else {
+      p = grid.origin() + Vec2(x(rng), y(rng));
+    }
+    if (grid.occupied_at(p)) continue;
+    out.push_back({Pose2{p.x(), p.y(), angle(rng)}, near});
+  }
+  return out;
+}
+
+class ClearanceAgreement : public ::testing::TestWithParam<int> {};
+
+// FCL is exact (checked against a brute-force distance to the cell squares);
+// the distance field stays within one cell of it.
+TEST_P(ClearanceAgreement, FieldAgreesWithFclWithinOneCell) {
+  const Footprint footprint = GetParam() == 0
+                                  ? Footprint::circle(0.25)
+                                  : Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
+  std::mt19937 rng(2024 + GetParam());
+  const OccupancyGrid grid = test::random_rectangles(rng, 100, 100, 0.1, Vec2::Zero(), 0.15);
+  const auto field = std::make_shared<const DistanceField>(grid);
+  const FieldClearance fast(field);
+  const CollisionWorld exact(grid);
+  const double res = grid.resolution();
+
+  int compared = 0, contacts = 0;
+  double worst = 0.0;
+  for (const Query& q : random_queries(rng, grid, 1000)) {
+    const double d_fcl = exact.clearance(footprint, q.pose, 0.0);
+    const double d_field = fast.clearance(footprint, q.pose, 0.0);
+    const double d_brute = test::brute_footprint_distance(grid, footprint, q.pose);
+    SCOPED_TRACE(::testing::Message() << "pose " << q.pose.x << "," << q.pose.y << "," << q.pose.theta << " fcl "
+                                      << d_fcl << " field " << d_field << " brute " << d_brute);
+    ASSERT_NEAR(d_fcl, d_brute, 1e-6);
+    // The clearance term only looks below the 2 m cap.
+    if (d_fcl < 2.0) {
+      ASSERT_LE(std::abs(std::max(d_field, 0.0) - d_fcl), res + 1e-9);
+      worst = std::max(worst, std::abs(std::max(d_field, 0.0) - d_fcl));
+      ++compared;
+    }
+    const bool hit = exact.in_collision(footprint, q.pose, 0.0);
+    if (hit) ++contacts;
+    if (d_fcl > 1e-9 || hit) {
+      ASSERT_EQ(hit, d_fcl <= 0.0);
+    }
+  }
+  EXPECT_GE(compared, 900);
+  EXPECT_GE(contacts, 50);  // the near-obstacle half exercises contact
+  RecordProperty("worst_field_error", std::to_string(worst));
+}
+
+INSTANTIATE_TEST_SUITE_P(CircleAndRectangle, ClearanceAgreement, ::testing::Values(0, 1));
+
+TEST(CollisionWorld, MovingDiscsMatchTheAnalyticDistance) {
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> pos(-3.0, 3.0), vel(-1.0, 1.0), rad(0.0, 0.5), angle(-M_PI, M_PI),
+      time(0.01, 3.0);
+  const Footprint footprints[] = {Footprint::circle(0.3),
+                                  Footprint::polygon({{0.4, 0.0}, {-0.2, 0.25}, {-0.2, -0.25}})};
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<Disc> discs(1 + trial % 4);
+    for (std::size_t i = 0; i < discs.size(); ++i) {
+      discs[i].center = Vec2(pos(rng), pos(rng));
+      discs[i].radius = i == 0 && trial % 3 == 0 ? 0.0 : rad(rng);  // some point obstacles
+      discs[i].velocity = Vec2(vel(rng), vel(rng));
+    }
+    const CollisionWorld exact(OccupancyGrid(1, 1, 0.1, Vec2(50, 50), {0}), discs);
+    const FieldClearance fast(nullptr, discs);
+    const Pose2 pose{pos(rng), pos(rng), angle(rng)};
+    const double t = time(rng);
+    for (const Footprint& fp : footprints) {
+      double analytic = kInf;
+      for (const Disc& d : discs) analytic = std::min(analytic, fp.signed_distance(pose, d.center_at(t)) - d.radius);
+      EXPECT_NEAR(fast.clearance(fp, pose, t), analytic, 1e-12);
+      // FCL models a point obstacle as a disc a micrometre wide.
+      EXPECT_NEAR(exact.clearance(fp, pose, t), std::max(analytic, 0.0), 2e-6) << "trial " << trial;
+      if (std::abs(analytic) > 1e-5) {
+        EXPECT_EQ(exact.in_collision(fp, pose, t), analytic < 0.0) << "trial " << trial;
+      }
+    }
+  }
+}
+
+TEST(CollisionWorld, EmptyWorldIsInfinitelyFar) {
+  const Footprint fp = Footprint::circle(0.25);
+  const CollisionWorld none;
+  EXPECT_TRUE(std::isinf(none.clearance(fp, Pose2{}, 0.0)));
+  EXPECT_FALSE(none.in_collision(fp, Pose2{}, 0.0));
+  const CollisionWorld empty_grid(OccupancyGrid(5, 5, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(25, 0)));
+  EXPECT_TRUE(empty_grid.boxes().empty());
+  EXPECT_TRUE(std::isinf(empty_grid.clearance(fp, Pose2{}, 0.0)));
+  EXPECT_TRUE(std::isinf(FieldClearance().clearance(fp, Pose2{}, 0.0)));
+}
+
+TEST(CollisionWorld, GridAndDiscsTogetherTakeTheNearest) {
+  std::vector<std::uint8_t> cells(100, 0);
+  cells[5 * 10 + 9] = 1;  // one cell, x in [0.9, 1.0], y in [0.5, 0.6]
+  const OccupancyGrid grid(10, 10, 0.1, Vec2::Zero(), cells);
+  const Footprint fp = Footprint::circle(0.1);
+  const Pose2 pose{0.5, 0.55, 0.0};
+  CollisionWorld world(grid, {Disc{Vec2(0.5, 0.0), 0.05, Vec2(0.0, 0.1)}});
+  EXPECT_EQ(world.boxes().size(), 1u);
+  // Now the cell (0.4 - 0.1 = 0.3) is nearer than the disc (0.55 - 0.15 = 0.4); the disc
+  // drifts up at 0.1 m/s and at t = 3 s is 0.25 - 0.15 = 0.1 away.
+  EXPECT_NEAR(world.clearance(fp, pose, 0.0), 0.3, 1e-6);
+  EXPECT_NEAR(world.clearance(fp, pose, 3.0), 0.1, 1e-6);
+  world.set_discs({});
+  EXPECT_NEAR(world.clearance(fp, pose, 3.0), 0.3, 1e-6);
+  EXPECT_THROW(world.set_discs({Disc{Vec2(0, 0), -1.0, Vec2::Zero()}}), Error);
+}
+
+}  // namespace
+}  // namespace fgdwa
