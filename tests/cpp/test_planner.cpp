@@ -1,0 +1,425 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <random>
+
+#include "fgdwa/clearance.hpp"
+#include "fgdwa/collision.hpp"
+#include "fgdwa/planner.hpp"
+#include "test_support.hpp"
+
+namespace fgdwa {
+namespace {
+
+using test::expect_error_naming;
+using test::kInf;
+
+TEST(PlannerParams, DefaultsAreValid) {
+  const PlannerParams params;
+  EXPECT_NO_THROW(params.validate());
+  EXPECT_EQ(params.n_steps(), 20);  // 3 s / 0.15 s
+}
+
+TEST(PlannerParams, RejectsBadValuesByName) {
+  const auto rejects = [](auto mutate, const std::string& field) {
+    PlannerParams params;
+    mutate(params);
+    expect_error_naming([&] { params.validate(); }, field);
+    // The planner validates its parameters on construction too.
+    expect_error_naming([&] { LocalPlanner(RobotLimits{}, Footprint::circle(0.25), params); }, field);
+  };
+  for (double dt : {0.0, -0.1, std::nan(""), kInf}) rejects([dt](PlannerParams& p) { p.dt = dt; }, "dt");
+  rejects([](PlannerParams& p) { p.sim_time = 0.0; }, "sim_time");
+  rejects([](PlannerParams& p) { p.sim_time = 0.05; }, "sim_time");  // less than half a step
+  rejects([](PlannerParams& p) { p.window.n_v = 0; }, "n_v");
+  rejects([](PlannerParams& p) { p.window.n_omega = 0; }, "n_omega");
+  rejects([](PlannerParams& p) { p.goal_tolerance = -0.1; }, "goal_tolerance");
+  rejects([](PlannerParams& p) { p.critics.clear(); }, "critics");
+  rejects([](PlannerParams& p) { p.critics.push_back({"heading", 1.0, {}}); }, "heading");
+}
+
+TEST(PlannerParams, CriticsAreBuiltByNameOnConstruction) {
+  PlannerParams params;
+  params.critics = {{"heading", 1.0, {}}, {"obstacle", 1.0, {}}};
+  expect_error_naming([&] { LocalPlanner(RobotLimits{}, Footprint::circle(0.25), params); }, "obstacle");
+  params.critics = {{"clearance", 1.0, {{"capp", 1.0}}}};
+  expect_error_naming([&] { LocalPlanner(RobotLimits{}, Footprint::circle(0.25), params); }, "capp");
+  RobotLimits limits;
+  limits.acc_v = -1.0;
+  expect_error_naming([&] { LocalPlanner(limits, Footprint::circle(0.25), PlannerParams{}); }, "acc_v");
+}
+
+// A seeded 8 m x 8 m world of clustered obstacles around a free start area.
+struct World {
+  std::shared_ptr<const DistanceField> field;
+  std::unique_ptr<FieldClearance> fast;
+  OccupancyGrid grid;
+};
+
+World random_world(std::mt19937& rng, Vec2 free_point, double fill = 0.15) {
+  OccupancyGrid grid = test::random_rectangles(rng, 80, 80, 0.1, Vec2(-4.0, -4.0), fill, 8, free_point, 0.3);
+  World w{std::make_shared<const DistanceField>(grid), nullptr, grid};
+  w.fast = std::make_unique<FieldClearance>(w.field);
+  return w;
+}
+
+RobotState random_state(std::mt19937& rng, const RobotLimits& limits, Vec2 at) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  RobotState s;
+  s.pose = Pose2{at.x(), at.y(), M_PI * (2.0 * u(rng) - 1.0)};
+  s.twist = Twist{limits.v_min + (limits.v_max - limits.v_min) * u(rng), limits.omega_max * (2.0 * u(rng) - 1.0)};
+  if (u(rng) < 0.2) s.twist.v = limits.v_max;  // fast: braking matters most
+  return s;
+}
+
+Vec2 random_goal(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-3.5, 3.5);
+  return Vec2(u(rng), u(rng));
+}
+
+bool inside_window(const Twist& cmd, const RobotLimits& l, const Twist& c, double dt) {
+  const double tol = 1e-9;
+  return cmd.v >= l.v_min - tol && cmd.v <= l.v_max + tol && std::abs(cmd.omega) <= l.omega_max + tol &&
+         std::abs(cmd.v - c.v) <= l.acc_v * dt + tol && std::abs(cmd.omega - c.omega) <= l.acc_omega * dt + tol;
+}
+
+TEST(LocalPlanner, CommandAlwaysLiesInsideTheDynamicWindow) {
+  const RobotLimits limits;
+  LocalPlanner planner(limits, Footprint::circle(0.25));
+  const double dt = planner.params().dt;
+  int ok = 0, stuck = 0;
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    std::mt19937 rng(seed);
+    const Vec2 start(0.0, 0.0);
+    const World world = random_world(rng, start);
+    for (int trial = 0; trial < 15; ++trial) {
+      const RobotState state = random_state(rng, limits, start);
+      const PlanResult& r = planner.plan(state, random_goal(rng), *world.fast);
+      ASSERT_TRUE(inside_window(r.command, limits, state.twist, dt)) << "seed " << seed << " trial " << trial;
+      if (r.status == Status::Ok) {
+        ++ok;
+        ASSERT_GE(r.best_index, 0);
+        ASSERT_EQ(r.reasons[static_cast<std::size_t>(r.best_index)], RejectReason::None);
+        ASSERT_EQ(r.command.v, r.samples[static_cast<std::size_t>(r.best_index)].v);
+        ASSERT_EQ(r.command.omega, r.samples[static_cast<std::size_t>(r.best_index)].omega);
+      } else {
+        ASSERT_NE(r.status, Status::Ok);  // NoAdmissibleVelocity or GoalReached: both brake
+        ++stuck;
+        const Twist b = braking_command(limits, state.twist, dt);
+        ASSERT_EQ(r.command.v, b.v);
+        ASSERT_EQ(r.command.omega, b.omega);
+      }
+    }
+  }
+  EXPECT_GT(ok, 200);
+}
+
+// The pose `steps` steps into a constant-command rollout, on its own arc: the
+// discrete model's poses all lie on the circle of radius v dt / (2 sin(omega dt / 2))
+// through the start, whose tangent there is theta + omega dt / 2.
+Pose2 along_rollout_arc(const Pose2& start, const Twist& cmd, double dt, double steps) {
+  const double a = start.theta, b = cmd.omega * dt, chord = cmd.v * dt;
+  if (b == 0.0) return Pose2{start.x + steps * chord * std::cos(a), start.y + steps * chord * std::sin(a), a};
+  const std::complex<double> centre =
+      std::complex<double>(start.x, start.y) + std::polar(chord / (2 * std::sin(b / 2)), a + b / 2 + M_PI / 2);
+  const std::complex<double> p = centre + std::polar(chord / (2 * std::sin(b / 2)), a + b / 2 - M_PI / 2 + steps * b);
+  return Pose2{p.real(), p.imag(), a + steps * b};
+}
+
+// Brakes along the rollout's own arc over the stopping distance of the
+// planner's braking model (one period at the command, then the window's
+// deceleration), checking every `h` metres; returns the smallest clearance seen.
+// The arc is the discrete model's: the continuous unicycle arc from the same
+// pose starts tangent to theta rather than theta + omega dt / 2 and drifts up
+// to s |omega| dt / 2 away from it after s metres (about 2 cm at 0.5 m here),
+// which is the model's error, not the planner's.
+double braking_clearance(const ClearanceSource& world, const Footprint& fp, const Pose2& start, const Twist& cmd,
+                         const RobotLimits& limits, double dt, double h, double& travelled) {
+  travelled = stopping_distance(cmd.v, std::min(limits.acc_v, limits.braking_v()), dt);
+  double worst = kInf;
+  const double step_length = cmd.v * dt;
+  if (step_length <= 0.0) return world.clearance(fp, start, 0.0);
+  for (double s = h; s < travelled + h; s += h) {
+    const double along = std::min(s, travelled);
+    worst = std::min(worst, world.clearance(fp, along_rollout_arc(start, cmd, dt, along / step_length), 0.0));
+  }
+  return worst;
+}
+
+// Every admissible sample that meets an obstacle within the horizon can stop
+// before it: Eq. 3's v^2 / (2 brake_v) and omega^2 / (2 brake_omega) fit in its
+// free distance, and braking along its own arc over the stopping distance of
+// the default (stepped) braking model touches nothing, between poses included.
+void check_admissible_samples_can_stop(const RobotLimits& limits, const Footprint& fp, bool use_fcl, unsigned seeds,
+                                       int states, const WindowParams& window, double h) {
+  PlannerParams params;
+  params.window = window;
+  LocalPlanner planner(limits, fp, params);
+  const double dt = params.dt;
+  int finite = 0, rejected = 0;
+  for (unsigned seed = 1; seed <= seeds; ++seed) {
+    std::mt19937 rng(100 + seed);
+    const Vec2 start(0.0, 0.0);
+    const World world = random_world(rng, start, 0.2);
+    const CollisionWorld exact(world.grid);
+    const ClearanceSource& source = use_fcl ? static_cast<const ClearanceSource&>(exact) : *world.fast;
+    for (int trial = 0; trial < states; ++trial) {
+      const RobotState state = random_state(rng, limits, start);
+      const PlanResult& r = planner.plan(state, random_goal(rng), source);
+      for (std::size_t i = 0; i < r.samples.size(); ++i) {
+        const Twist& cmd = r.samples[i];
+        const double free = r.free_distance[i];
+        SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial << " sample " << cmd.v << ", "
+                                          << cmd.omega << " free " << free);
+        if (r.reasons[i] != RejectReason::None) {
+          ++rejected;
+          ASSERT_TRUE(std::isfinite(free));
+          // The default braking model: one period at the command, then stepped braking.
+          const double stop = stopping_distance(cmd.v, std::min(limits.acc_v, limits.braking_v()), dt);
+          ASSERT_TRUE(stop > free || std::abs(cmd.omega) > std::sqrt(2 * free * limits.braking_omega()));
+          continue;
+        }
+        if (std::isinf(free)) continue;
+        ++finite;
+        ASSERT_LE(cmd.v * cmd.v / (2 * limits.braking_v()), free + 1e-12);
+        ASSERT_LE(cmd.omega * cmd.omega / (2 * limits.braking_omega()), free + 1e-12);
+        const Trajectory& poses = planner.rollouts()[i];
+        for (int k = 1; k <= 3; ++k) {
+          ASSERT_LT((along_rollout_arc(state.pose, cmd, dt, k).position() - poses[k - 1].position()).norm(), 1e-9);
+        }
+        double travelled = 0.0;
+        const double c = braking_clearance(source, fp, state.pose, cmd, limits, dt, h, travelled);
+        ASSERT_LE(travelled, free + 1e-9);
+        ASSERT_GT(c, 0.0) << "collides while braking after " << travelled << " m";
+      }
+      ASSERT_TRUE(inside_window(r.command, limits, state.twist, dt));
+    }
+  }
+  EXPECT_GT(finite, 100);
+  EXPECT_GT(rejected, 100);
+}
+
+TEST(LocalPlanner, AdmissibleSamplesStopBeforeContactFieldCircle) {
+  check_admissible_samples_can_stop(RobotLimits{}, Footprint::circle(0.25), false, 25, 8, WindowParams{}, 0.002);
+}
+
+TEST(LocalPlanner, AdmissibleSamplesStopBeforeContactFieldPolygon) {
+  RobotLimits limits;
+  limits.v_max = 0.8;
+  limits.acc_v = 0.6;
+  limits.brake_v = 0.5;
+  limits.acc_omega = 1.5;
+  const Footprint fp = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
+  check_admissible_samples_can_stop(limits, fp, false, 10, 5, WindowParams{11, 11}, 0.005);
+}
+
+TEST(LocalPlanner, AdmissibleSamplesStopBeforeContactFcl) {
+  check_admissible_samples_can_stop(RobotLimits{}, Footprint::circle(0.25), true, 4, 3, WindowParams{7, 7}, 0.01);
+}
+
+// Fast, straight at a wall 0.25 m beyond the footprint: no command in the
+// window can stop in time.
+TEST(LocalPlanner, BoxedInReportsNoAdmissibleVelocityAndBrakes) {
+  std::vector<std::uint8_t> cells(40 * 40, 0);
+  for (int row = 0; row < 40; ++row)
+    for (int col = 15; col < 20; ++col) cells[static_cast<std::size_t>(row) * 40 + col] = 1;  // x in [0.5, 1.0)
+  const OccupancyGrid grid(40, 40, 0.1, Vec2(-1.0, -2.0), cells);
+  const FieldClearance fast(std::make_shared<const DistanceField>(grid));
+  const CollisionWorld exact(grid);
+  const RobotLimits limits;
+  LocalPlanner planner(limits, Footprint::circle(0.25));
+  const RobotState state{Pose2{0.0, 0.0, 0.0}, Twist{1.2, 0.0}};
+  for (const ClearanceSource* world : {static_cast<const ClearanceSource*>(&fast), static_cast<const ClearanceSource*>(&exact)}) {
+    const PlanResult& r = planner.plan(state, Vec2(3.0, 0.0), *world);
+    EXPECT_EQ(r.status, Status::NoAdmissibleVelocity);
+    EXPECT_EQ(r.best_index, -1);
+    EXPECT_EQ(r.admissible_count(), 0);
+    EXPECT_EQ(r.reject_counts[static_cast<std::size_t>(RejectReason::Collision)], static_cast<int>(r.samples.size()));
+    const Twist b = braking_command(limits, state.twist, planner.params().dt);
+    EXPECT_EQ(r.command.v, b.v);
+    EXPECT_EQ(r.command.omega, b.omega);
+    EXPECT_NEAR(r.command.v, 1.2 - 0.15, 1e-12);
+    EXPECT_EQ(r.command.omega, 0.0);
+    for (Eigen::Index i = 0; i < r.total.size(); ++i) EXPECT_EQ(r.total(i), -kInf);
+    EXPECT_EQ(r.raw.cwiseAbs().maxCoeff(), 0.0);
+  }
+  // From rest the same wall is no trouble.
+  const PlanResult& calm = planner.plan(RobotState{Pose2{0.0, 0.0, 0.0}, Twist{}}, Vec2(3.0, 0.0), fast);
+  EXPECT_EQ(calm.status, Status::Ok);
+}
+
+TEST(LocalPlanner, GoalReachedWithinTolerance) {
+  const RobotLimits limits;
+  PlannerParams params;
+  params.goal_tolerance = 0.3;
+  LocalPlanner planner(limits, Footprint::circle(0.25), params);
+  const FieldClearance empty;
+  const RobotState state{Pose2{1.0, 1.0, 0.0}, Twist{0.5, 0.4}};
+  const PlanResult& r = planner.plan(state, Vec2(1.2, 1.2), empty);  // 0.28 m away
+  EXPECT_EQ(r.status, Status::GoalReached);
+  const Twist b = braking_command(limits, state.twist, params.dt);
+  EXPECT_EQ(r.command.v, b.v);
+  EXPECT_EQ(r.command.omega, b.omega);
+  EXPECT_EQ(planner.plan(state, Vec2(1.3, 1.2), empty).status, Status::Ok);  // 0.36 m away
+  // Reaching the goal after a normal cycle leaves no stale per-sample diagnostics.
+  const PlanResult& again = planner.plan(state, Vec2(1.2, 1.2), empty);
+  EXPECT_EQ(again.status, Status::GoalReached);
+  EXPECT_EQ(again.best_index, -1);
+  EXPECT_TRUE(again.samples.empty());
+  EXPECT_TRUE(planner.rollouts().empty());
+  EXPECT_EQ(again.raw.rows(), 0);
+  EXPECT_EQ(again.normalized.rows(), 0);
+  EXPECT_EQ(again.total.size(), 0);
+  EXPECT_TRUE(again.reasons.empty());
+  EXPECT_TRUE(again.min_clearance.empty());
+  EXPECT_TRUE(again.free_distance.empty());
+  EXPECT_EQ(again.admissible_count(), 0);
+}
+
+TEST(LocalPlanner, DiagnosticsHaveOneRowPerSampleAndOneColumnPerCritic) {
+  std::mt19937 rng(3);
+  const World world = random_world(rng, Vec2::Zero(), 0.25);
+  PlannerParams params;
+  params.window = WindowParams{9, 13};
+  params.critics = {{"heading", 0.5, {}}, {"clearance", 0.15, {{"cap", 1.5}}}, {"velocity", 1.0, {}}};
+  const RobotLimits limits;
+  LocalPlanner planner(limits, Footprint::circle(0.25), params);
+  int checked = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const RobotState state = random_state(rng, limits, Vec2::Zero());
+    const PlanResult& r = planner.plan(state, random_goal(rng), *world.fast);
+    if (r.status == Status::GoalReached) continue;
+    const Eigen::Index n = 9 * 13, m = 3;
+    ASSERT_EQ(static_cast<Eigen::Index>(r.samples.size()), n);
+    ASSERT_EQ(r.raw.rows(), n);
+    ASSERT_EQ(r.raw.cols(), m);
+    ASSERT_EQ(r.normalized.rows(), n);
+    ASSERT_EQ(r.normalized.cols(), m);
+    ASSERT_EQ(r.total.size(), n);
+    ASSERT_EQ(static_cast<Eigen::Index>(r.reasons.size()), n);
+    ASSERT_EQ(static_cast<Eigen::Index>(r.min_clearance.size()), n);
+    ASSERT_EQ(static_cast<Eigen::Index>(r.free_distance.size()), n);
+    ASSERT_EQ(static_cast<Eigen::Index>(planner.rollouts().size()), n);
+    for (const Trajectory& t : planner.rollouts()) ASSERT_EQ(t.size(), 20u);
+    ASSERT_EQ(r.critic_names, (std::vector<std::string>{"heading", "clearance", "velocity"}));
+    ASSERT_EQ(r.weights, (std::vector<double>{0.5, 0.15, 1.0}));
+    ASSERT_EQ(r.reject_counts[0] + r.reject_counts[1], n);
+    double best = -kInf;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const bool rejected = r.reasons[static_cast<std::size_t>(i)] != RejectReason::None;
+      if (rejected) {
+        ASSERT_EQ(r.total(i), -kInf);
+        ASSERT_EQ(r.raw.row(i).cwiseAbs().maxCoeff(), 0.0);
+        ASSERT_EQ(r.normalized.row(i).cwiseAbs().maxCoeff(), 0.0);
+        continue;
+      }
+      ASSERT_NEAR(r.total(i), 0.5 * r.normalized(i, 0) + 0.15 * r.normalized(i, 1) + 1.0 * r.normalized(i, 2), 1e-12);
+      ASSERT_LE(r.raw(i, 1), 1.5);  // the cap from the critic's parameters
+      ASSERT_EQ(r.raw(i, 2), r.samples[static_cast<std::size_t>(i)].v);
+      best = std::max(best, r.total(i));
+    }
+    if (r.status == Status::Ok) {
+      ASSERT_EQ(r.total(r.best_index), best);
+      // Ties go to the first sample.
+      for (Eigen::Index i = 0; i < r.best_index; ++i) ASSERT_LT(r.total(i), best);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
+void check_normalization(Normalization mode) {
+  std::mt19937 rng(11);
+  PlannerParams params;
+  params.normalization = mode;
+  const RobotLimits limits;
+  LocalPlanner planner(limits, Footprint::circle(0.25), params);
+  int columns = 0;
+  for (unsigned seed = 0; seed < 10; ++seed) {
+    const World world = random_world(rng, Vec2::Zero(), 0.25);
+    for (int trial = 0; trial < 5; ++trial) {
+      const PlanResult& r = planner.plan(random_state(rng, limits, Vec2::Zero()), random_goal(rng), *world.fast);
+      if (r.admissible_count() == 0) continue;
+      for (Eigen::Index j = 0; j < r.raw.cols(); ++j) {
+        double raw_sum = 0.0, sum = 0.0, lo = kInf, hi = -kInf, raw_lo = kInf, raw_hi = -kInf;
+        for (Eigen::Index i = 0; i < r.raw.rows(); ++i) {
+          if (r.reasons[static_cast<std::size_t>(i)] != RejectReason::None) continue;
+          raw_sum += r.raw(i, j);
+          sum += r.normalized(i, j);
+          lo = std::min(lo, r.normalized(i, j));
+          hi = std::max(hi, r.normalized(i, j));
+          raw_lo = std::min(raw_lo, r.raw(i, j));
+          raw_hi = std::max(raw_hi, r.raw(i, j));
+        }
+        if (mode == Normalization::Sum) {
+          if (raw_sum != 0.0) {
+            ASSERT_NEAR(sum, 1.0, 1e-12) << r.critic_names[static_cast<std::size_t>(j)];
+            ++columns;
+          } else {
+            ASSERT_EQ(hi, 0.0);
+            ASSERT_EQ(lo, 0.0);
+          }
+        } else {
+          ASSERT_GE(lo, 0.0);
+          ASSERT_LE(hi, 1.0);
+          if (raw_hi > raw_lo) {
+            ASSERT_EQ(lo, 0.0);
+            ASSERT_NEAR(hi, 1.0, 1e-12);
+            ++columns;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(columns, 50);
+}
+
+TEST(LocalPlanner, SumNormalizationMakesEachColumnSumToOne) { check_normalization(Normalization::Sum); }
+TEST(LocalPlanner, MinMaxNormalizationMapsEachColumnOntoZeroOne) { check_normalization(Normalization::MinMax); }
+
+TEST(LocalPlanner, SetWeightChangesTheChoice) {
+  const RobotLimits limits;
+  LocalPlanner planner(limits, Footprint::circle(0.25));
+  const FieldClearance empty;
+  // Moving along +x with the goal to the left: speed and heading pull apart.
+  const RobotState state{Pose2{0.0, 0.0, 0.0}, Twist{0.6, 0.0}};
+  const Vec2 goal(0.0, 5.0);
+  planner.set_weight("heading", 0.0);
+  planner.set_weight("clearance", 0.0);
+  planner.set_weight("velocity", 1.0);
+  const Twist fast = planner.plan(state, goal, empty).command;
+  EXPECT_NEAR(fast.v, 0.75, 1e-12);  // the top of the window
+  planner.set_weight("heading", 1.0);
+  planner.set_weight("velocity", 0.0);
+  EXPECT_EQ(planner.weight("heading"), 1.0);
+  const Twist turn = planner.plan(state, goal, empty).command;
+  EXPECT_NEAR(turn.omega, 0.3, 1e-12);  // the hardest left turn the window allows
+  EXPECT_GT(std::abs(turn.omega - fast.omega) + std::abs(turn.v - fast.v), 0.1);
+  expect_error_naming([&] { planner.set_weight("similarity", 1.0); }, "similarity");
+  expect_error_naming([&] { planner.set_weight("heading", std::nan("")); }, "heading");
+}
+
+TEST(LocalPlanner, RejectsNonFiniteInput) {
+  LocalPlanner planner(RobotLimits{}, Footprint::circle(0.25));
+  const FieldClearance empty;
+  RobotState state;
+  state.twist.v = std::nan("");
+  expect_error_naming([&] { planner.plan(state, Vec2(1, 1), empty); }, "state v");
+  expect_error_naming([&] { planner.plan(RobotState{}, Vec2(kInf, 1), empty); }, "goal x");
+}
+
+// In open space nothing is rejected and every rollout is free for good.
+TEST(LocalPlanner, OpenSpaceAdmitsEverySample) {
+  LocalPlanner planner(RobotLimits{}, Footprint::circle(0.25));
+  const PlanResult& r = planner.plan(RobotState{Pose2{}, Twist{0.5, 0.2}}, Vec2(4.0, 1.0), FieldClearance());
+  EXPECT_EQ(r.status, Status::Ok);
+  EXPECT_EQ(r.admissible_count(), 21 * 21);
+  for (double d : r.free_distance) EXPECT_TRUE(std::isinf(d));
+  for (double c : r.min_clearance) EXPECT_TRUE(std::isinf(c));
+}
+
+}  // namespace
+}  // namespace fgdwa
