@@ -53,6 +53,10 @@ void init_clearance(py::module_& m) {
            py::arg("field") = nullptr, py::arg("discs") = std::vector<Disc>{})
       .def_property("discs", &FieldClearance::discs, &FieldClearance::set_discs)
       .def_property_readonly("field", [](const FieldClearance& f) { return std::const_pointer_cast<DistanceField>(f.field()); })
+      .def_property(
+          "sensed", [](const FieldClearance& f) { return std::const_pointer_cast<DistanceField>(f.sensed()); },
+          [](FieldClearance& f, std::shared_ptr<const DistanceField> sensed) { f.set_sensed(std::move(sensed)); },
+          "Obstacles seen by the lidar but missing from the map, as a DistanceField (see points_field), or None.")
       .def("__repr__", [](const FieldClearance& f) {
         return "FieldClearance(field=" + std::string(f.field() ? "yes" : "None") +
                ", discs=" + std::to_string(f.discs().size()) + ")";

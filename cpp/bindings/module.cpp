@@ -13,6 +13,7 @@ void init_window(py::module_& m);
 void init_critics(py::module_& m);
 void init_path(py::module_& m);
 void init_dtw(py::module_& m);
+void init_perception(py::module_& m);
 void init_global_planner(py::module_& m);
 void init_planner(py::module_& m);
 
@@ -28,6 +29,7 @@ PYBIND11_MODULE(_core, m) {
   init_critics(m);
   init_path(m);
   init_dtw(m);
+  init_perception(m);
   init_global_planner(m);
   init_planner(m);
 }

@@ -26,15 +26,15 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
   discs_ = std::move(discs);
 }
 
-double FieldClearance::static_clearance(const Footprint& footprint, const Pose2& pose) const {
+namespace {
+double field_clearance(const DistanceField* field, const Footprint& footprint, const Pose2& pose) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  if (!field_ || !field_->has_obstacles()) return kInf;
-  const double centre = field_->distance(pose.position());
+  if (!field || !field->has_obstacles()) return kInf;
+  const double centre = field->distance(pose.position());
   if (footprint.is_circle()) return centre - footprint.radius();
 
-  // Polygon: far from obstacles the circumscribed circle already bounds the
-  // answer from below; nearer, walk the perimeter at half-cell spacing.
-  const double res = field_->grid().resolution();
+  // Polygon: the distance from its outline, walked at half-cell spacing.
+  const double res = field->grid().resolution();
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   const auto world = [&](const Vec2& q) { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); };
   const auto& vertices = footprint.vertices();
@@ -42,11 +42,11 @@ double FieldClearance::static_clearance(const Footprint& footprint, const Pose2&
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     const Vec2 a = vertices[i], b = vertices[(i + 1) % vertices.size()];
     const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * res))));
-    for (int k = 0; k < pieces; ++k) best = std::min(best, field_->distance(world(a + (b - a) * (double(k) / pieces))));
+    for (int k = 0; k < pieces; ++k) best = std::min(best, field->distance(world(a + (b - a) * (double(k) / pieces))));
   }
   if (best <= 0.0 || centre >= footprint.radius()) return best;
   // An obstacle cell can sit wholly inside a footprint wider than a cell.
-  const OccupancyGrid& grid = field_->grid();
+  const OccupancyGrid& grid = field->grid();
   const double r = footprint.radius();
   int r0, c0, r1, c1;
   const Vec2 lo = pose.position() - Vec2(r, r), hi = pose.position() + Vec2(r, r);
@@ -60,8 +60,11 @@ double FieldClearance::static_clearance(const Footprint& footprint, const Pose2&
   return best;
 }
 
+}  // namespace
+
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
-  double best = static_clearance(footprint, pose);
+  double best = field_clearance(field_.get(), footprint, pose);
+  if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose));
   for (const Disc& disc : discs_)
     best = std::min(best, footprint.signed_distance(pose, disc.center_at(t)) - disc.radius);
   return best;

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LocalPlanner', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'points_field', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -279,6 +279,14 @@ class FieldClearance(ClearanceSource):
     @property
     def field(self) -> DistanceField:
         ...
+    @property
+    def sensed(self) -> DistanceField:
+        """
+        Obstacles seen by the lidar but missing from the map, as a DistanceField (see points_field), or None.
+        """
+    @sensed.setter
+    def sensed(self, arg1: DistanceField) -> None:
+        ...
 class CollisionWorld(ClearanceSource):
     """
     The exact world on FCL: the grid's occupied cells merged into boxes, plus moving discs. The simulator's ground truth.
@@ -392,6 +400,106 @@ class GlobalPath:
         ...
     @property
     def segment_count(self) -> int:
+        ...
+class LidarParams:
+    """
+    A planar lidar: field of view (deg), beams, max range (m), range noise (m).
+    """
+    def __init__(self, fov_deg: typing.SupportsFloat | typing.SupportsIndex = 270.0, beams: typing.SupportsInt | typing.SupportsIndex = 541, max_range: typing.SupportsFloat | typing.SupportsIndex = 10.0, noise_std: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def angles(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Beam angles relative to the heading, rad.
+        """
+    @property
+    def beams(self) -> int:
+        ...
+    @property
+    def fov_deg(self) -> float:
+        ...
+    @property
+    def max_range(self) -> float:
+        ...
+    @property
+    def noise_std(self) -> float:
+        ...
+class Scan:
+    """
+    One lidar scan: ranges (m, +inf for no hit) of beams from angle_min by angle_increment.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def angle_increment(self) -> float:
+        ...
+    @property
+    def angle_min(self) -> float:
+        ...
+    @property
+    def angles(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Beam angles relative to the heading, rad.
+        """
+    @property
+    def hit_points(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def max_range(self) -> float:
+        ...
+    @property
+    def pose(self) -> Pose2:
+        ...
+    @property
+    def ranges(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+class LaserScanner:
+    """
+    Ray casting against the true world's distance field and moving discs, with seeded noise.
+    """
+    def __init__(self, params: LidarParams, world: DistanceField) -> None:
+        ...
+    def scan(self, pose: typing.Any, discs: collections.abc.Sequence[Disc] = [], t: typing.SupportsFloat | typing.SupportsIndex = 0.0, seed: typing.SupportsInt | typing.SupportsIndex = 0) -> Scan:
+        """
+        One scan at pose; discs placed t seconds ahead; noise drawn from a generator seeded with seed.
+        """
+    @property
+    def params(self) -> LidarParams:
+        ...
+class DetectWindowParams:
+    """
+    The detect window: +-half_angle_deg about the heading, radius R (m), base c of Eq. 13.
+    """
+    def __init__(self, half_angle_deg: typing.SupportsFloat | typing.SupportsIndex = 60.0, radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, base: typing.SupportsFloat | typing.SupportsIndex = 0.5) -> None:
+        ...
+    @property
+    def base(self) -> float:
+        ...
+    @property
+    def half_angle_deg(self) -> float:
+        ...
+    @property
+    def radius(self) -> float:
+        ...
+class DensityReading:
+    """
+    Obstacle density I of the detect window and its parts.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def area_ratio(self) -> float:
+        ...
+    @property
+    def beams(self) -> int:
+        ...
+    @property
+    def density(self) -> float:
+        ...
+    @property
+    def max_gap(self) -> float:
         ...
 class GlobalStatus:
     """
@@ -759,6 +867,14 @@ def dynamic_window(limits: RobotLimits, current: typing.Any, dt: typing.Supports
 def inflate(grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing.SupportsIndex, terrain: TerrainGrid = None) -> numpy.typing.NDArray[numpy.uint8]:
     """
     (rows, cols) uint8, 1 where a robot of that radius cannot centre: obstacles, cells nearer than the radius to one, and grade-4 terrain.
+    """
+def obstacle_density(scan: Scan, window: DetectWindowParams = ...) -> DensityReading:
+    """
+    Eq. 13: I = S_d / S_w + c^max_gap over the detect window, clamped to [0, 2].
+    """
+def points_field(points: typing.Any, resolution: typing.SupportsFloat | typing.SupportsIndex) -> DistanceField:
+    """
+    A DistanceField of scattered obstacle points on a grid just covering them (None for no point).
     """
 def reference_samples(path: ..., robot: typing.Any, v_ref: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex, n: typing.SupportsInt | typing.SupportsIndex, sampling: str = 'polyline') -> numpy.typing.NDArray[numpy.float64]:
     """

@@ -35,12 +35,16 @@ class FieldClearance : public ClearanceSource {
   void set_discs(std::vector<Disc> discs);
   const std::vector<Disc>& discs() const { return discs_; }
   const std::shared_ptr<const DistanceField>& field() const { return field_; }
+  // Obstacles seen by the lidar but missing from the map (perception.hpp's
+  // points_field); null for none.
+  void set_sensed(std::shared_ptr<const DistanceField> sensed) { sensed_ = std::move(sensed); }
+  const std::shared_ptr<const DistanceField>& sensed() const { return sensed_; }
 
   double clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
 
  private:
-  double static_clearance(const Footprint& footprint, const Pose2& pose) const;
   std::shared_ptr<const DistanceField> field_;
+  std::shared_ptr<const DistanceField> sensed_;
   std::vector<Disc> discs_;
 };
 

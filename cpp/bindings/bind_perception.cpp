@@ -1,0 +1,102 @@
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "convert.hpp"
+#include "fgdwa/perception.hpp"
+
+namespace py = pybind11;
+using namespace fgdwa;
+using namespace fgdwa::py_convert;
+
+void init_perception(py::module_& m) {
+  py::class_<LidarParams>(m, "LidarParams", "A planar lidar: field of view (deg), beams, max range (m), range noise (m).")
+      .def(py::init([](double fov_deg, int beams, double max_range, double noise_std) {
+             LidarParams p{fov_deg * M_PI / 180.0, beams, max_range, noise_std};
+             p.validate();
+             return p;
+           }),
+           py::arg("fov_deg") = 270.0, py::arg("beams") = 541, py::arg("max_range") = 10.0, py::arg("noise_std") = 0.0)
+      .def_property_readonly("fov_deg", [](const LidarParams& p) { return p.fov * 180.0 / M_PI; })
+      .def_readonly("beams", &LidarParams::beams)
+      .def_readonly("max_range", &LidarParams::max_range)
+      .def_readonly("noise_std", &LidarParams::noise_std)
+      .def_property_readonly("angles", [](const LidarParams& p) {
+        py::array_t<double> out(p.beams);
+        for (int i = 0; i < p.beams; ++i) out.mutable_data()[i] = p.angle(i);
+        return out;
+      }, "Beam angles relative to the heading, rad.")
+      .def("__repr__", [](const LidarParams& p) {
+        std::ostringstream s;
+        s << "LidarParams(fov_deg=" << p.fov * 180.0 / M_PI << ", beams=" << p.beams << ", max_range=" << p.max_range
+          << ", noise_std=" << p.noise_std << ")";
+        return s.str();
+      });
+
+  py::class_<Scan>(m, "Scan", "One lidar scan: ranges (m, +inf for no hit) of beams from angle_min by angle_increment.")
+      .def_readonly("pose", &Scan::pose)
+      .def_readonly("angle_min", &Scan::angle_min)
+      .def_readonly("angle_increment", &Scan::angle_increment)
+      .def_readonly("max_range", &Scan::max_range)
+      .def_property_readonly("ranges", [](const Scan& s) { return py::array_t<double>(s.ranges.size(), s.ranges.data()); })
+      .def_property_readonly("angles", [](const Scan& s) {
+        py::array_t<double> out(s.ranges.size());
+        for (std::size_t i = 0; i < s.ranges.size(); ++i) out.mutable_data()[i] = s.angle_min + i * s.angle_increment;
+        return out;
+      }, "Beam angles relative to the heading, rad.")
+      .def_property_readonly("hit_points", [](const Scan& s) { return points_array(s.hit_points()); })
+      .def("__repr__", [](const Scan& s) {
+        std::size_t hits = 0;
+        for (double r : s.ranges) hits += std::isfinite(r);
+        return "Scan(" + std::to_string(s.ranges.size()) + " beams, " + std::to_string(hits) + " hits)";
+      });
+
+  py::class_<LaserScanner>(m, "LaserScanner",
+                           "Ray casting against the true world's distance field and moving discs, with seeded noise.")
+      .def(py::init<const LidarParams&, std::shared_ptr<const DistanceField>>(), py::arg("params"), py::arg("world"))
+      .def_property_readonly("params", &LaserScanner::params)
+      .def(
+          "scan",
+          [](const LaserScanner& s, py::handle pose, std::vector<Disc> discs, double t, std::uint64_t seed) {
+            std::mt19937_64 rng(seed);
+            Scan out;
+            s.scan(to_pose(pose, "pose"), discs, t, rng, out);
+            return out;
+          },
+          py::arg("pose"), py::arg("discs") = std::vector<Disc>{}, py::arg("t") = 0.0, py::arg("seed") = 0,
+          "One scan at pose; discs placed t seconds ahead; noise drawn from a generator seeded with seed.");
+
+  py::class_<DetectWindowParams>(m, "DetectWindowParams", "The detect window: +-half_angle_deg about the heading, radius R (m), base c of Eq. 13.")
+      .def(py::init([](double half_angle_deg, double radius, double base) {
+             DetectWindowParams p{half_angle_deg * M_PI / 180.0, radius, base};
+             p.validate();
+             return p;
+           }),
+           py::arg("half_angle_deg") = 60.0, py::arg("radius") = 2.0, py::arg("base") = 0.5)
+      .def_property_readonly("half_angle_deg", [](const DetectWindowParams& p) { return p.half_angle * 180.0 / M_PI; })
+      .def_readonly("radius", &DetectWindowParams::radius)
+      .def_readonly("base", &DetectWindowParams::base);
+
+  py::class_<DensityReading>(m, "DensityReading", "Obstacle density I of the detect window and its parts.")
+      .def_readonly("density", &DensityReading::density)
+      .def_readonly("area_ratio", &DensityReading::area_ratio)
+      .def_readonly("max_gap", &DensityReading::max_gap)
+      .def_readonly("beams", &DensityReading::beams)
+      .def("__repr__", [](const DensityReading& r) {
+        std::ostringstream s;
+        s << "DensityReading(density=" << r.density << ", area_ratio=" << r.area_ratio << ", max_gap=" << r.max_gap
+          << ", beams=" << r.beams << ")";
+        return s.str();
+      });
+
+  m.def("obstacle_density", &obstacle_density, py::arg("scan"), py::arg("window") = DetectWindowParams{},
+        "Eq. 13: I = S_d / S_w + c^max_gap over the detect window, clamped to [0, 2].");
+  m.def(
+      "points_field",
+      [](py::handle points, double resolution) { return points_field(to_points(points, "points"), resolution); },
+      py::arg("points"), py::arg("resolution"),
+      "A DistanceField of scattered obstacle points on a grid just covering them (None for no point).");
+}

@@ -1,0 +1,76 @@
+#pragma once
+// What the robot senses (SPEC 6): a planar lidar ray-cast against the true
+// world, the detect window ahead of the robot and its obstacle density I (Eq. 13).
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "fgdwa/clearance.hpp"
+#include "fgdwa/grid.hpp"
+
+namespace fgdwa {
+
+struct LidarParams {
+  double fov = 4.71238898038469;  // rad, field of view centred on the heading (270 deg)
+  int beams = 541;                // beams, both ends of the field of view included
+  double max_range = 10.0;        // m; a beam with no hit within it reads +inf
+  double noise_std = 0.0;         // m, Gaussian noise added to each hit's range
+  void validate() const;
+  double increment() const { return beams > 1 ? fov / (beams - 1) : 0.0; }
+  // Beam i's angle relative to the heading, rad.
+  double angle(int i) const { return -0.5 * fov + i * increment(); }
+};
+
+struct Scan {
+  Pose2 pose;                  // where it was taken
+  double angle_min = 0.0;      // rad, first beam relative to the heading
+  double angle_increment = 0.0;
+  double max_range = 0.0;      // m
+  std::vector<double> ranges;  // m, +inf where nothing was hit within max_range
+  // World positions of the beams' hits.
+  std::vector<Vec2> hit_points() const;
+};
+
+// Casts rays against a static distance field (the true world's grid) and
+// moving discs. The field makes free space cheap: a ray jumps by the distance
+// to the nearest obstacle, then walks cell by cell once near one.
+class LaserScanner {
+ public:
+  LaserScanner(const LidarParams& params, std::shared_ptr<const DistanceField> world);
+  const LidarParams& params() const { return params_; }
+
+  // One scan at `pose`, the discs placed `t` seconds ahead; noise drawn from `rng`.
+  void scan(const Pose2& pose, const std::vector<Disc>& discs, double t, std::mt19937_64& rng, Scan& out) const;
+  // Range of one ray from `origin` along `angle` (world frame), no noise.
+  double cast(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const;
+
+ private:
+  double cast_grid(const Vec2& origin, const Vec2& direction) const;
+  LidarParams params_;
+  std::shared_ptr<const DistanceField> world_;
+};
+
+struct DetectWindowParams {
+  double half_angle = 1.0471975511965976;  // rad, the window spans +-60 deg about the heading
+  double radius = 2.0;                     // m, R
+  double base = 0.5;                       // c of Eq. 13
+  void validate() const;
+};
+
+struct DensityReading {
+  double density = 0.0;     // I = S_d / S_w + c^max_gap, clamped to [0, 2]
+  double area_ratio = 0.0;  // S_d / S_w: mean over window beams of 1 - (min(r, R) / R)^2
+  double max_gap = 0.0;     // m, chord 2 R sin(phi / 2) of the widest run of free beams
+  int beams = 0;            // beams inside the window
+};
+
+// Eq. 13 read as SPEC 6 fixes it: S_d / S_w is the share of the window's sector
+// area at or beyond the beams' hits; max_gap the chord of the widest angular run
+// phi of adjacent window beams with no hit within R (0 when there is none).
+DensityReading obstacle_density(const Scan& scan, const DetectWindowParams& params);
+
+// A distance field of scattered obstacle points (lidar hits the map does not
+// explain): their cells, at `resolution`, on a grid just covering them.
+std::shared_ptr<DistanceField> points_field(const std::vector<Vec2>& points, double resolution);
+
+}  // namespace fgdwa

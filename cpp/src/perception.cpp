@@ -1,0 +1,168 @@
+#include "fgdwa/perception.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "validation.hpp"
+
+namespace fgdwa {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+void LidarParams::validate() const {
+  detail::require_positive("lidar fov", fov);
+  if (fov > 2.0 * M_PI) throw Error(detail::describe("lidar fov", fov, "must be <= 2 pi"));
+  detail::require_at_least("lidar beams", beams, 1);
+  detail::require_positive("lidar max_range", max_range);
+  detail::require_non_negative("lidar noise_std", noise_std);
+}
+
+std::vector<Vec2> Scan::hit_points() const {
+  std::vector<Vec2> points;
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    if (!std::isfinite(ranges[i])) continue;
+    const double a = pose.theta + angle_min + static_cast<double>(i) * angle_increment;
+    points.emplace_back(pose.x + ranges[i] * std::cos(a), pose.y + ranges[i] * std::sin(a));
+  }
+  return points;
+}
+
+LaserScanner::LaserScanner(const LidarParams& params, std::shared_ptr<const DistanceField> world)
+    : params_(params), world_(std::move(world)) {
+  params_.validate();
+}
+
+double LaserScanner::cast_grid(const Vec2& origin, const Vec2& dir) const {
+  if (!world_ || !world_->has_obstacles()) return kInf;
+  const OccupancyGrid& grid = world_->grid();
+  const double res = grid.resolution();
+  const double range = params_.max_range;
+  double t = 0.0;
+  // Far from obstacles, jump by the clearance: nothing lies closer.
+  while (t < range) {
+    const double d = world_->distance(origin + t * dir);
+    if (d <= 0.0) return t;
+    if (d < res) break;
+    t += d;
+  }
+  if (t >= range) return kInf;
+  // Near one, walk the cells along the ray; the hit is where the ray enters an
+  // occupied cell.
+  const Vec2 p = (origin + t * dir - grid.origin()) / res;
+  int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
+  const int step_c = dir.x() > 0 ? 1 : -1, step_r = dir.y() > 0 ? 1 : -1;
+  const double delta_c = dir.x() != 0.0 ? std::abs(res / dir.x()) : kInf;
+  const double delta_r = dir.y() != 0.0 ? std::abs(res / dir.y()) : kInf;
+  double t_c = dir.x() != 0.0 ? t + (step_c > 0 ? col + 1 - p.x() : p.x() - col) * delta_c : kInf;
+  double t_r = dir.y() != 0.0 ? t + (step_r > 0 ? row + 1 - p.y() : p.y() - row) * delta_r : kInf;
+  if (grid.in_bounds(row, col) && grid.occupied(row, col)) return t;
+  while (true) {
+    double entry;
+    if (t_c < t_r) {
+      col += step_c;
+      entry = t_c;
+      t_c += delta_c;
+    } else {
+      row += step_r;
+      entry = t_r;
+      t_r += delta_r;
+    }
+    if (entry >= range) return kInf;
+    if (grid.in_bounds(row, col)) {
+      if (grid.occupied(row, col)) return entry;
+    } else if ((step_c > 0 ? col >= grid.cols() : col < 0) || (step_r > 0 ? row >= grid.rows() : row < 0)) {
+      return kInf;  // beyond the grid on a side the ray only moves away from
+    }
+  }
+}
+
+double LaserScanner::cast(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const {
+  const Vec2 dir(std::cos(angle), std::sin(angle));
+  double best = cast_grid(origin, dir);
+  for (const Disc& disc : discs) {
+    // |origin + s dir - c| = r, smallest s >= 0.
+    const Vec2 f = origin - disc.center_at(t);
+    const double b = f.dot(dir);
+    const double c = f.squaredNorm() - disc.radius * disc.radius;
+    if (c <= 0.0) return 0.0;  // the origin lies inside the disc
+    const double disc_sq = b * b - c;
+    if (disc_sq < 0.0 || b > 0.0) continue;
+    best = std::min(best, -b - std::sqrt(disc_sq));
+  }
+  return best <= params_.max_range ? best : kInf;
+}
+
+void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, double t, std::mt19937_64& rng,
+                        Scan& out) const {
+  out.pose = pose;
+  out.angle_min = -0.5 * params_.fov;
+  out.angle_increment = params_.increment();
+  out.max_range = params_.max_range;
+  out.ranges.resize(static_cast<std::size_t>(params_.beams));
+  std::normal_distribution<double> noise(0.0, params_.noise_std);
+  for (int i = 0; i < params_.beams; ++i) {
+    double r = cast(pose.position(), pose.theta + params_.angle(i), discs, t);
+    if (std::isfinite(r) && params_.noise_std > 0.0) r = std::clamp(r + noise(rng), 0.0, params_.max_range);
+    out.ranges[static_cast<std::size_t>(i)] = r;
+  }
+}
+
+void DetectWindowParams::validate() const {
+  detail::require_positive("detect window half_angle", half_angle);
+  if (half_angle > M_PI) throw Error(detail::describe("detect window half_angle", half_angle, "must be <= pi"));
+  detail::require_positive("detect window radius", radius);
+  detail::require_positive("detect window base", base);
+}
+
+DensityReading obstacle_density(const Scan& scan, const DetectWindowParams& params) {
+  params.validate();
+  DensityReading reading;
+  const double R = params.radius;
+  double area = 0.0;
+  int run = 0, widest = 0;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    const double angle = scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+    if (std::abs(angle) > params.half_angle + 1e-9) continue;
+    ++reading.beams;
+    const double r = std::min(scan.ranges[i], R);
+    area += 1.0 - (r / R) * (r / R);
+    if (r >= R) {
+      widest = std::max(widest, ++run);
+    } else {
+      run = 0;
+    }
+  }
+  if (reading.beams == 0) throw Error("detect window: no lidar beam lies within it");
+  reading.area_ratio = area / reading.beams;
+  // A run of k beams spans (k - 1) increments.
+  const double phi = widest > 1 ? (widest - 1) * scan.angle_increment : 0.0;
+  reading.max_gap = 2.0 * R * std::sin(0.5 * phi);
+  reading.density = std::clamp(reading.area_ratio + std::pow(params.base, reading.max_gap), 0.0, 2.0);
+  return reading;
+}
+
+std::shared_ptr<DistanceField> points_field(const std::vector<Vec2>& points, double resolution) {
+  detail::require_positive("resolution", resolution);
+  if (points.empty()) return nullptr;
+  Vec2 lo = points.front(), hi = points.front();
+  for (const Vec2& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  // Cells aligned to multiples of the resolution, so fields of successive scans agree.
+  const Vec2 origin(std::floor(lo.x() / resolution) * resolution, std::floor(lo.y() / resolution) * resolution);
+  const int cols = static_cast<int>(std::floor((hi.x() - origin.x()) / resolution)) + 1;
+  const int rows = static_cast<int>(std::floor((hi.y() - origin.y()) / resolution)) + 1;
+  std::vector<std::uint8_t> cells(static_cast<std::size_t>(rows) * cols, 0);
+  for (const Vec2& p : points) {
+    const int c = std::clamp(static_cast<int>(std::floor((p.x() - origin.x()) / resolution)), 0, cols - 1);
+    const int r = std::clamp(static_cast<int>(std::floor((p.y() - origin.y()) / resolution)), 0, rows - 1);
+    cells[static_cast<std::size_t>(r) * cols + c] = 1;
+  }
+  return std::make_shared<DistanceField>(OccupancyGrid(rows, cols, resolution, origin, std::move(cells)));
+}
+
+}  // namespace fgdwa
