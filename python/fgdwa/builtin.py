@@ -69,3 +69,26 @@ def c_trap_scenario() -> Scenario:
         goal=(12.5, 5.0),
         description="A C-shaped obstacle group open toward the start, between start and goal.",
     )
+
+
+def hidden_obstacles_scenario() -> Scenario:
+    """An open room whose map misses two blocks lying on the straight path.
+
+    The global path runs straight through where the blocks stand; only the lidar
+    shows them, so a planner that does not sense collides, and one that does
+    must leave the path to get round them."""
+    resolution = 0.1
+    cells = np.zeros((60, 140), dtype=np.uint8)
+    cells[0, :] = cells[-1, :] = 1
+    cells[:, 0] = cells[:, -1] = 1
+    hidden = np.zeros_like(cells)
+    _fill(hidden, resolution, 5.0, 2.4, 5.6, 3.6)
+    _fill(hidden, resolution, 9.0, 2.7, 9.4, 4.2)
+    grid = OccupancyGrid(cells, resolution, (0.0, 0.0))
+    return Scenario(
+        name="hidden_obstacles",
+        world=World(grid=grid, hidden=OccupancyGrid(hidden, resolution, (0.0, 0.0))),
+        start=(1.0, 3.0, 0.0),
+        goal=(13.0, 3.0),
+        description="Two blocks on the straight path that the map does not show.",
+    )

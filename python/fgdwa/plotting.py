@@ -16,10 +16,14 @@ from fgdwa.sim import EpisodeResult, World  # noqa: E402
 
 
 def draw_world(ax, world: World, t: float = 0.0) -> None:
-    """The grid in grey, discs as circles at time ``t``."""
+    """The map in grey, obstacles missing from it in orange, discs as circles at time ``t``."""
     if world.grid is not None:
         ax.imshow(world.grid.cells, cmap="Greys", vmin=0, vmax=1.6, origin="lower",
                   extent=world.grid.extent, interpolation="nearest")
+    if world.hidden is not None:
+        hidden = np.ma.masked_equal(world.hidden.cells, 0)
+        ax.imshow(hidden, cmap="Oranges", vmin=0, vmax=1.3, origin="lower", extent=world.hidden.extent,
+                  interpolation="nearest")
     for disc in world.discs:
         ax.add_patch(plt.Circle(disc.center_at(t), max(disc.radius, 0.05), color="0.25"))
 

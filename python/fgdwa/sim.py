@@ -15,6 +15,7 @@ import numpy as np
 
 from fgdwa._core import (
     CollisionWorld,
+    DetectWindowParams,
     Disc,
     DistanceField,
     FgdwaError,
@@ -22,6 +23,8 @@ from fgdwa._core import (
     Footprint,
     GlobalPath,
     GlobalStatus,
+    LaserScanner,
+    LidarParams,
     LocalPlanner,
     OccupancyGrid,
     PlannerParams,
@@ -29,6 +32,8 @@ from fgdwa._core import (
     RobotLimits,
     RobotState,
     Status,
+    obstacle_density,
+    points_field,
     step,
 )
 from fgdwa.global_planning import plan_global
@@ -39,14 +44,36 @@ GLOBAL_PATH_MARGIN = 0.3  # m kept beyond the footprint's radius by the global p
 
 @dataclass(frozen=True)
 class World:
-    """What exists: a static occupancy grid (optional) and moving discs."""
+    """What exists, and what of it the planners know.
+
+    ``grid`` is the map, known to the global and local planners. ``hidden``
+    (same cell layout) holds static obstacles missing from the map, and the
+    discs move; the planner sees both only through the lidar, except that
+    ``discs_known`` hands it the discs' true positions and velocities.
+    """
 
     grid: Optional[OccupancyGrid] = None
     discs: Sequence[Disc] = ()
+    hidden: Optional[OccupancyGrid] = None
+    discs_known: bool = True
+
+    def __post_init__(self):
+        if self.hidden is not None:
+            if self.grid is None:
+                raise FgdwaError("hidden obstacles need a map grid with the same cell layout")
+            if self.hidden.shape != self.grid.shape or self.hidden.resolution != self.grid.resolution \
+                    or self.hidden.origin != self.grid.origin:
+                raise FgdwaError(f"hidden: its layout {self.hidden!r} differs from the map's {self.grid!r}")
 
     def discs_at(self, t: float) -> list:
         """The discs moved ``t`` seconds ahead, velocities kept."""
         return [Disc(d.center_at(t), d.radius, d.velocity) for d in self.discs]
+
+    def true_grid(self) -> Optional[OccupancyGrid]:
+        """The map with the hidden obstacles added: what really stands there."""
+        if self.hidden is None:
+            return self.grid
+        return OccupancyGrid(self.grid.cells | self.hidden.cells, self.grid.resolution, self.grid.origin)
 
 
 @dataclass
@@ -70,6 +97,11 @@ class EpisodeResult:
     global_path: Optional[np.ndarray] = None  # (n, 2), when the planner followed one
     key_nodes: Optional[np.ndarray] = None  # (k, 2) key-node positions
     targets: Optional[np.ndarray] = None  # (steps, 2) the heading's target each cycle
+    density: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) I per cycle (nan unsensed)
+    deviation: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) D per cycle, m (nan without path)
+    beta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) clearance weight per cycle
+    delta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) similarity weight (nan without)
+    last_scan: Optional[object] = None  # the last cycle's Scan, when sensing
 
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
@@ -136,6 +168,10 @@ def run_episode(
     global_path=None,
     global_method: str = "astar",
     global_options: Optional[dict] = None,
+    lidar: Optional[LidarParams] = None,
+    window: Optional[DetectWindowParams] = None,
+    weight_policy=None,
+    seed: int = 0,
 ) -> EpisodeResult:
     """Drive from ``start`` (x, y, theta, at rest) to ``goal`` (x, y).
 
@@ -150,6 +186,14 @@ def run_episode(
     the map by ``plan_global(method=global_method, **global_options)``, with
     obstacles inflated by the footprint's radius plus GLOBAL_PATH_MARGIN (or the
     radius alone where the margin closes every way) unless the options say otherwise.
+
+    With ``lidar`` the robot scans the true world every cycle (noise drawn from
+    ``seed``): hits the map does not explain become obstacles for the local
+    planner, and the obstacle density I of the detect window (``window``) is
+    recorded with the path deviation D. A ``weight_policy`` (anything with
+    ``weights(I, D) -> (beta, delta)``, e.g. ``FuzzyWeightPolicy``) then sets the
+    clearance weight beta and, when the planner has one, the similarity weight
+    delta each cycle.
     """
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
@@ -162,12 +206,22 @@ def run_episode(
     if not np.isfinite(tolerance) or tolerance < 0:
         raise FgdwaError(f"goal_tolerance = {goal_tolerance!r}: must be >= 0")
 
-    truth = CollisionWorld(world.grid, list(world.discs))
+    if weight_policy is not None and lidar is None:
+        raise FgdwaError("weight_policy: the obstacle density it reads needs a lidar")
+    window = window if window is not None else DetectWindowParams()
+    true_grid = world.true_grid()
+    truth = CollisionWorld(true_grid, list(world.discs))
     if truth.in_collision(footprint, start_pose, 0.0):
         raise FgdwaError(f"start = {tuple(start_pose)}: the robot's footprint there overlaps an obstacle")
-    field_ = DistanceField(world.grid) if world.grid is not None else None
-    seen = FieldClearance(field_, list(world.discs))
+    map_field = DistanceField(world.grid) if world.grid is not None else None
+    seen = FieldClearance(map_field, list(world.discs) if world.discs_known else [])
+    scanner = None
+    if lidar is not None:
+        true_field = DistanceField(true_grid) if true_grid is not None else None
+        scanner = LaserScanner(lidar, true_field)
+    sensed_resolution = world.grid.resolution if world.grid is not None else 0.1
     planner = LocalPlanner(limits, footprint, params)
+    has_similarity = "similarity" in [c.name for c in params.critics]
     path = _global_path(world, start_pose, goal_point, footprint, params, global_path, global_method, global_options)
     if path is not None:
         planner.set_global_path(path)
@@ -180,19 +234,40 @@ def run_episode(
     statuses = []
     cycle_times = []
     targets = []
+    density, deviation, betas, deltas = [], [], [], []
     outcome = "timeout"
     last_plan = None
     last_rollouts = None
+    scan = None
     for k in range(max_steps):
         position = np.array([state.pose.x, state.pose.y])
         if np.hypot(*(position - goal_point)) <= tolerance:
             outcome = "success"
             break
         t = k * dt
-        seen.discs = world.discs_at(t)
         tic = time.perf_counter()
+        discs_now = world.discs_at(t)
+        if world.discs_known:
+            seen.discs = discs_now
+        reading_i = reading_d = np.nan
+        if scanner is not None:
+            scan = scanner.scan(state.pose, discs_now, 0.0, seed=int(seed) * 1_000_003 + k)
+            seen.sensed = points_field(_unexplained(scan.hit_points, map_field, seen.discs, sensed_resolution),
+                                       sensed_resolution)
+            reading_i = obstacle_density(scan, window).density
+        if path is not None:
+            reading_d = path.deviation(position)
+        if weight_policy is not None:
+            beta, delta = weight_policy.weights(reading_i, 0.0 if np.isnan(reading_d) else reading_d)
+            planner.set_weight("clearance", beta)
+            if has_similarity:
+                planner.set_weight("similarity", delta)
         plan = planner.plan(state, goal_point, seen)
         cycle_times.append(time.perf_counter() - tic)
+        density.append(reading_i)
+        deviation.append(reading_d)
+        betas.append(planner.weight("clearance") if "clearance" in plan.critic_names else np.nan)
+        deltas.append(planner.weight("similarity") if has_similarity else np.nan)
         last_plan = plan
         last_rollouts = planner.rollouts()
         statuses.append(plan.status.name)
@@ -233,7 +308,25 @@ def run_episode(
         global_path=None if path is None else path.points,
         key_nodes=None if path is None else path.points[planner.key_nodes],
         targets=np.array(targets, dtype=float).reshape(-1, 2),
+        density=np.array(density, dtype=float),
+        deviation=np.array(deviation, dtype=float),
+        beta=np.array(betas, dtype=float),
+        delta=np.array(deltas, dtype=float),
+        last_scan=scan,
     )
+
+
+def _unexplained(hits: np.ndarray, map_field: Optional[DistanceField], discs: Sequence[Disc],
+                 resolution: float) -> np.ndarray:
+    """The lidar hits that neither the map nor the known discs account for."""
+    if len(hits) == 0:
+        return hits
+    keep = np.ones(len(hits), dtype=bool)
+    if map_field is not None:
+        keep &= map_field.distance(hits) > 0.5 * resolution
+    for disc in discs:
+        keep &= np.hypot(*(hits - np.asarray(disc.center)).T) > disc.radius + 0.5 * resolution
+    return hits[keep]
 
 
 def _global_path(world: World, start, goal, footprint: Footprint, params: PlannerParams, given, method: str,

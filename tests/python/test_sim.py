@@ -66,3 +66,40 @@ def test_cli_demo_writes_the_figure(tmp_path, capsys):
     png = tmp_path / "demo.png"
     assert png.stat().st_size > 10_000
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_obstacles_missing_from_the_map_are_seen_by_the_lidar():
+    from fgdwa.builtin import hidden_obstacles_scenario
+
+    scenario = hidden_obstacles_scenario()
+    params = fgdwa.PlannerParams(heading_target="key_nodes")
+    blind = run_episode(scenario.world, scenario.start, scenario.goal, params=params, max_steps=300)
+    assert blind.outcome == "collision"
+    sensing = run_episode(scenario.world, scenario.start, scenario.goal, params=params, lidar=fgdwa.LidarParams(),
+                          max_steps=300)
+    assert sensing.outcome == "success"
+    assert sensing.min_clearance > 0.0
+    # The density of the detect window rises when the hidden blocks come into it.
+    assert sensing.density[0] == pytest.approx(0.5 ** (4 * np.sin(np.pi / 3)))
+    assert sensing.density.max() > 0.5
+    assert np.all(np.isfinite(sensing.deviation)) and sensing.deviation.max() > 0.3
+
+
+def test_hidden_layout_must_match_the_map():
+    grid = fgdwa.OccupancyGrid(np.zeros((10, 10), np.uint8), 0.1)
+    with pytest.raises(fgdwa.FgdwaError, match="hidden"):
+        World(grid=grid, hidden=fgdwa.OccupancyGrid(np.zeros((10, 12), np.uint8), 0.1))
+
+
+def test_weight_policy_needs_a_lidar():
+    scenario = demo_scenario()
+
+    class Constant:
+        def weights(self, density, deviation):
+            return 0.2, 0.0
+
+    with pytest.raises(fgdwa.FgdwaError, match="lidar"):
+        run_episode(scenario.world, scenario.start, scenario.goal, weight_policy=Constant())
+    result = run_episode(scenario.world, scenario.start, scenario.goal, weight_policy=Constant(),
+                         lidar=fgdwa.LidarParams(), max_steps=20)
+    assert np.all(result.beta == 0.2)
