@@ -34,6 +34,7 @@ struct Outcome {
   double path_length = 0.0;
   double min_clearance = std::numeric_limits<double>::infinity();
   int collisions = 0;
+  int first_contact = -1;  // cycle
 };
 
 Outcome drive(const PlannerParams& params) {
@@ -64,18 +65,19 @@ Outcome drive(const PlannerParams& params) {
     out.path_length += (next.position() - state.pose.position()).norm();
     state.pose = next;
     state.twist = result.command;
-    if (truth.in_collision(footprint, state.pose)) ++out.collisions;
+    if (truth.in_collision(footprint, state.pose) && out.collisions++ == 0) out.first_contact = out.cycles;
     out.min_clearance = std::min(out.min_clearance, truth.clearance(footprint, state.pose, 0.0));
   }
   return out;
 }
 
-PlannerParams example_params(double heading, double clearance, double velocity) {
+PlannerParams example_params(double heading, double clearance, double velocity,
+                             Normalization normalization = Normalization::Sum) {
   PlannerParams params;
   params.dt = 0.1;
   params.sim_time = 3.0;
   params.window = WindowParams{5, 21};
-  params.normalization = Normalization::Sum;
+  params.normalization = normalization;
   params.goal_tolerance = 1.0;
   params.critics = {{"heading", heading, {}}, {"clearance", clearance, {}}, {"velocity", velocity, {}}};
   return params;
@@ -110,6 +112,18 @@ TEST(PythonRoboticsExample, ExampleWeightsReachTheGoalAfterADetour) {
   EXPECT_GT(out.min_clearance, 0.0);
   RecordProperty("cycles", out.cycles);
   RecordProperty("path_length_m", std::to_string(out.path_length));
+}
+
+// Known failure, kept to show it: with min-max normalisation and a strong
+// heading (2.0, 0.1, 0.3) the robot touches the obstacle at (5, 4) near cycle 103.
+// Each admissible choice stops exactly within its free distance along its own
+// arc, which curves away from the obstacle; the next cycle has no admissible
+// sample, and braking_command() (the window's point nearest to (0, 0)) drops
+// omega to 0 while slowing, so the robot leaves that arc on a straight line into
+// the obstacle. Braking that keeps the curvature would stay on the checked arc.
+TEST(PythonRoboticsExample, DISABLED_BrakingFallbackStaysClearWithMinMaxWeights) {
+  const Outcome out = drive(example_params(2.0, 0.1, 0.3, Normalization::MinMax));
+  EXPECT_EQ(out.collisions, 0) << "first contact at cycle " << out.first_contact;
 }
 
 }  // namespace
