@@ -1,0 +1,321 @@
+"""Fuzzy weight controllers from configuration, the paper's preset, and plots of
+their control surfaces.
+
+A configuration is a mapping (from code or YAML)::
+
+    resolution: 1001                # optional: output grid points for the centroid
+    inputs:                         # name -> variable, in order
+      I: {domain: [0, 2]}           # no terms: the uniform partition S, M, L
+      D:
+        domain: [0, 5]
+        terms:                      # name -> shape, or a list of names (uniform partition)
+          S: uniform                # this term's shape in the uniform partition of S, M, L
+          M: {gaussian: [2.5, 1.0]}
+          L: {trapezoid: [2.5, 4.0, 5.0, 5.0]}
+    outputs:
+      beta: {domain: [0, 1]}
+    rules:
+      - IF I is S AND D is S THEN beta is S
+      - {if: {I: M, D: S}, then: {beta: M}}
+
+Shapes are ``triangle: [a, b, c]``, ``trapezoid: [a, b, c, d]`` and
+``gaussian: [mean, sigma]``. Unknown keys and wrong types raise FgdwaError
+naming the key, e.g. ``inputs.D.terms.M``.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from pathlib import Path
+from typing import Any, Mapping, Optional, Union
+
+import numpy as np
+
+from fgdwa._core import (
+    FgdwaError,
+    FuzzyRule,
+    FuzzyVariable,
+    MamdaniEngine,
+    MembershipFunction,
+    paper_fuzzy_controller,
+)
+
+__all__ = [
+    "engine_from_dict",
+    "engine_from_yaml",
+    "engine_to_dict",
+    "paper_controller_config",
+    "paper_fuzzy_controller",
+    "plot_control_surfaces",
+]
+
+_SHAPES = {"triangle": 3, "trapezoid": 4, "gaussian": 2}
+_DEFAULT_TERMS = ("S", "M", "L")
+
+# Table 3 (beta) and Table 4 (delta): rows D, columns I.
+_PAPER_BETA = (("S", "M", "L"), ("S", "M", "L"), ("S", "M", "M"))
+_PAPER_DELTA = (("S", "S", "S"), ("M", "M", "M"), ("L", "L", "M"))
+
+# Axis labels for the paper's variable names.
+_PAPER_LABELS = {
+    "I": "obstacle density I",
+    "D": "path deviation D [m]",
+    "beta": "beta (weight of dist)",
+    "delta": "delta (weight of similarity)",
+}
+
+
+def _type_name(value: Any) -> str:
+    return type(value).__name__
+
+
+def _mapping(value: Any, where: str) -> Mapping:
+    if not isinstance(value, Mapping):
+        raise FgdwaError(f"{where}: expected a mapping, got {_type_name(value)}")
+    return value
+
+
+def _only_keys(value: Mapping, known: tuple, where: str) -> None:
+    for key in value:
+        if key not in known:
+            raise FgdwaError(f"{where}: unknown key {key!r} (known: {', '.join(known)})")
+
+
+def _name(value: Any, where: str) -> str:
+    if not isinstance(value, str):
+        raise FgdwaError(f"{where}: expected a name (str), got {_type_name(value)} {value!r}")
+    return value
+
+
+def _number(value: Any, where: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise FgdwaError(f"{where}: expected a number, got {_type_name(value)} {value!r}")
+    value = float(value)
+    if not math.isfinite(value):
+        raise FgdwaError(f"{where} = {value}: must be finite")
+    return value
+
+
+def _numbers(value: Any, count: int, where: str) -> list:
+    if isinstance(value, (str, bytes, Mapping)) or not isinstance(value, (list, tuple)):
+        raise FgdwaError(f"{where}: expected a list of {count} numbers, got {_type_name(value)} {value!r}")
+    if len(value) != count:
+        raise FgdwaError(f"{where}: expected {count} numbers, got {len(value)}")
+    return [_number(v, f"{where}[{i}]") for i, v in enumerate(value)]
+
+
+def _shape(value: Any, where: str) -> MembershipFunction:
+    spec = _mapping(value, where)
+    if len(spec) != 1:
+        raise FgdwaError(f"{where}: expected one shape, e.g. {{triangle: [a, b, c]}}, got keys {list(spec)}")
+    (shape, params), = spec.items()
+    if shape not in _SHAPES:
+        raise FgdwaError(f"{where}: unknown shape {shape!r} (known: {', '.join(_SHAPES)})")
+    args = _numbers(params, _SHAPES[shape], f"{where}.{shape}")
+    try:
+        return getattr(MembershipFunction, shape)(*args)
+    except FgdwaError as err:
+        raise FgdwaError(f"{where}: {err}") from None
+
+
+def _variable(name: Any, value: Any, where: str) -> FuzzyVariable:
+    name = _name(name, f"{where} name")
+    where = f"{where}.{name}"
+    spec = _mapping(value, where)
+    _only_keys(spec, ("domain", "terms"), where)
+    if "domain" not in spec:
+        raise FgdwaError(f"{where}: missing key 'domain'")
+    lo, hi = _numbers(spec["domain"], 2, f"{where}.domain")
+    terms = spec.get("terms", list(_DEFAULT_TERMS))
+    if isinstance(terms, (list, tuple)):
+        names = [_name(t, f"{where}.terms[{i}]") for i, t in enumerate(terms)]
+        return FuzzyVariable.uniform(name, (lo, hi), names)
+    terms = _mapping(terms, f"{where}.terms")
+    if not terms:
+        raise FgdwaError(f"{where}.terms: needs at least one term")
+    names = [_name(t, f"{where}.terms name") for t in terms]
+    uniform = None
+    shapes = {}
+    for term, shape in terms.items():
+        if shape == "uniform":
+            if uniform is None:
+                uniform = FuzzyVariable.uniform(name, (lo, hi), names).terms
+            shapes[term] = uniform[term]
+        else:
+            shapes[term] = _shape(shape, f"{where}.terms.{term}")
+    return FuzzyVariable(name, (lo, hi), shapes)
+
+
+def _variables(value: Any, where: str) -> list:
+    spec = _mapping(value, where)
+    if not spec:
+        raise FgdwaError(f"{where}: needs at least one variable")
+    return [_variable(name, var, where) for name, var in spec.items()]
+
+
+def _clauses(value: Any, where: str) -> list:
+    spec = _mapping(value, where)
+    if not spec:
+        raise FgdwaError(f"{where}: needs at least one 'variable: term'")
+    return [(_name(k, f"{where} variable"), _name(v, f"{where}.{k}")) for k, v in spec.items()]
+
+
+def _rule(value: Any, where: str) -> FuzzyRule:
+    if isinstance(value, str):
+        try:
+            return FuzzyRule.parse(value)
+        except FgdwaError as err:
+            raise FgdwaError(f"{where}: {err}") from None
+    spec = _mapping(value, where)
+    _only_keys(spec, ("if", "then"), where)
+    for key in ("if", "then"):
+        if key not in spec:
+            raise FgdwaError(f"{where}: missing key {key!r}")
+    return FuzzyRule(_clauses(spec["if"], f"{where}.if"), _clauses(spec["then"], f"{where}.then"))
+
+
+def engine_from_dict(config: Mapping) -> MamdaniEngine:
+    """A MamdaniEngine from a configuration mapping (see the module docstring).
+
+    Raises FgdwaError naming the key at fault."""
+    config = _mapping(config, "fuzzy configuration")
+    _only_keys(config, ("resolution", "inputs", "outputs", "rules"), "fuzzy configuration")
+    for key in ("inputs", "outputs", "rules"):
+        if key not in config:
+            raise FgdwaError(f"fuzzy configuration: missing key {key!r}")
+    resolution = config.get("resolution", 1001)
+    if isinstance(resolution, bool) or not isinstance(resolution, numbers.Integral):
+        raise FgdwaError(f"resolution: expected an integer, got {_type_name(resolution)} {resolution!r}")
+    rules = config["rules"]
+    if isinstance(rules, (str, bytes, Mapping)) or not isinstance(rules, (list, tuple)):
+        raise FgdwaError(f"rules: expected a list of rules, got {_type_name(rules)}")
+    return MamdaniEngine(_variables(config["inputs"], "inputs"), _variables(config["outputs"], "outputs"),
+                         [_rule(r, f"rules[{i}]") for i, r in enumerate(rules)], int(resolution))
+
+
+def engine_from_yaml(source: Union[str, Path]) -> MamdaniEngine:
+    """A MamdaniEngine from YAML: a path to a file, or the YAML text itself."""
+    import yaml
+
+    text = source
+    if isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and Path(source).is_file()):
+        try:
+            text = Path(source).read_text()
+        except OSError as err:
+            raise FgdwaError(f"fuzzy configuration {source}: {err}") from None
+    elif not isinstance(source, str):
+        raise FgdwaError(f"fuzzy configuration: expected a path or YAML text, got {_type_name(source)}")
+    try:
+        config = yaml.safe_load(text)
+    except yaml.YAMLError as err:
+        raise FgdwaError(f"fuzzy configuration: not valid YAML: {err}") from None
+    if not isinstance(config, Mapping):
+        # A one-line string that is not a file reads as a YAML scalar: say so.
+        hint = f" (no file named {source!r})" if isinstance(config, str) else ""
+        raise FgdwaError(f"fuzzy configuration: expected a mapping at the top level, got {_type_name(config)}{hint}")
+    return engine_from_dict(config)
+
+
+def _variable_to_dict(variable: FuzzyVariable) -> dict:
+    return {"domain": [variable.lo, variable.hi],
+            "terms": {name: {mf.shape: list(mf.params)} for name, mf in variable.terms.items()}}
+
+
+def engine_to_dict(engine: MamdaniEngine) -> dict:
+    """The configuration that engine_from_dict turns back into the same engine."""
+    return {
+        "resolution": engine.resolution,
+        "inputs": {v.name: _variable_to_dict(v) for v in engine.inputs},
+        "outputs": {v.name: _variable_to_dict(v) for v in engine.outputs},
+        "rules": [str(r) for r in engine.rules],
+    }
+
+
+def paper_controller_config() -> dict:
+    """The paper's controller (Tables 3 and 4) as a configuration to edit and pass
+    to engine_from_dict; unchanged, it builds the same engine as paper_fuzzy_controller()."""
+    rules = []
+    for d, (beta_row, delta_row) in enumerate(zip(_PAPER_BETA, _PAPER_DELTA)):
+        for i in range(3):
+            rules.append(f"IF I is {_DEFAULT_TERMS[i]} AND D is {_DEFAULT_TERMS[d]} "
+                         f"THEN beta is {beta_row[i]} AND delta is {delta_row[i]}")
+    return {
+        "resolution": 1001,
+        "inputs": {"I": {"domain": [0.0, 2.0], "terms": list(_DEFAULT_TERMS)},
+                   "D": {"domain": [0.0, 5.0], "terms": list(_DEFAULT_TERMS)}},
+        "outputs": {"beta": {"domain": [0.0, 1.0], "terms": list(_DEFAULT_TERMS)},
+                    "delta": {"domain": [0.0, 5.0], "terms": list(_DEFAULT_TERMS)}},
+        "rules": rules,
+    }
+
+
+def _as_engine(engine_or_preset: Union[MamdaniEngine, Mapping, str]) -> MamdaniEngine:
+    if isinstance(engine_or_preset, MamdaniEngine):
+        return engine_or_preset
+    if isinstance(engine_or_preset, Mapping):
+        return engine_from_dict(engine_or_preset)
+    if engine_or_preset == "paper":
+        return paper_fuzzy_controller()
+    raise FgdwaError(f"engine: expected a MamdaniEngine, a configuration mapping or 'paper', "
+                     f"got {engine_or_preset!r}")
+
+
+def plot_control_surfaces(engine_or_preset: Union[MamdaniEngine, Mapping, str] = "paper",
+                          path: Optional[Union[str, Path]] = None, *, kind: str = "surface", points: int = 61,
+                          labels: Optional[Mapping[str, str]] = None):
+    """One panel per output over the grid of a two-input engine: beta(I, D) and
+    delta(I, D) for the paper's controller.
+
+    engine_or_preset: a MamdaniEngine, a configuration mapping, or 'paper'.
+    kind: 'surface' (3-D) or 'heatmap' (colour map with contour lines).
+    points: grid points along each input axis. labels: axis text by variable name.
+    Saves a PNG to `path` when given (and closes the figure); returns the figure."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    engine = _as_engine(engine_or_preset)
+    if len(engine.inputs) != 2:
+        raise FgdwaError(f"engine: control surfaces need exactly 2 inputs, this one has {len(engine.inputs)}")
+    if kind not in ("surface", "heatmap"):
+        raise FgdwaError(f"kind = {kind!r}: must be 'surface' or 'heatmap'")
+    if isinstance(points, bool) or not isinstance(points, numbers.Integral) or points < 2:
+        raise FgdwaError(f"points = {points!r}: must be an integer >= 2")
+    text = {**_PAPER_LABELS, **(labels or {})}
+    x_var, y_var = engine.inputs
+    xs = np.linspace(x_var.lo, x_var.hi, int(points))
+    ys = np.linspace(y_var.lo, y_var.hi, int(points))
+    grid_x, grid_y = np.meshgrid(xs, ys)
+    values = engine.evaluate_grid(grid_x, grid_y)
+
+    n = len(engine.outputs)
+    fig = plt.figure(figsize=(6.2 * n, 5.0))
+    for k, out in enumerate(engine.outputs):
+        z = values[out.name]
+        title = f"{out.name}({x_var.name}, {y_var.name})"
+        if kind == "surface":
+            ax = fig.add_subplot(1, n, k + 1, projection="3d")
+            surface = ax.plot_surface(grid_x, grid_y, z, cmap="viridis", vmin=out.lo, vmax=out.hi,
+                                      linewidth=0, antialiased=True)
+            ax.set_zlim(out.lo, out.hi)
+            ax.view_init(elev=28, azim=-130)
+            # The z label would fall outside the panel at this view: the title and colour bar say it.
+            fig.colorbar(surface, ax=ax, shrink=0.6, pad=0.1, label=text.get(out.name, out.name))
+        else:
+            ax = fig.add_subplot(1, n, k + 1)
+            mesh = ax.pcolormesh(grid_x, grid_y, z, cmap="viridis", vmin=out.lo, vmax=out.hi, shading="auto")
+            lines = ax.contour(grid_x, grid_y, z, levels=8, colors="white", linewidths=0.6)
+            ax.clabel(lines, fontsize=7, fmt="%.2f")
+            fig.colorbar(mesh, ax=ax, label=text.get(out.name, out.name))
+        ax.set_xlabel(text.get(x_var.name, x_var.name))
+        ax.set_ylabel(text.get(y_var.name, y_var.name))
+        ax.set_title(title)
+    fig.tight_layout()
+    if path is not None:
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fig.savefig(path, dpi=120)
+        plt.close(fig)
+    return fig
