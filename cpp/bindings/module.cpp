@@ -16,6 +16,7 @@ void init_dtw(py::module_& m);
 void init_perception(py::module_& m);
 void init_global_planner(py::module_& m);
 void init_planner(py::module_& m);
+void init_fuzzy(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "fgdwa's C++ core: robot model, grids, collision, dynamic window, critics and planner.";
@@ -32,4 +33,5 @@ PYBIND11_MODULE(_core, m) {
   init_perception(m);
   init_global_planner(m);
   init_planner(m);
+  init_fuzzy(m);
 }

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'points_field', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'points_field', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -848,6 +848,146 @@ class LocalPlanner:
     @property
     def params(self) -> PlannerParams:
         ...
+class MembershipFunction:
+    """
+    A fuzzy membership function: degrees in [0, 1]. Build one with triangle(a, b, c), trapezoid(a, b, c, d) or gaussian(mean, sigma); a == b or b == c makes a shoulder. Calling it gives the degree of a number, or of every element of an array.
+    """
+    __hash__: typing.ClassVar[None] = None
+    @staticmethod
+    def gaussian(mean: typing.SupportsFloat | typing.SupportsIndex, sigma: typing.SupportsFloat | typing.SupportsIndex) -> MembershipFunction:
+        """
+        exp(-((x - mean) / sigma)^2 / 2), sigma > 0.
+        """
+    @staticmethod
+    def trapezoid(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFloat | typing.SupportsIndex, c: typing.SupportsFloat | typing.SupportsIndex, d: typing.SupportsFloat | typing.SupportsIndex) -> MembershipFunction:
+        """
+        Zero outside [a, d], 1 on [b, c], linear in between (a <= b <= c <= d, a < d).
+        """
+    @staticmethod
+    def triangle(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFloat | typing.SupportsIndex, c: typing.SupportsFloat | typing.SupportsIndex) -> MembershipFunction:
+        """
+        Zero outside [a, c], 1 at b, linear in between (a <= b <= c, a < c).
+        """
+    def __call__(self, x: typing.Any) -> typing.Any:
+        """
+        Degree of x (a number or an array) in this set.
+        """
+    def __eq__(self, arg0: MembershipFunction) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def params(self) -> tuple:
+        """
+        The shape's parameters: (a, b, c), (a, b, c, d) or (mean, sigma).
+        """
+    @property
+    def shape(self) -> str:
+        """
+        'triangle', 'trapezoid' or 'gaussian'.
+        """
+class FuzzyVariable:
+    """
+    A linguistic variable: a name, a domain (lo, hi) and named terms (a dict {name: MembershipFunction}, in order). Names are letters, digits and '_'. Every term must reach a positive degree inside the domain.
+    """
+    @staticmethod
+    def uniform(name: str, domain: typing.Any, terms: collections.abc.Sequence[str] = ['S', 'M', 'L']) -> FuzzyVariable:
+        """
+        The uniform triangular partition of the domain: evenly spaced peaks, shoulders at both ends (for S, M, L: S = tri(lo, lo, mid), M = tri(lo, mid, hi), L = tri(mid, hi, hi)).
+        """
+    def __init__(self, name: typing.Any, domain: typing.Any, terms: typing.Any) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def membership(self, term: str, x: typing.Any) -> typing.Any:
+        """
+        Degree of x (a number or an array, not clamped) in the named term.
+        """
+    @property
+    def domain(self) -> tuple[float, float]:
+        ...
+    @property
+    def hi(self) -> float:
+        ...
+    @property
+    def lo(self) -> float:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def term_names(self) -> list[str]:
+        ...
+    @property
+    def terms(self) -> dict:
+        """
+        {name: MembershipFunction}, in order.
+        """
+class FuzzyRule:
+    """
+    IF every antecedent holds (AND = min) THEN every consequent. Build one from text, FuzzyRule('IF I is S AND D is M THEN beta is S AND delta is M'), or from {variable: term} dicts: FuzzyRule({'I': 'S', 'D': 'M'}, {'beta': 'S'}).
+    """
+    @staticmethod
+    def parse(text: str) -> FuzzyRule:
+        """
+        Read 'IF v is t AND ... THEN v is t AND ...' (keywords in any case).
+        """
+    def __init__(self, antecedents: typing.Any, consequents: typing.Any = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def antecedents(self) -> list:
+        """
+        [(variable, term)] of the IF part.
+        """
+    @property
+    def consequents(self) -> list:
+        """
+        [(variable, term)] of the THEN part.
+        """
+class MamdaniEngine:
+    """
+    Mamdani inference: AND = min, implication = min (clip), aggregation = max, centroid defuzzification on a uniform grid of `resolution` points per output domain (the centroid of the piecewise-linear aggregate through those points). Inputs outside their domains are clamped. When no rule fires for an output, it is the midpoint of its domain.
+    """
+    def __init__(self, inputs: typing.Any, outputs: typing.Any, rules: typing.Any, resolution: typing.SupportsInt | typing.SupportsIndex = 1001) -> None:
+        """
+        inputs and outputs: lists of FuzzyVariable; rules: FuzzyRule objects or rule strings.
+        """
+    def __repr__(self) -> str:
+        ...
+    def evaluate(self, *args, **kwargs) -> dict:
+        """
+        evaluate(*values, **inputs) -> {output: value}: one inference, inputs by position (in the order of `inputs`) or by name, e.g. engine.evaluate(I=0.4, D=1.2).
+        """
+    def evaluate_grid(self, *args, **kwargs) -> dict:
+        """
+        evaluate_grid(*arrays, **inputs) -> {output: array}: one inference per element of input arrays that broadcast together (numpy rules), e.g. engine.evaluate_grid(*np.meshgrid(I_axis, D_axis)). Each output has the broadcast shape.
+        """
+    def firing_strengths(self, *args, **kwargs) -> list[float]:
+        """
+        Firing strength of each rule (in the order of `rules`) for these inputs.
+        """
+    @property
+    def input_names(self) -> list[str]:
+        ...
+    @property
+    def inputs(self) -> list[FuzzyVariable]:
+        ...
+    @property
+    def output_names(self) -> list[str]:
+        ...
+    @property
+    def outputs(self) -> list[FuzzyVariable]:
+        ...
+    @property
+    def resolution(self) -> int:
+        ...
+    @property
+    def rules(self) -> list[FuzzyRule]:
+        ...
 def angle_difference(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
     The signed difference a - b in (-pi, pi].
@@ -871,6 +1011,10 @@ def inflate(grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing
 def obstacle_density(scan: Scan, window: DetectWindowParams = ...) -> DensityReading:
     """
     Eq. 13: I = S_d / S_w + c^max_gap over the detect window, clamped to [0, 2].
+    """
+def paper_fuzzy_controller(resolution: typing.SupportsInt | typing.SupportsIndex = 1001) -> MamdaniEngine:
+    """
+    The paper's weight controller (Section 2.2.2, Tables 3 and 4): inputs I (obstacle density, [0, 2]) and D (path deviation, [0, 5] m), outputs beta ([0, 1]) and delta ([0, 5]), S/M/L uniform triangular partitions, 9 rules.
     """
 def points_field(points: typing.Any, resolution: typing.SupportsFloat | typing.SupportsIndex) -> DistanceField:
     """
