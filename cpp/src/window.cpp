@@ -34,9 +34,13 @@ void linspace(double lo, double hi, int n, std::vector<double>& out) {
   out.back() = hi;
 }
 
+// The interior sample nearest to x (any sample when there are two or fewer), so
+// that both window ends stay among the samples.
 std::size_t nearest(const std::vector<double>& values, double x, std::size_t skip) {
   std::size_t best = values.size();
-  for (std::size_t i = 0; i < values.size(); ++i)
+  const std::size_t first = values.size() > 2 ? 1 : 0;
+  const std::size_t last = values.size() > 2 ? values.size() - 1 : values.size();
+  for (std::size_t i = first; i < last; ++i)
     if (i != skip && (best == values.size() || std::abs(values[i] - x) < std::abs(values[best] - x))) best = i;
   return best;
 }
@@ -44,6 +48,14 @@ std::size_t nearest(const std::vector<double>& values, double x, std::size_t ski
 void snap(std::vector<double>& values, double x, double lo, double hi, std::size_t skip, std::size_t& snapped) {
   snapped = values.size();
   if (x < lo || x > hi) return;
+  if (values.front() == x && skip != 0) {
+    snapped = 0;
+    return;
+  }
+  if (values.back() == x && skip != values.size() - 1) {
+    snapped = values.size() - 1;
+    return;
+  }
   snapped = nearest(values, x, skip);
   if (snapped < values.size()) values[snapped] = x;
 }
@@ -80,18 +92,31 @@ double stopping_distance(double v, double deceleration, double dt) {
   return dt * ((m + 1.0) * v - drop * m * (m + 1.0) / 2.0);
 }
 
+double arc_deceleration(const Twist& command, const RobotLimits& limits) {
+  double b = std::min(limits.acc_v, limits.braking_v());
+  if (command.omega != 0.0 && command.v > 0.0)
+    b = std::min(b, std::min(limits.acc_omega, limits.braking_omega()) * command.v / std::abs(command.omega));
+  return b;
+}
+
 bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits, double dt,
                    BrakingModel model) {
   if (std::isinf(free_distance)) return true;
   const bool v_ok = model == BrakingModel::Continuous
                         ? command.v <= std::sqrt(2.0 * free_distance * limits.braking_v())
-                        : stopping_distance(command.v, std::min(limits.acc_v, limits.braking_v()), dt) <= free_distance;
+                        : stopping_distance(command.v, arc_deceleration(command, limits), dt) <= free_distance;
   return v_ok && std::abs(command.omega) <= std::sqrt(2.0 * free_distance * limits.braking_omega());
 }
 
 Twist braking_command(const RobotLimits& limits, const Twist& current, double dt) {
   const VelocityWindow w = dynamic_window(limits, current, dt);
-  return Twist{std::clamp(0.0, w.v_lo, w.v_hi), std::clamp(0.0, w.omega_lo, w.omega_hi)};
+  // Scale (v, omega) toward (0, 0) as far as the window allows: the robot slows
+  // down on the arc it was on, the one its last command was checked along.
+  double s = 0.0;
+  if (current.v > 0.0) s = std::max({s, 1.0 - limits.acc_v * dt / current.v, limits.v_min / current.v});
+  if (current.omega != 0.0) s = std::max(s, 1.0 - limits.acc_omega * dt / std::abs(current.omega));
+  s = std::min(s, 1.0);
+  return Twist{std::clamp(s * current.v, w.v_lo, w.v_hi), std::clamp(s * current.omega, w.omega_lo, w.omega_hi)};
 }
 
 }  // namespace fgdwa

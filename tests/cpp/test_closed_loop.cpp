@@ -121,7 +121,7 @@ TEST(PythonRoboticsExample, ExampleWeightsReachTheGoalAfterADetour) {
 // sample, and braking_command() (the window's point nearest to (0, 0)) drops
 // omega to 0 while slowing, so the robot leaves that arc on a straight line into
 // the obstacle. Braking that keeps the curvature would stay on the checked arc.
-TEST(PythonRoboticsExample, DISABLED_BrakingFallbackStaysClearWithMinMaxWeights) {
+TEST(PythonRoboticsExample, BrakingFallbackStaysClearWithMinMaxWeights) {
   const Outcome out = drive(example_params(2.0, 0.1, 0.3, Normalization::MinMax));
   EXPECT_EQ(out.collisions, 0) << "first contact at cycle " << out.first_contact;
 }

@@ -26,9 +26,10 @@ struct VelocityWindow {
 // planner produces), the window collapses onto the point of Vd nearest to Vm.
 VelocityWindow dynamic_window(const RobotLimits& limits, const Twist& current, double dt);
 
-// n_v x n_omega commands, v-major. The sample nearest to the current velocity
-// is moved onto it, and in omega the one nearest to 0 onto 0, so that keeping
-// the current command and driving straight are always candidates.
+// n_v x n_omega commands, v-major. The interior sample nearest to the current
+// velocity is moved onto it, and in omega the one nearest to 0 onto 0, so that
+// keeping the current command and driving straight are always candidates while
+// both window ends stay among the samples.
 void sample_window(const VelocityWindow& window, const Twist& current, const WindowParams& params,
                    std::vector<Twist>& out);
 
@@ -37,10 +38,11 @@ enum class BrakingModel : std::uint8_t {
   // Eq. 3 as written: v <= sqrt(2 dist brake_v), braking starting at once and
   // continuously.
   Continuous,
-  // The robot drives the command for one control period, then slows by
-  // min(acc_v, brake_v) dt per period, as the window lets it:
-  // stopping_distance(v) <= dist. Without the period of latency, Eq. 3 admits
-  // commands that the stepped deceleration cannot stop in time.
+  // The robot drives the command for one control period, then slows down on
+  // the same arc as the window lets it (braking_command): v drops by b dt per
+  // period, b = min(acc_v, brake_v, acc_omega v / |omega|), and
+  // stopping_distance(v, b) <= dist. Without the period of latency, Eq. 3
+  // admits commands that the stepped deceleration cannot stop in time.
   Discrete,
 };
 
@@ -52,7 +54,12 @@ double stopping_distance(double v, double deceleration, double dt);
 bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits, double dt,
                    BrakingModel model = BrakingModel::Discrete);
 
-// The strongest braking toward (0, 0) that the window allows.
+// Deceleration along the command's arc when v and omega shrink together, as
+// braking_command shrinks them: min(acc_v, brake_v, min(acc_omega, brake_omega) v / |omega|).
+double arc_deceleration(const Twist& command, const RobotLimits& limits);
+
+// The strongest braking toward (0, 0) that the window allows: (v, omega) scaled
+// down together, so the robot keeps to its arc while it slows.
 Twist braking_command(const RobotLimits& limits, const Twist& current, double dt);
 
 }  // namespace fgdwa
