@@ -31,7 +31,8 @@ SimilarityCritic::SimilarityCritic(const SimilarityParams& params) : params_(par
 
 void SimilarityCritic::prepare(const CriticContext& context) {
   if (!context.path) throw Error("critic 'similarity' needs a global path");
-  const double v_ref = std::max(context.state.twist.v, params_.v_ref_min);
+  const double v_ref = params_.speed == ReferenceSpeed::Limit ? std::max(context.v_max, params_.v_ref_min)
+                                                             : std::max(context.state.twist.v, params_.v_ref_min);
   reference_samples(*context.path, context.state.pose.position(), v_ref, context.dt, context.n_steps,
                     params_.sampling, reference_);
 }
@@ -72,6 +73,11 @@ std::unique_ptr<Critic> make_similarity(Params& p, Options& o) {
     params.sampling = ReferenceSampling::Segment;
   else if (sampling != "polyline")
     throw Error("critic similarity: sampling = '" + sampling + "': expected 'polyline' or 'segment'");
+  const std::string speed = take_option(o, "reference_speed", "limit");
+  if (speed == "current")
+    params.speed = ReferenceSpeed::Current;
+  else if (speed != "limit")
+    throw Error("critic similarity: reference_speed = '" + speed + "': expected 'limit' or 'current'");
   params.v_ref_min = take(p, "v_ref_min", params.v_ref_min);
   const double band = take(p, "band", kNoBand);
   if (band != std::floor(band)) throw Error(detail::describe("critic similarity: band", band, "must be a whole number"));

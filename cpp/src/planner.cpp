@@ -163,6 +163,7 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   context.dt = params_.dt;
   context.n_steps = n_steps_;
   context.path = path_.get();
+  context.v_max = limits_.v_max;
   score_and_choose(context);
 
   if (result_.best_index < 0) {

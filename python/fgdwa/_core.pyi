@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'points_field', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -988,6 +988,58 @@ class MamdaniEngine:
     @property
     def rules(self) -> list[FuzzyRule]:
         ...
+class WeightPolicy:
+    """
+    Sets the clearance weight beta and the similarity weight delta from I and D each cycle.
+    """
+    def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
+        """
+        (beta, delta) for obstacle density I and path deviation D (m).
+        """
+    @property
+    def name(self) -> str:
+        ...
+class FixedWeights(WeightPolicy):
+    """
+    beta and delta held fixed.
+    """
+    def __init__(self, beta: typing.SupportsFloat | typing.SupportsIndex, delta: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+class FuzzyWeights(WeightPolicy):
+    """
+    beta and delta from a Mamdani engine with inputs I, D and outputs beta, delta (default: the paper's).
+    """
+    def __init__(self, engine: MamdaniEngine = None) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def engine(self) -> MamdaniEngine:
+        ...
+class PlannerPreset:
+    """
+    A named planner of the paper's experiments: its parameters and weights.
+    """
+    def __repr__(self) -> str:
+        ...
+    def weight_policy(self) -> WeightPolicy:
+        """
+        The policy to run it with; None for fixed weights.
+        """
+    @property
+    def description(self) -> str:
+        ...
+    @property
+    def fuzzy(self) -> bool:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def params(self) -> PlannerParams:
+        ...
 def angle_difference(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
     The signed difference a - b in (-pi, pi].
@@ -1016,10 +1068,16 @@ def paper_fuzzy_controller(resolution: typing.SupportsInt | typing.SupportsIndex
     """
     The paper's weight controller (Section 2.2.2, Tables 3 and 4): inputs I (obstacle density, [0, 2]) and D (path deviation, [0, 5] m), outputs beta ([0, 1]) and delta ([0, 5]), S/M/L uniform triangular partitions, 9 rules.
     """
+def planner_preset(name: str) -> PlannerPreset:
+    """
+    A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity.
+    """
 def points_field(points: typing.Any, resolution: typing.SupportsFloat | typing.SupportsIndex) -> DistanceField:
     """
     A DistanceField of scattered obstacle points on a grid just covering them (None for no point).
     """
+def preset_names() -> list[str]:
+    ...
 def reference_samples(path: ..., robot: typing.Any, v_ref: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex, n: typing.SupportsInt | typing.SupportsIndex, sampling: str = 'polyline') -> numpy.typing.NDArray[numpy.float64]:
     """
     (n, 2) reference samples E of the similarity cost (SPEC 4, Eq. 9): from the robot's projection onto the path, i * v_ref * dt further along the current segment ('segment') or along the path ('polyline').

@@ -92,3 +92,26 @@ def hidden_obstacles_scenario() -> Scenario:
         goal=(13.0, 3.0),
         description="Two blocks on the straight path that the map does not show.",
     )
+
+
+def unknown_beside_path_scenario() -> Scenario:
+    """Obstacles missing from the map stand just beside the straight global path.
+
+    The robot passes close by each; a planner that weighs safety more where the
+    detect window fills keeps a wider berth there and drives freely elsewhere."""
+    resolution = 0.1
+    cells = np.zeros((60, 160), dtype=np.uint8)
+    cells[0, :] = cells[-1, :] = 1
+    cells[:, 0] = cells[:, -1] = 1
+    hidden = np.zeros_like(cells)
+    _fill(hidden, resolution, 4.0, 3.5, 4.8, 4.5)  # above the path, 0.5 m from it
+    _fill(hidden, resolution, 7.5, 1.6, 8.3, 2.5)  # below the path, 0.5 m from it
+    _fill(hidden, resolution, 11.0, 3.5, 11.6, 4.3)
+    grid = OccupancyGrid(cells, resolution, (0.0, 0.0))
+    return Scenario(
+        name="unknown_beside_path",
+        world=World(grid=grid, hidden=OccupancyGrid(hidden, resolution, (0.0, 0.0))),
+        start=(1.0, 3.0, 0.0),
+        goal=(15.0, 3.0),
+        description="Obstacles missing from the map, 0.5 m beside the straight global path.",
+    )

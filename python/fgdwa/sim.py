@@ -27,12 +27,14 @@ from fgdwa._core import (
     LidarParams,
     LocalPlanner,
     OccupancyGrid,
+    PlannerPreset,
     PlannerParams,
     PlanResult,
     RobotLimits,
     RobotState,
     Status,
     obstacle_density,
+    planner_preset,
     points_field,
     step,
 )
@@ -352,3 +354,17 @@ def _global_path(world: World, start, goal, footprint: Footprint, params: Planne
     if plan.status != GlobalStatus.Found:
         raise FgdwaError(f"global planner {method}: no path from start to goal ({plan.status.name})")
     return GlobalPath(plan.path)
+
+
+def run_preset(world: World, start, goal, planner="fgdwa", lidar: Optional[LidarParams] = None,
+               **kwargs) -> EpisodeResult:
+    """``run_episode`` with a named planner (``preset_names()``) or a PlannerPreset.
+
+    A fuzzy preset senses with ``lidar`` (default ``LidarParams()``): the density
+    I that sets its weights comes from the scan."""
+    preset = planner if isinstance(planner, PlannerPreset) else planner_preset(planner)
+    policy = preset.weight_policy()
+    if policy is not None and lidar is None:
+        lidar = LidarParams()
+    return run_episode(world, start, goal, params=kwargs.pop("params", preset.params), lidar=lidar,
+                       weight_policy=kwargs.pop("weight_policy", policy), **kwargs)

@@ -92,7 +92,7 @@ def test_reference_samples_at_a_corner():
 
 
 def test_similarity_critic_scores_1_over_dtw_plus_1():
-    params = fgdwa.PlannerParams(critics=[("similarity", 1.0, {"v_ref_min": 0.1})])
+    params = fgdwa.PlannerParams(critics=[("similarity", 1.0, {"v_ref_min": 0.1, "reference_speed": "current"})])
     planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), params)
     planner.set_global_path([[0.0, 0.0], [20.0, 0.0]])
     state = fgdwa.RobotState((1.0, 0.5, 0.0), (0.6, 0.0))
@@ -108,6 +108,15 @@ def test_similarity_critic_scores_1_over_dtw_plus_1():
     with pytest.raises(fgdwa.FgdwaError, match="needs a global path"):
         fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), params).plan(state, (20, 0),
                                                                                         fgdwa.FieldClearance())
+    # By default E is spaced by the speed limit, not the current speed.
+    limit = fgdwa.LocalPlanner(fgdwa.RobotLimits(v_max=1.2), fgdwa.Footprint.circle(0.2),
+                               fgdwa.PlannerParams(critics=[("similarity", 1.0)]))
+    limit.set_global_path([[0.0, 0.0], [20.0, 0.0]])
+    r = limit.plan(state, (20.0, 0.0), fgdwa.FieldClearance())
+    e_limit = fgdwa.reference_samples(limit.global_path, (1.0, 0.5), 1.2, 0.15, 20)
+    assert r.raw[0, 0] == pytest.approx(1.0 / (fgdwa.dtw(limit.rollouts()[0][:, :2], e_limit) + 1.0), rel=1e-12)
+    with pytest.raises(fgdwa.FgdwaError, match="reference_speed"):
+        fgdwa.CriticConfig("similarity", 1.0, {"reference_speed": "fast"})
     with pytest.raises(fgdwa.FgdwaError, match="sampling"):
         fgdwa.CriticConfig("similarity", 1.0, {"sampling": "spline"})
     with pytest.raises(fgdwa.FgdwaError, match="no option 'mode'"):

@@ -5,6 +5,7 @@
 // (`make_critic`), calls `prepare(context)` once per control cycle, then
 // `score(rollout)` for every admissible sample. A score is the raw term, larger
 // is better; normalisation and weights belong to the planner.
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -25,6 +26,7 @@ struct CriticContext {
   double dt = 0.0;             // s, rollout step
   int n_steps = 0;
   const GlobalPath* path = nullptr;  // the global path, when the planner has one
+  double v_max = 0.0;                // m/s, the robot's speed limit
 };
 
 // One sampled command with what the planner measured about it.
@@ -90,11 +92,23 @@ class VelocityCritic : public Critic {
   double score(const Rollout& rollout) const override { return rollout.command.v; }
 };
 
+// Which speed spaces the reference samples E.
+enum class ReferenceSpeed : std::uint8_t {
+  // v_ref = max(v_current, v_ref_min): Eq. 9's v_r as written. A slow robot then
+  // finds slow rollouts the most similar, and slows further: with a large delta
+  // it crawls.
+  Current,
+  // v_ref = v_max: E is where a robot following the path at full speed would be,
+  // so similarity rewards keeping to the path without rewarding slowness.
+  Limit,
+};
+
 // Eq. 11: 1 / (DTW(R, E) + 1) between the rollout's positions R and n reference
-// samples E of the global path, with v_ref = max(v_current, v_ref_min).
+// samples E of the global path, spaced by v_ref dt.
 struct SimilarityParams {
   ReferenceSampling sampling = ReferenceSampling::Polyline;
-  double v_ref_min = 0.1;  // m/s, keeps E from collapsing onto one point at standstill
+  ReferenceSpeed speed = ReferenceSpeed::Limit;
+  double v_ref_min = 0.1;  // m/s, with ReferenceSpeed::Current: keeps E from collapsing at standstill
   int band = kNoBand;      // Sakoe-Chiba band in samples, kNoBand for the full DTW
   void validate() const;
 };

@@ -1,0 +1,26 @@
+#pragma once
+// The planners of the paper's experiments by name, usable alike from C++ and
+// Python: their parameters and how their weights are set.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fgdwa/planner.hpp"
+#include "fgdwa/weights.hpp"
+
+namespace fgdwa {
+
+struct PlannerPreset {
+  std::string name;
+  std::string description;
+  PlannerParams params;
+  bool fuzzy = false;  // beta and delta from the paper's fuzzy controller each cycle
+  // The weight policy to run this preset with: null when the weights stay as in params.
+  std::shared_ptr<WeightPolicy> weight_policy() const;
+};
+
+// dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity.
+PlannerPreset planner_preset(const std::string& name);
+std::vector<std::string> preset_names();
+
+}  // namespace fgdwa

@@ -1,0 +1,85 @@
+#include "fgdwa/presets.hpp"
+
+#include <functional>
+#include <map>
+
+#include "fgdwa/error.hpp"
+
+namespace fgdwa {
+
+namespace {
+// Table 5 / 14: alpha 0.5, beta 0.15, gamma 1; dt 0.15 s, perDT 3 s.
+PlannerParams guided(double beta, double delta, bool similarity) {
+  PlannerParams p;
+  p.dt = 0.15;
+  p.sim_time = 3.0;
+  p.heading_target = HeadingTarget::KeyNodes;
+  p.critics = {{"heading", 0.5}, {"clearance", beta}, {"velocity", 1.0}};
+  if (similarity) p.critics.push_back({"similarity", delta});
+  return p;
+}
+
+const std::map<std::string, std::function<PlannerPreset()>>& presets() {
+  static const std::map<std::string, std::function<PlannerPreset()>> table = {
+      {"dwa",
+       [] {
+         PlannerParams p = guided(0.15, 0.0, false);
+         p.heading_target = HeadingTarget::Goal;
+         return PlannerPreset{"dwa", "classic DWA heading for the goal (Table 5 weights)", p, false};
+       }},
+      {"gdwa",
+       [] {
+         return PlannerPreset{"gdwa", "guided DWA: heading for the key nodes of the global path (Tables 5, 14)",
+                              guided(0.15, 0.0, false), false};
+       }},
+      {"sgdwa",
+       [] {
+         return PlannerPreset{"sgdwa", "guided DWA with the trajectory-similarity cost (Table 6)",
+                              guided(0.15, 0.5, true), false};
+       }},
+      {"fgdwa",
+       [] {
+         // Table 13: alpha 0.5 and gamma 1 fixed; beta and delta start at Table 6's
+         // values and are set by the fuzzy controller from the first cycle on.
+         return PlannerPreset{"fgdwa", "guided DWA with similarity, beta and delta from the fuzzy controller (Table 13)",
+                              guided(0.15, 0.5, true), true};
+       }},
+      {"gdwa_high_safety",
+       [] {
+         // The top of the fuzzy controller's beta domain, held fixed.
+         return PlannerPreset{"gdwa_high_safety", "guided DWA with similarity, fixed high safety weight beta = 1",
+                              guided(1.0, 0.5, true), false};
+       }},
+      {"gdwa_high_similarity",
+       [] {
+         // The top of the fuzzy controller's delta domain, held fixed.
+         return PlannerPreset{"gdwa_high_similarity",
+                              "guided DWA with similarity, fixed high similarity weight delta = 5",
+                              guided(0.15, 5.0, true), false};
+       }},
+  };
+  return table;
+}
+}  // namespace
+
+std::shared_ptr<WeightPolicy> PlannerPreset::weight_policy() const {
+  if (fuzzy) return std::make_shared<FuzzyWeights>();
+  return nullptr;
+}
+
+PlannerPreset planner_preset(const std::string& name) {
+  const auto& table = presets();
+  auto it = table.find(name);
+  if (it == table.end()) {
+    std::string known;
+    for (const auto& [n, f] : table) known += (known.empty() ? "" : ", ") + n;
+    throw Error("unknown planner preset '" + name + "' (known: " + known + ")");
+  }
+  return it->second();
+}
+
+std::vector<std::string> preset_names() {
+  return {"dwa", "gdwa", "sgdwa", "fgdwa", "gdwa_high_safety", "gdwa_high_similarity"};
+}
+
+}  // namespace fgdwa

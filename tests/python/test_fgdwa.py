@@ -1,0 +1,66 @@
+import numpy as np
+import pytest
+
+import fgdwa
+from fgdwa.builtin import unknown_beside_path_scenario
+from fgdwa.sim import run_episode, run_preset
+
+
+def test_presets_follow_the_paper_tables():
+    expected = {
+        "dwa": ("goal", {"heading": 0.5, "clearance": 0.15, "velocity": 1.0}, False),
+        "gdwa": ("key_nodes", {"heading": 0.5, "clearance": 0.15, "velocity": 1.0}, False),
+        "sgdwa": ("key_nodes", {"heading": 0.5, "clearance": 0.15, "velocity": 1.0, "similarity": 0.5}, False),
+        "fgdwa": ("key_nodes", {"heading": 0.5, "clearance": 0.15, "velocity": 1.0, "similarity": 0.5}, True),
+        "gdwa_high_safety": ("key_nodes", {"heading": 0.5, "clearance": 1.0, "velocity": 1.0, "similarity": 0.5}, False),
+        "gdwa_high_similarity": ("key_nodes", {"heading": 0.5, "clearance": 0.15, "velocity": 1.0, "similarity": 5.0},
+                                 False),
+    }
+    assert fgdwa.preset_names() == list(expected)
+    for name, (target, weights, fuzzy) in expected.items():
+        preset = fgdwa.planner_preset(name)
+        assert preset.params.heading_target == target
+        assert {c.name: c.weight for c in preset.params.critics} == weights
+        assert (preset.params.dt, preset.params.sim_time) == (0.15, 3.0)
+        assert preset.fuzzy == fuzzy
+        assert (preset.weight_policy() is not None) == fuzzy
+    with pytest.raises(fgdwa.FgdwaError, match="unknown planner preset 'fdwa'"):
+        fgdwa.planner_preset("fdwa")
+
+
+def test_fuzzy_weights_follow_the_rule_tables():
+    policy = fgdwa.FuzzyWeights()
+    engine = fgdwa.paper_fuzzy_controller()
+    for density, deviation in [(0.1, 0.2), (1.0, 2.5), (1.9, 4.8), (0.5, 3.7)]:
+        beta, delta = policy.weights(density, deviation)
+        out = engine.evaluate(I=density, D=deviation)
+        assert (beta, delta) == pytest.approx((out["beta"], out["delta"]))
+    # More obstacles ahead: more weight on safety (Table 3, D small); farther off the path:
+    # more weight on similarity (Table 4).
+    assert policy.weights(1.8, 0.0)[0] > policy.weights(0.1, 0.0)[0] + 0.2
+    assert policy.weights(0.1, 4.5)[1] > policy.weights(0.1, 0.0)[1] + 1.5
+    assert fgdwa.FixedWeights(0.3, 1.0).weights(2.0, 5.0) == (0.3, 1.0)
+    with pytest.raises(fgdwa.FgdwaError, match="beta"):
+        fgdwa.FixedWeights(-0.1, 1.0)
+    with pytest.raises(fgdwa.FgdwaError, match="density"):
+        policy.weights(float("nan"), 0.0)
+
+
+def test_fgdwa_passes_unknown_obstacles_and_raises_beta_near_them():
+    scenario = unknown_beside_path_scenario()
+    result = run_preset(scenario.world, scenario.start, scenario.goal, "fgdwa", max_steps=500)
+    assert result.outcome == "success"
+    assert result.min_clearance > 0.0
+    assert len(result.beta) == result.steps
+    crowded = result.density > 0.6  # an unknown block fills part of the detect window
+    assert crowded.any() and (~crowded).any()
+    assert result.beta[crowded].mean() > result.beta[~crowded].mean() + 0.1
+    assert np.corrcoef(result.beta, result.density)[0, 1] > 0.8
+    assert np.all((result.delta >= 0.0) & (result.delta <= 5.0))
+
+
+def test_fixed_presets_keep_their_weights():
+    scenario = unknown_beside_path_scenario()
+    result = run_preset(scenario.world, scenario.start, scenario.goal, "gdwa_high_safety", max_steps=30)
+    assert np.all(result.beta == 1.0) and np.all(result.delta == 0.5)
+    assert np.all(np.isnan(result.density))  # a fixed preset needs no lidar unless asked
