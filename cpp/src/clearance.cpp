@@ -62,6 +62,35 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
 
 }  // namespace
 
+double FieldClearance::clearance_lower_bound(const Footprint& footprint, const Pose2& pose, double t) const {
+  // Every point of the footprint lies within its circumscribed radius of the pose.
+  const Vec2 p = pose.position();
+  double best = std::numeric_limits<double>::infinity();
+  if (field_) best = field_->lower_bound(p);
+  if (sensed_) best = std::min(best, sensed_->lower_bound(p));
+  best -= footprint.radius();
+  for (const Disc& disc : discs_)
+    best = std::min(best, (disc.center_at(t) - p).norm() - disc.radius - footprint.radius());
+  return best;
+}
+
+void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
+                                            double* out) const {
+  const double r = footprint.radius();
+  const std::size_t n = poses.size();
+  if (field_) {
+    for (std::size_t k = 0; k < n; ++k) out[k] = field_->lower_bound(poses[k].position()) - r;
+  } else {
+    std::fill(out, out + n, std::numeric_limits<double>::infinity());
+  }
+  if (sensed_)
+    for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], sensed_->lower_bound(poses[k].position()) - r);
+  for (const Disc& disc : discs_)
+    for (std::size_t k = 0; k < n; ++k)
+      out[k] = std::min(out[k], (disc.center_at(static_cast<double>(k + 1) * dt) - poses[k].position()).norm() -
+                                    disc.radius - r);
+}
+
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
   double best = field_clearance(field_.get(), footprint, pose);
   if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose));

@@ -144,6 +144,8 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   // close to it: each cell keeps the distinct nearest obstacles of the cells
   // within two of it, usually one to three.
   candidate_start_.assign(n_cells + 1, 0);
+  quarter_lower_bound_.assign(4 * n_cells, kInf);
+  inverse_half_resolution_ = 2.0 / grid.resolution();
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       const std::size_t first = candidates_.size();
@@ -174,6 +176,21 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
       };
       candidates_.erase(std::remove_if(candidates_.begin() + static_cast<std::ptrdiff_t>(first), candidates_.end(), beyond),
                         candidates_.end());
+      // The candidates hold the nearest obstacle of every point of the cell, so
+      // the nearest of them to a quarter of the cell bounds that quarter.
+      for (int qr = 0; qr < 2; ++qr)
+        for (int qc = 0; qc < 2; ++qc) {
+          const Vec2 quarter = centre + Vec2((qc - 0.5) * 0.5 * res, (qr - 0.5) * 0.5 * res);
+          double bound = kInf;
+          for (std::size_t k = first; k < candidates_.size(); ++k) {
+            // Square of half-size res / 2 against a quarter of half-size res / 4.
+            const double dx = std::max(std::abs(quarter.x() - candidates_[k].x()) - 0.75 * res, 0.0);
+            const double dy = std::max(std::abs(quarter.y() - candidates_[k].y()) - 0.75 * res, 0.0);
+            bound = std::min(bound, std::hypot(dx, dy));
+          }
+          quarter_lower_bound_[static_cast<std::size_t>(2 * r + qr) * (2 * cols) + static_cast<std::size_t>(2 * c + qc)] =
+              bound;
+        }
       candidate_start_[grid.index(r, c) + 1] = candidates_.size();
     }
 
@@ -197,6 +214,21 @@ double DistanceField::distance(const Vec2& p) const {
   const double half = 0.5 * res;
   const int rows = grid_.rows(), cols = grid_.cols();
   const Vec2& lo = grid_.origin();
+  // Inside the grid (the common case): the candidates of p's cell.
+  const double gx = (p.x() - lo.x()) * inverse_half_resolution_ * 0.5;
+  const double gy = (p.y() - lo.y()) * inverse_half_resolution_ * 0.5;
+  if (gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows) {
+    const std::size_t cell = grid_.index(static_cast<int>(gy), static_cast<int>(gx));
+    const std::size_t end = candidate_start_[cell + 1];
+    double best = kInf;
+    for (std::size_t k = candidate_start_[cell]; k < end; ++k) {
+      const Vec2& o = candidates_[k];
+      const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
+      const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
+      best = std::min(best, dx * dx + dy * dy);
+    }
+    return std::sqrt(best);
+  }
   const Vec2 hi = lo + Vec2(cols * res, rows * res);
   const auto square_distance = [&](int row, int col) {
     const Vec2 o = grid_.cell_center(row, col);

@@ -221,31 +221,63 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   // A start already in contact is not held against the first step, so the robot can still leave.
   const double start_clearance = world.clearance(footprint_, state.pose, 0.0);
   const double turn_reach = footprint_.is_circle() ? 0.0 : footprint_.radius();
+  bounds_.resize(static_cast<std::size_t>(n_steps_));
+  exact_.resize(static_cast<std::size_t>(n_steps_));
+  const double cos_start = std::cos(state.pose.theta), sin_start = std::sin(state.pose.theta);
+  // Samples come v-major: the turns of the first row serve every row.
+  const std::size_t n_omega = static_cast<std::size_t>(params_.window.n_omega);
+  turns_.clear();
+  arc_factors_.clear();
+  for (std::size_t j = 0; j < std::min(n_omega, n); ++j) {
+    turns_.emplace_back(result_.samples[j].omega, params_.dt);
+    // An arc is longer than its chord v dt by (b / 2) / sin(b / 2), b the turn.
+    const double b = std::abs(result_.samples[j].omega) * params_.dt;
+    arc_factors_.push_back(b < 1e-9 ? 1.0 : (0.5 * b) / std::sin(0.5 * b));
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const Twist& cmd = result_.samples[i];
     Trajectory& poses = rollouts_[i];
-    rollout(state.pose, cmd, params_.dt, n_steps_, poses);
-    // Farthest any footprint point moves per step: the arc (a little longer than
-    // the chord v dt) plus the turn.
-    const double b = std::abs(cmd.omega) * params_.dt;
-    const double arc = b < 1e-9 ? cmd.v * params_.dt : cmd.v * params_.dt * (0.5 * b) / std::sin(0.5 * b);
-    const double sweep_per_step = arc + turn_reach * b;
-    double min_clearance = inf;
+    rollout(state.pose, cos_start, sin_start, cmd.v * params_.dt, turns_[i % n_omega], n_steps_, poses);
+    // Farthest any footprint point moves per step: the arc plus the turn.
+    const double sweep_per_step = cmd.v * params_.dt * arc_factors_[i % n_omega] +
+                                  turn_reach * std::abs(cmd.omega) * params_.dt;
+    // Cheap lower bounds first; exact clearances only where a bound cannot
+    // settle contact or the minimum. The result is the same as evaluating
+    // every pose exactly.
+    world.clearance_lower_bounds(footprint_, poses, params_.dt, bounds_.data());
+    std::fill(exact_.begin(), exact_.end(), std::numeric_limits<double>::quiet_NaN());
+    const auto exact = [&](int k) {
+      double& c = exact_[static_cast<std::size_t>(k)];
+      if (std::isnan(c)) c = world.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt);
+      return c;
+    };
     double free_distance = inf;
-    double previous = start_clearance;
+    int last = n_steps_ - 1;  // the last pose reached: the first in contact, or the end
     for (int k = 0; k < n_steps_; ++k) {
-      const double c = world.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt);
-      min_clearance = std::min(min_clearance, c);
-      const bool clear = c > 0.0 && (k == 0 && previous <= 0.0 ? true
-                                     : clear_between(world, footprint_, state.pose, cmd, params_.dt, k, previous,
-                                                     k + 1, c, sweep_per_step));
+      const double bound = bounds_[static_cast<std::size_t>(k)];
+      const double previous_bound = k == 0 ? start_clearance : bounds_[static_cast<std::size_t>(k - 1)];
+      const bool leaving_contact = k == 0 && start_clearance <= 0.0;
+      if (bound > 0.0 && (leaving_contact || (previous_bound > 0.0 && previous_bound + bound > sweep_per_step)))
+        continue;  // clear at pose k and on the way there
+      const double c = exact(k);
+      const double previous = k == 0 ? start_clearance : exact(k - 1);
+      const bool clear = c > 0.0 && (leaving_contact || clear_between(world, footprint_, state.pose, cmd, params_.dt, k,
+                                                                       previous, k + 1, c, sweep_per_step));
       if (!clear) {
         // Contact at or before pose k + 1: the robot travels k full steps in free space.
         free_distance = k * cmd.v * params_.dt;
+        last = k;
         break;
       }
-      previous = c;
     }
+    // The smallest clearance over poses 0..last: start from the pose with the
+    // smallest bound, then visit only poses whose bound is below the best so far.
+    int first_guess = 0;
+    for (int k = 1; k <= last; ++k)
+      if (bounds_[static_cast<std::size_t>(k)] < bounds_[static_cast<std::size_t>(first_guess)]) first_guess = k;
+    double min_clearance = exact(first_guess);
+    for (int k = 0; k <= last; ++k)
+      if (bounds_[static_cast<std::size_t>(k)] < min_clearance) min_clearance = std::min(min_clearance, exact(k));
     result_.min_clearance[i] = min_clearance;
     result_.free_distance[i] = free_distance;
     result_.reasons[i] = is_admissible(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;

@@ -104,16 +104,22 @@ Pose2 step(const Pose2& pose, const Twist& twist, double dt) {
   return next;
 }
 
+RolloutTurn::RolloutTurn(double omega, double dt)
+    : turn(wrap_angle(omega * dt)), cos_turn(std::cos(omega * dt)), sin_turn(std::sin(omega * dt)) {}
+
 void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out) {
+  rollout(start, std::cos(start.theta), std::sin(start.theta), twist.v * dt, RolloutTurn(twist.omega, dt), n_steps,
+          out);
+}
+
+void rollout(const Pose2& start, double cos_start, double sin_start, double step_length, const RolloutTurn& turn,
+             int n_steps, Trajectory& out) {
   out.resize(static_cast<size_t>(std::max(n_steps, 0)));
   // The heading turns by the same angle every step, so its cosine and sine are
   // advanced by a rotation instead of one sin/cos pair per pose.
-  const double turn = twist.omega * dt;
-  const double cos_turn = std::cos(turn), sin_turn = std::sin(turn);
-  double c = std::cos(start.theta), s = std::sin(start.theta);
+  const double cos_turn = turn.cos_turn, sin_turn = turn.sin_turn, wrapped_turn = turn.turn;
+  double c = cos_start, s = sin_start;
   double x = start.x, y = start.y, theta = wrap_angle(start.theta);
-  const double step_length = twist.v * dt;
-  const double wrapped_turn = wrap_angle(turn);
   for (int k = 0; k < n_steps; ++k) {
     const double c_next = c * cos_turn - s * sin_turn;
     s = s * cos_turn + c * sin_turn;

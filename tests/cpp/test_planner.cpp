@@ -423,3 +423,63 @@ TEST(LocalPlanner, OpenSpaceAdmitsEverySample) {
 
 }  // namespace
 }  // namespace fgdwa
+
+namespace fgdwa {
+namespace {
+
+// The same world without lower bounds: every pose is evaluated exactly.
+class WithoutBounds : public ClearanceSource {
+ public:
+  explicit WithoutBounds(const ClearanceSource& inner) : inner_(inner) {}
+  double clearance(const Footprint& fp, const Pose2& pose, double t) const override {
+    return inner_.clearance(fp, pose, t);
+  }
+
+ private:
+  const ClearanceSource& inner_;
+};
+
+void expect_bounds_change_nothing(const Footprint& footprint) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> where(0.5, 9.5), heading(-M_PI, M_PI), speed(0.0, 1.2), turn(-1.0, 1.0);
+  const OccupancyGrid grid = test::random_rectangles(rng, 100, 100, 0.1, Vec2::Zero(), 0.15);
+  FieldClearance world(std::make_shared<DistanceField>(grid),
+                       {Disc{Vec2(5.0, 5.0), 0.3, Vec2(0.2, -0.1)}});
+  const WithoutBounds exact(world);
+  LocalPlanner bounded(RobotLimits{}, footprint), plain(RobotLimits{}, footprint);
+  int cycles = 0;
+  while (cycles < 60) {
+    const RobotState state{Pose2{where(rng), where(rng), heading(rng)}, Twist{speed(rng), turn(rng)}};
+    if (world.clearance(footprint, state.pose, 0.0) < 0.05) continue;
+    const Vec2 goal(where(rng), where(rng));
+    const PlanResult& a = bounded.plan(state, goal, world);
+    const PlanResult& b = plain.plan(state, goal, exact);
+    ASSERT_EQ(a.best_index, b.best_index);
+    ASSERT_EQ(a.command.v, b.command.v);
+    ASSERT_EQ(a.command.omega, b.command.omega);
+    ASSERT_EQ(a.reasons, b.reasons);
+    ASSERT_EQ(a.free_distance, b.free_distance);
+    ASSERT_EQ(a.min_clearance, b.min_clearance);
+    ++cycles;
+  }
+}
+
+TEST(LocalPlanner, ClearanceBoundsChangeNoResultCircle) { expect_bounds_change_nothing(Footprint::circle(0.25)); }
+
+TEST(LocalPlanner, ClearanceBoundsChangeNoResultPolygon) {
+  expect_bounds_change_nothing(Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}}));
+}
+
+TEST(DistanceField, LowerBoundNeverExceedsTheDistance) {
+  std::mt19937 rng(8);
+  const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.2);
+  const DistanceField field(grid);
+  std::uniform_real_distribution<double> x(-2.0, 8.0), y(-0.5, 7.5);
+  for (int i = 0; i < 20000; ++i) {
+    const Vec2 p(x(rng), y(rng));
+    ASSERT_LE(field.lower_bound(p), field.distance(p) + 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace fgdwa

@@ -5,6 +5,7 @@
 // y in [origin.y + row res, origin.y + (row + 1) res): row 0 is the bottom row.
 // Space outside the grid is free.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "fgdwa/geometry.hpp"
@@ -85,6 +86,16 @@ class DistanceField {
   const std::vector<double>& cell_distances() const { return distances_; }
   bool has_obstacles() const { return has_obstacles_; }
   double distance(const Vec2& p) const;
+  // A value never above distance(p), from one table look-up: the distance
+  // between the quarter of p's cell that holds p and the nearest obstacle
+  // square (0 outside the grid).
+  double lower_bound(const Vec2& p) const {
+    if (!has_obstacles_) return std::numeric_limits<double>::infinity();
+    const double gx = (p.x() - grid_.origin().x()) * inverse_half_resolution_;
+    const double gy = (p.y() - grid_.origin().y()) * inverse_half_resolution_;
+    if (!(gx >= 0.0 && gy >= 0.0 && gx < 2 * grid_.cols() && gy < 2 * grid_.rows())) return 0.0;
+    return quarter_lower_bound_[static_cast<std::size_t>(gy) * (2 * grid_.cols()) + static_cast<std::size_t>(gx)];
+  }
 
  private:
   OccupancyGrid grid_;
@@ -95,6 +106,10 @@ class DistanceField {
   std::vector<Vec2> candidates_;
   // Outermost occupied column of each row and row of each column, -1 for none.
   std::vector<int> row_first_, row_last_, col_first_, col_last_;
+  // Per quarter cell (rows and columns of half a cell): its distance to the
+  // nearest obstacle square, row-major over 2 rows x 2 cols.
+  std::vector<double> quarter_lower_bound_;
+  double inverse_half_resolution_ = 1.0;
   bool has_obstacles_ = false;
 };
 

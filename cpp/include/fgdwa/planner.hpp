@@ -129,6 +129,9 @@ class LocalPlanner {
   int n_steps_;
   std::vector<std::unique_ptr<Critic>> critics_;
   std::vector<Trajectory> rollouts_;
+  std::vector<double> bounds_, exact_;
+  std::vector<RolloutTurn> turns_;  // per omega of the window
+  std::vector<double> arc_factors_;  // per omega: arc length over chord of one step  // per pose of the rollout in hand: clearance lower bound, exact value
   std::unique_ptr<GlobalPath> path_;
   std::unique_ptr<KeyNodeTracker> tracker_;
   PlanResult result_;

@@ -64,4 +64,17 @@ Pose2 step(const Pose2& pose, const Twist& twist, double dt);
 void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out);
 Trajectory rollout(const Pose2& start, const Twist& twist, double dt, int n_steps);
 
+// The turn of one step, omega dt, with its cosine and sine: shared by every
+// command of a window with the same omega.
+struct RolloutTurn {
+  RolloutTurn(double omega, double dt);
+  double turn;  // rad per step, wrapped
+  double cos_turn, sin_turn;
+};
+
+// The same rollout with the trigonometry given: (cos, sin) of the start heading,
+// the step length v dt and the turn per step.
+void rollout(const Pose2& start, double cos_start, double sin_start, double step_length, const RolloutTurn& turn,
+             int n_steps, Trajectory& out);
+
 }  // namespace fgdwa
