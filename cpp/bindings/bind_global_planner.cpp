@@ -92,13 +92,14 @@ void init_global_planner(py::module_& m) {
                           "OMPL's sampling-based planners over the same map, with a weighted cost of path length, "
                           "clearance and terrain risk; seeded and time-bounded.")
       .def(py::init([](const OccupancyGrid& grid, const Footprint& footprint, const std::string& planner,
-                       double time_limit, double range, std::uint32_t seed, py::object inflation_radius, double w_length,
+                       double time_limit, double range, std::uint32_t max_iterations, std::uint32_t seed, py::object inflation_radius, double w_length,
                        double w_clearance, double clearance_reference, const TerrainGrid* terrain, double w_risk,
                        py::handle risk, bool simplify, double interpolation, bool verbose) {
              OmplParams params;
              params.planner = planner;
              params.time_limit = time_limit;
              params.range = range;
+             params.max_iterations = max_iterations;
              params.seed = seed;
              params.inflation_radius = inflation_radius.is_none() ? footprint.radius() : inflation_radius.cast<double>();
              params.w_length = w_length;
@@ -113,7 +114,7 @@ void init_global_planner(py::module_& m) {
              return std::make_unique<OmplPlanner>(grid, footprint, params, t);
            }),
            py::arg("grid"), py::arg("footprint"), py::arg("planner") = "RRTstar", py::arg("time_limit") = 1.0,
-           py::arg("range") = 1.0, py::arg("seed") = 0, py::arg("inflation_radius") = py::none(), py::arg("w_length") = 1.0,
+           py::arg("range") = 1.0, py::arg("max_iterations") = 0, py::arg("seed") = 0, py::arg("inflation_radius") = py::none(), py::arg("w_length") = 1.0,
            py::arg("w_clearance") = 0.5, py::arg("clearance_reference") = 1.0, py::arg("terrain") = nullptr,
            py::arg("w_risk") = 1.0, py::arg("risk") = py::make_tuple(0.0, 0.5, 1.0, 2.0), py::arg("simplify") = true,
            py::arg("interpolation") = 0.1, py::arg("verbose") = false)

@@ -99,6 +99,12 @@ void init_grid(py::module_& m) {
       })
       .def_property_readonly("shape", [](const TerrainGrid& t) { return py::make_tuple(t.rows(), t.cols()); })
       .def_property_readonly("resolution", &TerrainGrid::resolution)
+      .def_property_readonly("origin", [](const TerrainGrid& t) { return py::make_tuple(t.origin().x(), t.origin().y()); })
+      .def_property_readonly("extent",
+                             [](const TerrainGrid& t) {
+                               const double x0 = t.origin().x(), y0 = t.origin().y();
+                               return py::make_tuple(x0, x0 + t.cols() * t.resolution(), y0, y0 + t.rows() * t.resolution());
+                             })
       .def("grade_at", [](const TerrainGrid& t, py::handle p) { return t.grade_at(to_vec2(p, "point")); }, py::arg("point"))
       .def("__repr__", [](const TerrainGrid& t) {
         std::ostringstream s;

@@ -269,7 +269,16 @@ GlobalPlan OmplPlanner::plan(const Vec2& start, const Vec2& goal) const {
     planner->params().setParam("range", std::to_string(im.params.range));
   planner->setProblemDefinition(pdef);
   planner->setup();
-  const ob::PlannerStatus status = planner->solve(im.params.time_limit);
+  ob::PlannerTerminationCondition stop = ob::timedPlannerTerminationCondition(im.params.time_limit);
+  if (im.params.max_iterations > 0) {
+    // Planners ask the condition once per iteration: counting the asks bounds
+    // the work independently of the machine's speed.
+    auto asked = std::make_shared<std::uint64_t>(0);
+    const std::uint64_t limit = im.params.max_iterations;
+    stop = ob::plannerOrTerminationCondition(
+        stop, ob::PlannerTerminationCondition([asked, limit] { return ++*asked > limit; }));
+  }
+  const ob::PlannerStatus status = planner->solve(stop);
 
   GlobalPlan plan;
   if (status == ob::PlannerStatus::EXACT_SOLUTION) {

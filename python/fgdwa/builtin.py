@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fgdwa._core import OccupancyGrid
-from fgdwa.sim import World
+from fgdwa.world import World
 
 
 @dataclass(frozen=True)

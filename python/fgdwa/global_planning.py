@@ -7,7 +7,7 @@ from typing import Optional
 from fgdwa._core import AStarPlanner, FgdwaError, Footprint, GlobalPlan, OccupancyGrid, OmplPlanner, TerrainGrid
 
 _ASTAR_OPTIONS = {"inflation_radius", "simplify", "terrain", "w_risk", "risk"}
-_OMPL_OPTIONS = {"footprint", "time_limit", "range", "seed", "inflation_radius", "w_length", "w_clearance",
+_OMPL_OPTIONS = {"footprint", "time_limit", "range", "max_iterations", "seed", "inflation_radius", "w_length", "w_clearance",
                  "clearance_reference", "terrain", "w_risk", "risk", "simplify", "interpolation", "verbose"}
 
 
@@ -23,7 +23,8 @@ def plan_global(grid: OccupancyGrid, start, goal, method: str = "astar",
     ``method`` is ``"astar"`` or ``"ompl:NAME"`` with NAME one of RRTstar,
     InformedRRTstar, PRMstar, BITstar, RRTConnect. Options go to the planner:
     A*: inflation_radius, simplify, w_risk, risk; OMPL: footprint, time_limit,
-    range, seed, inflation_radius, w_length, w_clearance, clearance_reference,
+    range, max_iterations, seed (the same seed repeats a path when
+    max_iterations, not the time limit, ends the search), inflation_radius, w_length, w_clearance, clearance_reference,
     w_risk, risk, simplify, interpolation, verbose. No path is a status in the
     result; a start or goal inside an obstacle raises FgdwaError.
     """

@@ -12,20 +12,27 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
-from fgdwa.sim import EpisodeResult, World  # noqa: E402
+from fgdwa.sim import EpisodeResult  # noqa: E402
+from fgdwa.world import World  # noqa: E402
 
 
 def draw_world(ax, world: World, t: float = 0.0) -> None:
-    """The map in grey, obstacles missing from it in orange, discs as circles at time ``t``."""
+    """Terrain grades in browns, the map in grey, obstacles missing from it in
+    orange, moving obstacles as circles at time ``t``."""
+    if world.terrain is not None:
+        grades = np.ma.masked_equal(world.terrain.grades, 0)
+        ax.imshow(grades, cmap="copper_r", vmin=0, vmax=5, origin="lower", extent=world.terrain.extent,
+                  interpolation="nearest", alpha=0.6)
     if world.grid is not None:
-        ax.imshow(world.grid.cells, cmap="Greys", vmin=0, vmax=1.6, origin="lower",
+        cells = np.ma.masked_equal(world.grid.cells, 0) if world.terrain is not None else world.grid.cells
+        ax.imshow(cells, cmap="Greys", vmin=0, vmax=1.6, origin="lower",
                   extent=world.grid.extent, interpolation="nearest")
     if world.hidden is not None:
         hidden = np.ma.masked_equal(world.hidden.cells, 0)
         ax.imshow(hidden, cmap="Oranges", vmin=0, vmax=1.3, origin="lower", extent=world.hidden.extent,
                   interpolation="nearest")
-    for disc in world.discs:
-        ax.add_patch(plt.Circle(disc.center_at(t), max(disc.radius, 0.05), color="0.25"))
+    for disc in world.discs_at(t):
+        ax.add_patch(plt.Circle(disc.center, max(disc.radius, 0.05), color="tab:purple", alpha=0.7))
 
 
 def draw_rollout_fan(ax, rollouts: np.ndarray, totals: np.ndarray, best_index: int) -> None:

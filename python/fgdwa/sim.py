@@ -33,49 +33,18 @@ from fgdwa._core import (
     RobotLimits,
     RobotState,
     Status,
+    Twist,
     obstacle_density,
     planner_preset,
     points_field,
     step,
 )
 from fgdwa.global_planning import plan_global
+from fgdwa.metrics import danger_point_clearance, danger_points, smoothness
+from fgdwa.world import MovingObstacle, World  # noqa: F401  (World is part of this module's API)
 
-OUTCOMES = ("success", "collision", "timeout")
+OUTCOMES = ("success", "collision", "fall", "timeout")
 GLOBAL_PATH_MARGIN = 0.3  # m kept beyond the footprint's radius by the global path where the map allows
-
-
-@dataclass(frozen=True)
-class World:
-    """What exists, and what of it the planners know.
-
-    ``grid`` is the map, known to the global and local planners. ``hidden``
-    (same cell layout) holds static obstacles missing from the map, and the
-    discs move; the planner sees both only through the lidar, except that
-    ``discs_known`` hands it the discs' true positions and velocities.
-    """
-
-    grid: Optional[OccupancyGrid] = None
-    discs: Sequence[Disc] = ()
-    hidden: Optional[OccupancyGrid] = None
-    discs_known: bool = True
-
-    def __post_init__(self):
-        if self.hidden is not None:
-            if self.grid is None:
-                raise FgdwaError("hidden obstacles need a map grid with the same cell layout")
-            if self.hidden.shape != self.grid.shape or self.hidden.resolution != self.grid.resolution \
-                    or self.hidden.origin != self.grid.origin:
-                raise FgdwaError(f"hidden: its layout {self.hidden!r} differs from the map's {self.grid!r}")
-
-    def discs_at(self, t: float) -> list:
-        """The discs moved ``t`` seconds ahead, velocities kept."""
-        return [Disc(d.center_at(t), d.radius, d.velocity) for d in self.discs]
-
-    def true_grid(self) -> Optional[OccupancyGrid]:
-        """The map with the hidden obstacles added: what really stands there."""
-        if self.hidden is None:
-            return self.grid
-        return OccupancyGrid(self.grid.cells | self.hidden.cells, self.grid.resolution, self.grid.origin)
 
 
 @dataclass
@@ -92,6 +61,10 @@ class EpisodeResult:
     poses: np.ndarray  # (steps + 1, 3) x, y, theta, start included
     commands: np.ndarray  # (steps, 2) v, omega
     clearances: np.ndarray  # (steps + 1,) m
+    danger_clearance: float = float("nan")  # m, mean obstacle distance at the global path's danger points
+    mean_deviation: float = float("nan")  # m, from the global path
+    max_deviation: float = float("nan")  # m
+    smoothness: float = 0.0  # rad/s, sum of |change of omega| between cycles
     statuses: list = field(default_factory=list)
     cycle_times: np.ndarray = field(default_factory=lambda: np.zeros(0))  # s, per cycle
     last_plan: Optional[PlanResult] = None
@@ -115,6 +88,10 @@ class EpisodeResult:
             "mileage": self.mileage,
             "min_clearance": self.min_clearance,
             "mean_clearance": self.mean_clearance,
+            "danger_clearance": self.danger_clearance,
+            "mean_deviation": self.mean_deviation,
+            "max_deviation": self.max_deviation,
+            "smoothness": self.smoothness,
         }
 
 
@@ -174,6 +151,7 @@ def run_episode(
     window: Optional[DetectWindowParams] = None,
     weight_policy=None,
     seed: int = 0,
+    danger_clearance: Optional[float] = None,
 ) -> EpisodeResult:
     """Drive from ``start`` (x, y, theta, at rest) to ``goal`` (x, y).
 
@@ -196,6 +174,11 @@ def run_episode(
     ``weights(I, D) -> (beta, delta)``, e.g. ``FuzzyWeightPolicy``) then sets the
     clearance weight beta and, when the planner has one, the similarity weight
     delta each cycle.
+
+    Terrain (``world.terrain``) caps the executed speed at the passing factor of
+    the grade under the robot times ``limits.v_max``; entering grade 4 ends the
+    episode as a fall. Danger points are the global path's points whose static
+    clearance is below ``danger_clearance`` (default: footprint radius + 0.3 m).
     """
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
@@ -212,11 +195,11 @@ def run_episode(
         raise FgdwaError("weight_policy: the obstacle density it reads needs a lidar")
     window = window if window is not None else DetectWindowParams()
     true_grid = world.true_grid()
-    truth = CollisionWorld(true_grid, list(world.discs))
+    truth = CollisionWorld(true_grid, world.discs_at(0.0))
     if truth.in_collision(footprint, start_pose, 0.0):
         raise FgdwaError(f"start = {tuple(start_pose)}: the robot's footprint there overlaps an obstacle")
     map_field = DistanceField(world.grid) if world.grid is not None else None
-    seen = FieldClearance(map_field, list(world.discs) if world.discs_known else [])
+    seen = FieldClearance(map_field, world.discs_at(0.0) if world.discs_known else [])
     scanner = None
     if lidar is not None:
         true_field = DistanceField(true_grid) if true_grid is not None else None
@@ -224,6 +207,8 @@ def run_episode(
     sensed_resolution = world.grid.resolution if world.grid is not None else 0.1
     planner = LocalPlanner(limits, footprint, params)
     has_similarity = "similarity" in [c.name for c in params.critics]
+    if world.grade_at(start_pose[:2]) >= 4:
+        raise FgdwaError(f"start = {tuple(start_pose)}: on impassable terrain (grade 4)")
     path = _global_path(world, start_pose, goal_point, footprint, params, global_path, global_method, global_options)
     if path is not None:
         planner.set_global_path(path)
@@ -275,13 +260,21 @@ def run_episode(
         statuses.append(plan.status.name)
         targets.append(plan.target)
         command = plan.command
+        # Steep ground slows the robot whatever it was told.
+        factor = world.passing_factors[world.grade_at(position)]
+        command = Twist(min(command.v, factor * limits.v_max), command.omega)
         pose = step(state.pose, command, dt)
         state = RobotState(pose, command)
         commands.append((command.v, command.omega))
         poses.append(np.array([pose.x, pose.y, pose.theta]))
-        clearances.append(truth.clearance(footprint, pose, t + dt))
-        if collides_during_step(truth, footprint, poses[-2], poses[-1], t, dt):
+        if world.has_moving:
+            truth.discs = discs_now
+        clearances.append(truth.clearance(footprint, pose, dt))
+        if collides_during_step(truth, footprint, poses[-2], poses[-1], 0.0, dt):
             outcome = "collision"
+            break
+        if world.terrain is not None and _falls(world, poses[-2], poses[-1]):
+            outcome = "fall"
             break
     else:
         position = np.array([state.pose.x, state.pose.y])
@@ -290,6 +283,14 @@ def run_episode(
 
     poses_arr = np.array(poses)
     clear_arr = np.array(clearances, dtype=float)
+    deviations = np.array(deviation, dtype=float)
+    deviations = deviations[np.isfinite(deviations)]
+    danger = float("nan")
+    if path is not None and true_grid is not None:
+        static = DistanceField(true_grid)
+        threshold = footprint.radius + 0.3 if danger_clearance is None else float(danger_clearance)
+        points = danger_points(path.points, static, threshold)
+        danger = danger_point_clearance(poses_arr[:, :2], points, static)
     finite = clear_arr[np.isfinite(clear_arr)]
     steps = len(commands)
     return EpisodeResult(
@@ -300,6 +301,10 @@ def run_episode(
         mileage=path_length(poses_arr),
         min_clearance=float(np.min(clear_arr)) if len(clear_arr) else float("inf"),
         mean_clearance=float(np.mean(finite)) if len(finite) else float("inf"),
+        danger_clearance=danger,
+        mean_deviation=float(np.mean(deviations)) if len(deviations) else float("nan"),
+        max_deviation=float(np.max(deviations)) if len(deviations) else float("nan"),
+        smoothness=smoothness(np.array(commands, dtype=float).reshape(-1, 2)),
         poses=poses_arr,
         commands=np.array(commands, dtype=float).reshape(-1, 2),
         clearances=clear_arr,
@@ -316,6 +321,16 @@ def run_episode(
         delta=np.array(deltas, dtype=float),
         last_scan=scan,
     )
+
+
+def _falls(world: World, before, after, spacing: float = 0.05) -> bool:
+    """Whether the robot's centre enters grade-4 terrain during a step."""
+    pieces = max(1, int(np.ceil(np.hypot(after[0] - before[0], after[1] - before[1]) / spacing)))
+    for i in range(1, pieces + 1):
+        f = i / pieces
+        if world.grade_at((before[0] + f * (after[0] - before[0]), before[1] + f * (after[1] - before[1]))) >= 4:
+            return True
+    return False
 
 
 def _unexplained(hits: np.ndarray, map_field: Optional[DistanceField], discs: Sequence[Disc],
@@ -348,7 +363,8 @@ def _global_path(world: World, start, goal, footprint: Footprint, params: Planne
     radii = [options.pop("inflation_radius")] if "inflation_radius" in options else \
         [footprint.radius + GLOBAL_PATH_MARGIN, footprint.radius]
     for radius in radii:
-        plan = plan_global(world.grid, start[:2], goal, method=method, inflation_radius=radius, **options)
+        plan = plan_global(world.grid, start[:2], goal, method=method, terrain=world.terrain,
+                           inflation_radius=radius, **options)
         if plan.status == GlobalStatus.Found:
             break
     if plan.status != GlobalStatus.Found:

@@ -118,7 +118,7 @@ def test_ompl_paths_are_valid_and_no_shorter_than_the_straight_line(method):
     cells[25:35, -8:] = 0
     grid = fgdwa.OccupancyGrid(cells, 0.1)
     start, goal = np.array([0.4, 3.0]), np.array([7.6, 3.0])
-    result = plan_global(grid, start, goal, method=method, time_limit=0.3, seed=3,
+    result = plan_global(grid, start, goal, method=method, time_limit=10.0, max_iterations=3000, seed=3,
                          footprint=fgdwa.Footprint.circle(0.15))
     assert result.status == fgdwa.GlobalStatus.Found
     np.testing.assert_allclose(result.path[0], start)
@@ -134,7 +134,8 @@ def test_ompl_same_seed_same_path():
     cells[:6, :6] = 0
     cells[-6:, -6:] = 0
     grid = fgdwa.OccupancyGrid(cells, 0.1)
-    runs = [plan_global(grid, (0.3, 0.3), (4.7, 4.7), method="ompl:RRTstar", time_limit=0.15, seed=seed,
+    runs = [plan_global(grid, (0.3, 0.3), (4.7, 4.7), method="ompl:RRTstar", time_limit=30.0, max_iterations=1500,
+                        seed=seed,
                         footprint=fgdwa.Footprint.circle(0.1)) for seed in (7, 7)]
     assert runs[0].found
     np.testing.assert_array_equal(runs[0].path, runs[1].path)

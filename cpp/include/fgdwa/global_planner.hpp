@@ -85,7 +85,9 @@ struct OmplParams {
   std::string planner = "RRTstar";  // RRTstar, InformedRRTstar, PRMstar, BITstar, RRTConnect
   double time_limit = 1.0;          // s
   double range = 1.0;               // m, longest tree edge of the planners that have one; 0 = OMPL's default
-  std::uint32_t seed = 0;           // runs with the same seed and inputs give the same path
+  std::uint32_t max_iterations = 0; // stop after this many planner iterations too; 0 = time only
+  std::uint32_t seed = 0;           // with max_iterations binding, the same seed gives the same path; a time
+                                    // budget alone lets the machine's speed decide how far the search gets
   double inflation_radius = 0.25;   // m, for a circle footprint
   double w_length = 1.0;            // weight of path length in the cost
   double w_clearance = 0.5;         // weight of the clearance cost
