@@ -1,0 +1,132 @@
+"""A scenario: a world, a robot, a task and how trials of it vary (SPEC 9, 10).
+
+``run_scenario(scenario, planner, seed)`` runs one trial: the seed draws the
+start's jitter, the moving obstacles' phases and the lidar's noise, so the same
+seed gives the same episode, bit for bit.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+from typing import Optional
+
+import numpy as np
+
+from fgdwa._core import (
+    DetectWindowParams,
+    FgdwaError,
+    Footprint,
+    LidarParams,
+    PlannerParams,
+    PlannerPreset,
+    RobotLimits,
+    planner_preset,
+)
+from fgdwa.sim import EpisodeResult, run_episode
+from fgdwa.world import World
+
+PARAM_FIELDS = ("dt", "sim_time", "n_v", "n_omega", "normalization", "braking", "goal_tolerance", "heading_target",
+                "key_node_angle_deg", "key_node_radius", "critics")
+
+
+@dataclass(frozen=True)
+class Variability:
+    """How trials of a scenario differ; each draw comes from the trial's seed."""
+
+    start_xy_std: float = 0.05  # m, Gaussian jitter of the start position
+    start_theta_std: float = 0.05  # rad, Gaussian jitter of the start heading
+    mover_phase: bool = True  # start each moving obstacle at a random point of its route
+    lidar_noise_std: float = 0.01  # m, Gaussian range noise
+
+    def __post_init__(self):
+        for name in ("start_xy_std", "start_theta_std", "lidar_noise_std"):
+            value = getattr(self, name)
+            if not (np.isfinite(value) and value >= 0):
+                raise FgdwaError(f"variability {name} = {value!r}: must be a finite number >= 0")
+
+
+@dataclass(frozen=True)
+class Scenario:
+    name: str
+    world: World
+    start: tuple  # (x, y, theta)
+    goal: tuple  # (x, y)
+    description: str = ""
+    limits: RobotLimits = field(default_factory=RobotLimits)
+    footprint: Footprint = field(default_factory=lambda: Footprint.circle(0.25))
+    planner: str = "fgdwa"  # the preset run when none is named
+    overrides: dict = field(default_factory=dict)  # PlannerParams fields replacing the preset's
+    global_method: str = "astar"
+    global_options: dict = field(default_factory=dict)
+    lidar: LidarParams = field(default_factory=LidarParams)
+    window: DetectWindowParams = field(default_factory=DetectWindowParams)
+    variability: Variability = field(default_factory=Variability)
+    max_steps: int = 1500
+    goal_tolerance: Optional[float] = None  # m; default the planner's
+
+    def __post_init__(self):
+        unknown = set(self.overrides) - set(PARAM_FIELDS)
+        if unknown:
+            raise FgdwaError(f"scenario {self.name}: unknown planner override(s) {sorted(unknown)} "
+                             f"(known: {', '.join(PARAM_FIELDS)})")
+
+
+def params_with(params: PlannerParams, **overrides) -> PlannerParams:
+    """A copy of ``params`` with some fields replaced (PlannerParams is immutable)."""
+    unknown = set(overrides) - set(PARAM_FIELDS)
+    if unknown:
+        raise FgdwaError(f"planner override(s) {sorted(unknown)} unknown (known: {', '.join(PARAM_FIELDS)})")
+    values = {name: getattr(params, name) for name in PARAM_FIELDS}
+    values.update(overrides)
+    return PlannerParams(**values)
+
+
+def resolve_planner(scenario: Scenario, planner=None) -> PlannerPreset:
+    """The preset to run: ``planner`` (a name or a PlannerPreset) or the scenario's."""
+    if isinstance(planner, PlannerPreset):
+        return planner
+    return planner_preset(planner or scenario.planner)
+
+
+def trial_variation(scenario: Scenario, seed: int) -> tuple:
+    """(start pose, world, lidar) of one trial: the seed's draws applied to the scenario."""
+    rng = np.random.default_rng(int(seed))
+    v = scenario.variability
+    start = np.asarray(scenario.start, dtype=float) + np.array(
+        [rng.normal(0, v.start_xy_std), rng.normal(0, v.start_xy_std), rng.normal(0, v.start_theta_std)])
+    world = scenario.world
+    if v.mover_phase and world.movers:
+        movers = [dataclasses.replace(m, phase=m.phase + float(rng.uniform(0.0, _period(m))))
+                  for m in world.movers]
+        world = dataclasses.replace(world, movers=tuple(movers))
+    lidar = scenario.lidar
+    if v.lidar_noise_std > 0:
+        lidar = LidarParams(fov_deg=lidar.fov_deg, beams=lidar.beams, max_range=lidar.max_range,
+                            noise_std=v.lidar_noise_std)
+    return start, world, lidar
+
+
+def _period(mover) -> float:
+    """Time (s) for a mover to come back to where it was: its route over its speed."""
+    if mover.waypoints is None or mover.speed <= 0:
+        return 0.0
+    legs = np.diff(mover._route(), axis=0)
+    return float(np.hypot(legs[:, 0], legs[:, 1]).sum() / mover.speed)
+
+
+def run_scenario(scenario: Scenario, planner=None, seed: int = 0, **kwargs) -> EpisodeResult:
+    """One trial of ``scenario`` with a named planner (default the scenario's).
+
+    Every planner senses with the scenario's lidar (obstacles missing from the
+    map and moving ones reach it only that way); a fuzzy preset also reads its
+    weights from the scan. Keyword arguments go to ``run_episode``.
+    """
+    preset = resolve_planner(scenario, planner)
+    params = params_with(preset.params, **scenario.overrides) if scenario.overrides else preset.params
+    start, world, lidar = trial_variation(scenario, seed)
+    options = dict(global_method=scenario.global_method, global_options=dict(scenario.global_options),
+                   max_steps=scenario.max_steps, goal_tolerance=scenario.goal_tolerance, window=scenario.window)
+    options.update(kwargs)
+    return run_episode(world, start, scenario.goal, limits=scenario.limits, footprint=scenario.footprint,
+                       params=params, lidar=lidar, weight_policy=preset.weight_policy(), seed=seed, **options)
