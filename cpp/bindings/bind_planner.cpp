@@ -59,15 +59,6 @@ Normalization normalization_from_string(const std::string& name) {
   throw Error("normalization = '" + name + "': expected 'sum' or 'minmax'");
 }
 
-py::array_t<double> twists_array(const std::vector<Twist>& samples) {
-  py::array_t<double> out({static_cast<py::ssize_t>(samples.size()), py::ssize_t{2}});
-  auto a = out.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    a(i, 0) = samples[i].v;
-    a(i, 1) = samples[i].omega;
-  }
-  return out;
-}
 }  // namespace
 
 void init_planner(py::module_& m) {

@@ -41,13 +41,7 @@ void init_window(py::module_& m) {
         params.validate();
         std::vector<Twist> samples;
         sample_window(w, to_twist(current, "current"), params, samples);
-        py::array_t<double> out({static_cast<py::ssize_t>(samples.size()), py::ssize_t{2}});
-        auto a = out.mutable_unchecked<2>();
-        for (std::size_t i = 0; i < samples.size(); ++i) {
-          a(i, 0) = samples[i].v;
-          a(i, 1) = samples[i].omega;
-        }
-        return out;
+        return twists_array(samples);
       },
       py::arg("window"), py::arg("current"), py::arg("n_v") = 21, py::arg("n_omega") = 21,
       "(n_v * n_omega, 2) sampled commands (v, omega), v-major.");

@@ -87,4 +87,14 @@ py::array_t<double> points_array(const std::vector<Vec2>& points) {
   return out;
 }
 
+py::array_t<double> twists_array(const std::vector<Twist>& twists) {
+  py::array_t<double> out({static_cast<py::ssize_t>(twists.size()), py::ssize_t{2}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < twists.size(); ++i) {
+    a(i, 0) = twists[i].v;
+    a(i, 1) = twists[i].omega;
+  }
+  return out;
+}
+
 }  // namespace fgdwa::py_convert

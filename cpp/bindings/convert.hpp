@@ -27,6 +27,8 @@ std::vector<Vec2> to_points(py::handle obj, const std::string& name);
 
 py::array_t<double> poses_to_array(const Trajectory& poses);
 py::array_t<double> points_array(const std::vector<Vec2>& points);
+// (n, 2) commands (v, omega).
+py::array_t<double> twists_array(const std::vector<Twist>& twists);
 // A CriticConfig from Python: numeric params go to `params`, words to `options`.
 CriticConfig critic_config(std::string name, double weight, const py::dict& params);
 

@@ -2,21 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from fgdwa._core import OccupancyGrid
+from fgdwa.scenario import Scenario
 from fgdwa.world import World
-
-
-@dataclass(frozen=True)
-class Scenario:
-    name: str
-    world: World
-    start: tuple  # (x, y, theta)
-    goal: tuple  # (x, y)
-    description: str = ""
 
 
 def _fill(cells: np.ndarray, resolution: float, x0: float, y0: float, x1: float, y1: float) -> None:
