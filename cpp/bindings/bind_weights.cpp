@@ -11,9 +11,37 @@
 namespace py = pybind11;
 using namespace fgdwa;
 
+namespace {
+// Lets a Python class derive from WeightPolicy and define weights(density, deviation) -> (beta, delta).
+class PyWeightPolicy : public WeightPolicy {
+ public:
+  std::string name() const override {
+    py::gil_scoped_acquire gil;
+    py::function f = py::get_override(static_cast<const WeightPolicy*>(this), "name");
+    return f ? f().cast<std::string>() : std::string("python");
+  }
+  WeightPair weights(double density, double deviation) const override {
+    py::gil_scoped_acquire gil;
+    py::function f = py::get_override(static_cast<const WeightPolicy*>(this), "weights");
+    if (!f) throw Error("a WeightPolicy subclass must define weights(density, deviation)");
+    const py::object result = f(density, deviation);
+    py::sequence pair;
+    try {
+      pair = result.cast<py::sequence>();
+    } catch (const py::cast_error&) {
+    }
+    if (!pair || pair.size() != 2) throw Error("WeightPolicy.weights must return (beta, delta)");
+    return {pair[0].cast<double>(), pair[1].cast<double>()};
+  }
+};
+}  // namespace
+
 void init_weights(py::module_& m) {
-  py::class_<WeightPolicy, std::shared_ptr<WeightPolicy>>(
-      m, "WeightPolicy", "Sets the clearance weight beta and the similarity weight delta from I and D each cycle.")
+  py::class_<WeightPolicy, PyWeightPolicy, std::shared_ptr<WeightPolicy>>(
+      m, "WeightPolicy",
+      "Sets the clearance weight beta and the similarity weight delta from I and D each cycle. Derive from it in "
+      "Python (call super().__init__()) and define weights(density, deviation) -> (beta, delta).")
+      .def(py::init<>())
       .def_property_readonly("name", &WeightPolicy::name)
       .def(
           "weights",

@@ -18,6 +18,7 @@ void init_global_planner(py::module_& m);
 void init_planner(py::module_& m);
 void init_fuzzy(py::module_& m);
 void init_weights(py::module_& m);
+void init_controller(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "fgdwa's C++ core: robot model, grids, collision, dynamic window, critics and planner.";
@@ -36,4 +37,5 @@ PYBIND11_MODULE(_core, m) {
   init_planner(m);
   init_fuzzy(m);
   init_weights(m);
+  init_controller(m);
 }

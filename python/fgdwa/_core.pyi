@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'CriticConfig', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -996,8 +996,10 @@ class MamdaniEngine:
         ...
 class WeightPolicy:
     """
-    Sets the clearance weight beta and the similarity weight delta from I and D each cycle.
+    Sets the clearance weight beta and the similarity weight delta from I and D each cycle. Derive from it in Python (call super().__init__()) and define weights(density, deviation) -> (beta, delta).
     """
+    def __init__(self) -> None:
+        ...
     def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
         """
         (beta, delta) for obstacle density I and path deviation D (m).
@@ -1045,6 +1047,57 @@ class PlannerPreset:
         ...
     @property
     def params(self) -> PlannerParams:
+        ...
+class CycleReport:
+    """
+    What a control cycle sensed and how it weighed it.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def beta(self) -> float:
+        """
+        Clearance weight used; NaN without that critic.
+        """
+    @property
+    def delta(self) -> float:
+        """
+        Similarity weight used; NaN without that critic.
+        """
+    @property
+    def density(self) -> float:
+        """
+        I; NaN without a scan.
+        """
+    @property
+    def deviation(self) -> float:
+        """
+        D (m); NaN without a global path.
+        """
+    @property
+    def sensed_points(self) -> int:
+        """
+        Lidar hits that neither the map nor the known discs explain.
+        """
+class Controller:
+    """
+    One control cycle as a robot runs it: scan -> obstacles the map lacks and density I; global path -> deviation D; weight policy -> beta, delta; planner -> command.
+    """
+    def __init__(self, limits: RobotLimits, footprint: Footprint, params: PlannerParams = ..., map: DistanceField = None, policy: WeightPolicy = None, window: DetectWindowParams = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def set_global_path(self, path: typing.Any) -> None:
+        ...
+    def step(self, state: RobotState, goal: typing.Any, scan: Scan = None, discs: collections.abc.Sequence[Disc] = []) -> PlanResult:
+        """
+        One cycle toward goal with this cycle's scan (or None) and the known moving discs placed now.
+        """
+    @property
+    def planner(self) -> LocalPlanner:
+        ...
+    @property
+    def report(self) -> CycleReport:
         ...
 def angle_difference(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """

@@ -15,17 +15,16 @@ import numpy as np
 
 from fgdwa._core import (
     CollisionWorld,
+    Controller,
     DetectWindowParams,
     Disc,
     DistanceField,
     FgdwaError,
-    FieldClearance,
     Footprint,
     GlobalPath,
     GlobalStatus,
     LaserScanner,
     LidarParams,
-    LocalPlanner,
     OccupancyGrid,
     PlannerPreset,
     PlannerParams,
@@ -34,9 +33,7 @@ from fgdwa._core import (
     RobotState,
     Status,
     Twist,
-    obstacle_density,
     planner_preset,
-    points_field,
     step,
 )
 from fgdwa.global_planning import plan_global
@@ -171,7 +168,7 @@ def run_episode(
     ``seed``): hits the map does not explain become obstacles for the local
     planner, and the obstacle density I of the detect window (``window``) is
     recorded with the path deviation D. A ``weight_policy`` (anything with
-    ``weights(I, D) -> (beta, delta)``, e.g. ``FuzzyWeightPolicy``) then sets the
+    a ``WeightPolicy``: ``FuzzyWeights``, ``FixedWeights`` or a Python subclass) then sets the
     clearance weight beta and, when the planner has one, the similarity weight
     delta each cycle.
 
@@ -199,19 +196,15 @@ def run_episode(
     if truth.in_collision(footprint, start_pose, 0.0):
         raise FgdwaError(f"start = {tuple(start_pose)}: the robot's footprint there overlaps an obstacle")
     map_field = DistanceField(world.grid) if world.grid is not None else None
-    seen = FieldClearance(map_field, world.discs_at(0.0) if world.discs_known else [])
     scanner = None
     if lidar is not None:
         true_field = DistanceField(true_grid) if true_grid is not None else None
         scanner = LaserScanner(lidar, true_field)
-    sensed_resolution = world.grid.resolution if world.grid is not None else 0.1
-    planner = LocalPlanner(limits, footprint, params)
-    has_similarity = "similarity" in [c.name for c in params.critics]
-    if world.grade_at(start_pose[:2]) >= 4:
-        raise FgdwaError(f"start = {tuple(start_pose)}: on impassable terrain (grade 4)")
+    controller = Controller(limits, footprint, params, map_field, weight_policy, window)
+    planner = controller.planner
     path = _global_path(world, start_pose, goal_point, footprint, params, global_path, global_method, global_options)
     if path is not None:
-        planner.set_global_path(path)
+        controller.set_global_path(path)
 
     dt = params.dt
     state = RobotState(start_pose, (0.0, 0.0))
@@ -234,27 +227,15 @@ def run_episode(
         t = k * dt
         tic = time.perf_counter()
         discs_now = world.discs_at(t)
-        if world.discs_known:
-            seen.discs = discs_now
-        reading_i = reading_d = np.nan
         if scanner is not None:
             scan = scanner.scan(state.pose, discs_now, 0.0, seed=int(seed) * 1_000_003 + k)
-            seen.sensed = points_field(_unexplained(scan.hit_points, map_field, seen.discs, sensed_resolution),
-                                       sensed_resolution)
-            reading_i = obstacle_density(scan, window).density
-        if path is not None:
-            reading_d = path.deviation(position)
-        if weight_policy is not None:
-            beta, delta = weight_policy.weights(reading_i, 0.0 if np.isnan(reading_d) else reading_d)
-            planner.set_weight("clearance", beta)
-            if has_similarity:
-                planner.set_weight("similarity", delta)
-        plan = planner.plan(state, goal_point, seen)
+        plan = controller.step(state, goal_point, scan, discs_now if world.discs_known else [])
         cycle_times.append(time.perf_counter() - tic)
-        density.append(reading_i)
-        deviation.append(reading_d)
-        betas.append(planner.weight("clearance") if "clearance" in plan.critic_names else np.nan)
-        deltas.append(planner.weight("similarity") if has_similarity else np.nan)
+        report = controller.report
+        density.append(report.density)
+        deviation.append(report.deviation)
+        betas.append(report.beta)
+        deltas.append(report.delta)
         last_plan = plan
         last_rollouts = planner.rollouts()
         statuses.append(plan.status.name)
@@ -331,19 +312,6 @@ def _falls(world: World, before, after, spacing: float = 0.05) -> bool:
         if world.grade_at((before[0] + f * (after[0] - before[0]), before[1] + f * (after[1] - before[1]))) >= 4:
             return True
     return False
-
-
-def _unexplained(hits: np.ndarray, map_field: Optional[DistanceField], discs: Sequence[Disc],
-                 resolution: float) -> np.ndarray:
-    """The lidar hits that neither the map nor the known discs account for."""
-    if len(hits) == 0:
-        return hits
-    keep = np.ones(len(hits), dtype=bool)
-    if map_field is not None:
-        keep &= map_field.distance(hits) > 0.5 * resolution
-    for disc in discs:
-        keep &= np.hypot(*(hits - np.asarray(disc.center)).T) > disc.radius + 0.5 * resolution
-    return hits[keep]
 
 
 def _global_path(world: World, start, goal, footprint: Footprint, params: PlannerParams, given, method: str,

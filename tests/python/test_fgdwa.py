@@ -64,3 +64,25 @@ def test_fixed_presets_keep_their_weights():
     result = run_preset(scenario.world, scenario.start, scenario.goal, "gdwa_high_safety", max_steps=30)
     assert np.all(result.beta == 1.0) and np.all(result.delta == 0.5)
     assert np.all(np.isnan(result.density))  # a fixed preset needs no lidar unless asked
+
+
+def test_controller_runs_the_cycle_a_robot_would():
+    scenario = unknown_beside_path_scenario()
+    grid = scenario.world.grid
+    truth = fgdwa.DistanceField(scenario.world.true_grid())
+    preset = fgdwa.planner_preset("fgdwa")
+    controller = fgdwa.Controller(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.25), preset.params,
+                                  fgdwa.DistanceField(grid), preset.weight_policy())
+    controller.set_global_path([[1.0, 3.0], [15.0, 3.0]])
+    state = fgdwa.RobotState((3.6, 3.2, 0.0), (0.8, 0.0))  # the first unknown block is 0.4 m ahead-left
+    scan = fgdwa.LaserScanner(fgdwa.LidarParams(), truth).scan(state.pose)
+    plan = controller.step(state, (15.0, 3.0), scan)
+    report = controller.report
+    assert plan.status == fgdwa.Status.Ok
+    assert report.sensed_points > 10  # the block is not on the map
+    assert report.density == pytest.approx(fgdwa.obstacle_density(scan).density)
+    assert report.deviation == pytest.approx(0.2)
+    assert (report.beta, report.delta) == pytest.approx(preset.weight_policy().weights(report.density, 0.2))
+    assert plan.weights[plan.critic_names.index("clearance")] == report.beta
+    with pytest.raises(fgdwa.FgdwaError, match="needs a scan"):
+        controller.step(state, (15.0, 3.0), None)

@@ -94,7 +94,7 @@ def test_hidden_layout_must_match_the_map():
 def test_weight_policy_needs_a_lidar():
     scenario = demo_scenario()
 
-    class Constant:
+    class Constant(fgdwa.WeightPolicy):
         def weights(self, density, deviation):
             return 0.2, 0.0
 

@@ -1,0 +1,54 @@
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <sstream>
+
+#include "convert.hpp"
+#include "fgdwa/controller.hpp"
+
+namespace py = pybind11;
+using namespace fgdwa;
+using namespace fgdwa::py_convert;
+
+void init_controller(py::module_& m) {
+  py::class_<CycleReport>(m, "CycleReport", "What a control cycle sensed and how it weighed it.")
+      .def_readonly("density", &CycleReport::density, "I; NaN without a scan.")
+      .def_readonly("deviation", &CycleReport::deviation, "D (m); NaN without a global path.")
+      .def_readonly("beta", &CycleReport::beta, "Clearance weight used; NaN without that critic.")
+      .def_readonly("delta", &CycleReport::delta, "Similarity weight used; NaN without that critic.")
+      .def_readonly("sensed_points", &CycleReport::sensed_points,
+                    "Lidar hits that neither the map nor the known discs explain.")
+      .def("__repr__", [](const CycleReport& r) {
+        std::ostringstream s;
+        s << "CycleReport(density=" << r.density << ", deviation=" << r.deviation << ", beta=" << r.beta
+          << ", delta=" << r.delta << ", sensed_points=" << r.sensed_points << ")";
+        return s.str();
+      });
+
+  py::class_<Controller>(m, "Controller",
+                         "One control cycle as a robot runs it: scan -> obstacles the map lacks and density I; "
+                         "global path -> deviation D; weight policy -> beta, delta; planner -> command.")
+      .def(py::init<const RobotLimits&, const Footprint&, const PlannerParams&, std::shared_ptr<const DistanceField>,
+                    std::shared_ptr<const WeightPolicy>, const DetectWindowParams&>(),
+           py::arg("limits"), py::arg("footprint"), py::arg("params") = PlannerParams{}, py::arg("map") = nullptr,
+           py::arg("policy") = nullptr, py::arg("window") = DetectWindowParams{})
+      .def(
+          "set_global_path",
+          [](Controller& c, py::handle path) {
+            if (py::isinstance<GlobalPath>(path))
+              c.set_global_path(path.cast<const GlobalPath&>());
+            else
+              c.set_global_path(GlobalPath(to_points(path, "path")));
+          },
+          py::arg("path"))
+      .def(
+          "step",
+          [](Controller& c, const RobotState& state, py::handle goal, const Scan* scan, const std::vector<Disc>& discs) {
+            return c.step(state, to_vec2(goal, "goal"), scan, discs);
+          },
+          py::arg("state"), py::arg("goal"), py::arg("scan") = nullptr, py::arg("discs") = std::vector<Disc>{},
+           "One cycle toward goal with this cycle's scan (or None) and the known moving discs placed now.")
+      .def_property_readonly("report", &Controller::report, py::return_value_policy::copy)
+      .def_property_readonly("planner", &Controller::planner, py::return_value_policy::reference_internal)
+      .def("__repr__", [](const Controller&) { return std::string("Controller()"); });
+}

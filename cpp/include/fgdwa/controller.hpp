@@ -1,0 +1,57 @@
+#pragma once
+// One control cycle as a robot runs it (SPEC 9): the scan shows obstacles the
+// map lacks and gives the detect window's density I, the global path gives the
+// deviation D, the weight policy turns (I, D) into beta and delta, and the
+// planner picks the command. Data flows one way; nothing reaches back.
+//
+// Lifecycle: construct once with the map; set_global_path when a path is
+// planned; step() every control period.
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "fgdwa/clearance.hpp"
+#include "fgdwa/perception.hpp"
+#include "fgdwa/planner.hpp"
+#include "fgdwa/weights.hpp"
+
+namespace fgdwa {
+
+struct CycleReport {
+  double density = std::numeric_limits<double>::quiet_NaN();    // I; NaN without a scan
+  double deviation = std::numeric_limits<double>::quiet_NaN();  // m, D; NaN without a global path
+  double beta = std::numeric_limits<double>::quiet_NaN();       // clearance weight used; NaN without that critic
+  double delta = std::numeric_limits<double>::quiet_NaN();      // similarity weight used; NaN without that critic
+  std::size_t sensed_points = 0;                                // lidar hits the map and known discs do not explain
+};
+
+class Controller {
+ public:
+  // `map` may be null (no prior map); `policy` null keeps the params' weights.
+  Controller(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& params,
+             std::shared_ptr<const DistanceField> map = nullptr, std::shared_ptr<const WeightPolicy> policy = nullptr,
+             const DetectWindowParams& window = {});
+
+  void set_global_path(const GlobalPath& path);
+
+  // One cycle from `state` toward `goal`. `scan` (may be null) is this cycle's
+  // lidar scan; `discs` the moving obstacles the robot knows, placed now.
+  const PlanResult& step(const RobotState& state, const Vec2& goal, const Scan* scan,
+                         const std::vector<Disc>& discs = {});
+
+  const CycleReport& report() const { return report_; }
+  const LocalPlanner& planner() const { return planner_; }
+  const FieldClearance& world() const { return world_; }
+
+ private:
+  LocalPlanner planner_;
+  std::shared_ptr<const DistanceField> map_;
+  std::shared_ptr<const WeightPolicy> policy_;
+  DetectWindowParams window_;
+  FieldClearance world_;
+  bool has_clearance_ = false, has_similarity_ = false;
+  CycleReport report_;
+  std::vector<Vec2> unexplained_;
+};
+
+}  // namespace fgdwa

@@ -1,0 +1,58 @@
+#include "fgdwa/controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fgdwa/error.hpp"
+
+namespace fgdwa {
+
+Controller::Controller(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& params,
+                       std::shared_ptr<const DistanceField> map, std::shared_ptr<const WeightPolicy> policy,
+                       const DetectWindowParams& window)
+    : planner_(limits, footprint, params), map_(std::move(map)), policy_(std::move(policy)), window_(window),
+      world_(map_) {
+  window_.validate();
+  for (const CriticConfig& c : params.critics) {
+    has_clearance_ = has_clearance_ || c.name == "clearance";
+    has_similarity_ = has_similarity_ || c.name == "similarity";
+  }
+}
+
+void Controller::set_global_path(const GlobalPath& path) { planner_.set_global_path(path); }
+
+const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,
+                                   const std::vector<Disc>& discs) {
+  report_ = CycleReport{};
+  world_.set_discs(discs);
+  if (scan) {
+    // Hits on the map's obstacles or on known discs are explained; the rest are
+    // obstacles the planner would not otherwise see.
+    const double resolution = map_ ? map_->grid().resolution() : 0.1;
+    unexplained_.clear();
+    for (const Vec2& hit : scan->hit_points()) {
+      if (map_ && map_->distance(hit) <= 0.5 * resolution) continue;
+      const bool on_disc = std::any_of(discs.begin(), discs.end(), [&](const Disc& d) {
+        return (hit - d.center).norm() <= d.radius + 0.5 * resolution;
+      });
+      if (!on_disc) unexplained_.push_back(hit);
+    }
+    world_.set_sensed(points_field(unexplained_, resolution));
+    report_.sensed_points = unexplained_.size();
+    report_.density = obstacle_density(*scan, window_).density;
+  } else {
+    world_.set_sensed(nullptr);
+  }
+  if (planner_.global_path()) report_.deviation = planner_.global_path()->deviation(state.pose.position());
+  if (policy_) {
+    if (!scan) throw Error("the weight policy reads the obstacle density I: step() needs a scan");
+    const WeightPair w = policy_->weights(report_.density, std::isnan(report_.deviation) ? 0.0 : report_.deviation);
+    if (has_clearance_) planner_.set_weight("clearance", w.beta);
+    if (has_similarity_) planner_.set_weight("similarity", w.delta);
+  }
+  if (has_clearance_) report_.beta = planner_.weight("clearance");
+  if (has_similarity_) report_.delta = planner_.weight("similarity");
+  return planner_.plan(state, goal, world_);
+}
+
+}  // namespace fgdwa
