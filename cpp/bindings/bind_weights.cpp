@@ -87,4 +87,13 @@ void init_weights(py::module_& m) {
   m.def("planner_preset", &planner_preset, py::arg("name"),
         "A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity.");
   m.def("preset_names", &preset_names);
+
+  py::class_<RobotPreset>(m, "RobotPreset", "A robot by name: limits and footprint.")
+      .def_readonly("name", &RobotPreset::name)
+      .def_readonly("description", &RobotPreset::description)
+      .def_readonly("limits", &RobotPreset::limits)
+      .def_readonly("footprint", &RobotPreset::footprint)
+      .def("__repr__", [](const RobotPreset& r) { return "RobotPreset('" + r.name + "')"; });
+  m.def("robot_preset", &robot_preset, py::arg("name"), "A robot by name: default, jackal.");
+  m.def("robot_names", &robot_names);
 }

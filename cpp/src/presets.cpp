@@ -78,6 +78,27 @@ PlannerPreset planner_preset(const std::string& name) {
   return it->second();
 }
 
+RobotPreset robot_preset(const std::string& name) {
+  if (name == "default")
+    return RobotPreset{"default", "SPEC 1's robot: 1.2 m/s, 1 rad/s, circle of 0.25 m", RobotLimits{},
+                       Footprint::circle(0.25)};
+  if (name == "jackal") {
+    // Clearpath's jackal_control/config/control.yaml: linear x max_velocity 2.0 m/s,
+    // max_acceleration 20 m/s^2; angular z max_velocity 4.0 rad/s, max_acceleration 25 rad/s^2.
+    RobotLimits limits;
+    limits.v_min = 0.0;
+    limits.v_max = 2.0;
+    limits.omega_max = 4.0;
+    limits.acc_v = 20.0;
+    limits.acc_omega = 25.0;
+    return RobotPreset{"jackal", "Clearpath Jackal: 0.42 m x 0.33 m, 2 m/s, 4 rad/s, 20 m/s^2, 25 rad/s^2", limits,
+                       Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}})};
+  }
+  throw Error("unknown robot preset '" + name + "' (known: default, jackal)");
+}
+
+std::vector<std::string> robot_names() { return {"default", "jackal"}; }
+
 std::vector<std::string> preset_names() {
   return {"dwa", "gdwa", "sgdwa", "fgdwa", "gdwa_high_safety", "gdwa_high_similarity"};
 }

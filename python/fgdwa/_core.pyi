@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -1048,6 +1048,24 @@ class PlannerPreset:
     @property
     def params(self) -> PlannerParams:
         ...
+class RobotPreset:
+    """
+    A robot by name: limits and footprint.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def description(self) -> str:
+        ...
+    @property
+    def footprint(self) -> Footprint:
+        ...
+    @property
+    def limits(self) -> RobotLimits:
+        ...
+    @property
+    def name(self) -> str:
+        ...
 class CycleReport:
     """
     What a control cycle sensed and how it weighed it.
@@ -1140,6 +1158,12 @@ def preset_names() -> list[str]:
 def reference_samples(path: ..., robot: typing.Any, v_ref: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex, n: typing.SupportsInt | typing.SupportsIndex, sampling: str = 'polyline') -> numpy.typing.NDArray[numpy.float64]:
     """
     (n, 2) reference samples E of the similarity cost (SPEC 4, Eq. 9): from the robot's projection onto the path, i * v_ref * dt further along the current segment ('segment') or along the path ('polyline').
+    """
+def robot_names() -> list[str]:
+    ...
+def robot_preset(name: str) -> RobotPreset:
+    """
+    A robot by name: default, jackal.
     """
 def rollout(pose: typing.Any, twist: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex, n_steps: typing.SupportsInt | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """

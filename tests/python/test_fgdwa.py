@@ -86,3 +86,15 @@ def test_controller_runs_the_cycle_a_robot_would():
     assert plan.weights[plan.critic_names.index("clearance")] == report.beta
     with pytest.raises(fgdwa.FgdwaError, match="needs a scan"):
         controller.step(state, (15.0, 3.0), None)
+
+
+def test_robot_presets():
+    jackal = fgdwa.robot_preset("jackal")
+    assert (jackal.limits.v_max, jackal.limits.omega_max, jackal.limits.acc_v, jackal.limits.acc_omega) == \
+        (2.0, 4.0, 20.0, 25.0)
+    assert not jackal.footprint.is_circle
+    np.testing.assert_allclose(np.ptp(jackal.footprint.vertices, axis=0), (0.42, 0.33))
+    assert fgdwa.robot_preset("default").footprint.radius == 0.25
+    assert fgdwa.robot_names() == ["default", "jackal"]
+    with pytest.raises(fgdwa.FgdwaError, match="unknown robot preset 'husky'"):
+        fgdwa.robot_preset("husky")

@@ -19,6 +19,19 @@ struct PlannerPreset {
   std::shared_ptr<WeightPolicy> weight_policy() const;
 };
 
+// A robot by name: its limits and footprint.
+struct RobotPreset {
+  std::string name;
+  std::string description;
+  RobotLimits limits;
+  Footprint footprint;
+};
+
+// "default" (SPEC 1: 1.2 m/s, 1 rad/s, circle of 0.25 m) and "jackal" (Clearpath
+// Jackal: 0.42 m x 0.33 m, the limits of its stock velocity controller).
+RobotPreset robot_preset(const std::string& name);
+std::vector<std::string> robot_names();
+
 // dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity.
 PlannerPreset planner_preset(const std::string& name);
 std::vector<std::string> preset_names();
