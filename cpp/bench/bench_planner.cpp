@@ -10,7 +10,6 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <cstdint>
 #include <memory>
 #include <random>
 #include <vector>
@@ -19,31 +18,11 @@
 #include "fgdwa/collision.hpp"
 #include "fgdwa/grid.hpp"
 #include "fgdwa/planner.hpp"
+#include "bench_maps.hpp"
 
 namespace {
 
 using namespace fgdwa;
-
-constexpr int kCells = 100;
-constexpr double kResolution = 0.1;
-
-// Obstacles come as rectangles of 1-8 cells a side, as in real maps.
-OccupancyGrid random_map(std::mt19937& rng) {
-  std::uniform_int_distribution<int> side(1, 8), cell(0, kCells - 1);
-  std::vector<std::uint8_t> cells(kCells * kCells, 0);
-  const std::size_t target = static_cast<std::size_t>(0.15 * kCells * kCells);
-  std::size_t occupied = 0;
-  while (occupied < target) {
-    const int r0 = cell(rng), c0 = cell(rng), h = side(rng), w = side(rng);
-    for (int r = r0; r < std::min(kCells, r0 + h); ++r)
-      for (int c = c0; c < std::min(kCells, c0 + w); ++c) {
-        auto& value = cells[static_cast<std::size_t>(r) * kCells + c];
-        if (!value) ++occupied;
-        value = 1;
-      }
-  }
-  return OccupancyGrid(kCells, kCells, kResolution, Vec2::Zero(), std::move(cells));
-}
 
 // Seeded starts at least 0.2 m clear of obstacles, each heading roughly for its
 // goal: how long a cycle takes depends on how soon the rollouts meet obstacles,
@@ -51,7 +30,7 @@ OccupancyGrid random_map(std::mt19937& rng) {
 struct Scene {
   static constexpr int kStarts = 32;
   std::mt19937 rng{42};
-  OccupancyGrid grid = random_map(rng);
+  OccupancyGrid grid = bench::rectangle_map(rng);  // 100 x 100 at 0.1 m, 15 % occupied
   DistanceField field{grid};
   std::vector<RobotState> states;
   std::vector<Vec2> goals;
