@@ -57,8 +57,10 @@ test-python: setup
 	$(BIN)/python -m pytest -q tests/python
 
 bench: system-packages $(BUILD)/build.ninja
-	$(BIN)/cmake --build $(BUILD) -j $(JOBS) --target bench_planner
+	$(BIN)/cmake --build $(BUILD) -j $(JOBS) --target bench_planner bench_global bench_fgdwa
 	$(BUILD)/cpp/bench/bench_planner
+	$(BUILD)/cpp/bench/bench_global
+	$(BUILD)/cpp/bench/bench_fgdwa
 
 clean:
 	rm -rf build $(OUT) $(VENV)
