@@ -1,0 +1,527 @@
+"""The paper's experiments (SPEC 10): seeded trials of planners on a scenario,
+compared metric by metric.
+
+An experiment runs ``trials`` trials of each of its planners; trial ``i`` uses
+seed ``base_seed + i`` for every planner, so the planners meet the same start
+jitter, moving-obstacle phases and lidar noise. Trials run in worker processes
+(``executor="local"``), on a dask.distributed cluster (``"dask"``) or in this
+process (``"serial"``); a trial's result depends only on its task, never on
+where it ran (the wall-clock planning time aside).
+
+The first planner of an experiment is the proposed one; every other planner
+is compared with it (``fgdwa.stats.compare``). Runs that did not reach the
+goal count in the finishing rate only: their time, steps, mileage and
+clearances are left out of the comparisons, as the paper leaves out GDWA's
+unfinished runs in Tables 15-18.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from dataclasses import dataclass, field
+from typing import Callable, Iterable, Optional, Sequence, Union
+
+import numpy as np
+
+from fgdwa import stats
+from fgdwa._core import FgdwaError
+from fgdwa.scenario import Scenario, run_scenario
+
+EXECUTORS = ("local", "dask", "serial")
+DEFAULT_WORKERS = 2
+SIGNIFICANCE = 0.05
+
+
+@dataclass(frozen=True)
+class Metric:
+    key: str  # EpisodeResult.metrics() key
+    label: str  # with its unit
+    better: str  # "lower" or "higher"
+    table: bool = False  # has a per-trial table (the paper's Tables 9-12, 15-17)
+
+
+METRICS = (
+    Metric("planning_time", "Running time (s, wall-clock planning)", "lower", True),
+    Metric("steps", "Iteration steps", "lower", True),
+    Metric("mileage", "Mileage (m)", "lower", True),
+    Metric("danger_clearance", "Danger-point clearance (m)", "higher", True),
+    Metric("sim_time", "Simulated time (s)", "lower"),
+    Metric("min_clearance", "Minimum clearance (m)", "higher"),
+    Metric("mean_deviation", "Mean deviation from the global path (m)", "lower"),
+    Metric("smoothness", "Smoothness, sum |d omega| (rad/s)", "lower"),
+)
+METRIC_BY_KEY = {m.key: m for m in METRICS}
+FINISHING = "finishing_rate"
+
+PLANNER_LABELS = {
+    "dwa": "DWA",
+    "gdwa": "GDWA",
+    "sgdwa": "Similarity-GDWA",
+    "fgdwa": "FGDWA",
+    "gdwa_high_safety": "GDWA, high safety weight",
+    "gdwa_high_similarity": "GDWA, high similarity weight",
+}
+
+
+def planner_label(name: str) -> str:
+    return PLANNER_LABELS.get(name, name)
+
+
+@dataclass(frozen=True)
+class Claim:
+    """What the paper reports for one metric of the proposed planner against another.
+
+    ``paper_effect`` is in % as ``fgdwa.stats.effect_percent`` defines it (the
+    sign gives the direction). ``kind`` "direction": our effect should have the
+    same sign; "no_difference": the paper found none, so ours should not be
+    significant."""
+
+    metric: str  # a Metric key or FINISHING
+    other: str  # the planner compared against
+    paper_effect: float
+    paper: str  # the paper's numbers, in words
+    kind: str = "direction"
+
+
+@dataclass(frozen=True)
+class ExperimentSpec:
+    name: str
+    title: str
+    scenario: object  # a load_scenario source (name, path, YAML) or a zero-argument callable giving a Scenario
+    planners: tuple  # the proposed planner first
+    claims: tuple = ()
+    paper_ref: str = ""
+    description: str = ""
+
+    @property
+    def proposed(self) -> str:
+        return self.planners[0]
+
+    @property
+    def others(self) -> tuple:
+        return self.planners[1:]
+
+
+EXPERIMENTS = {
+    "e1": ExperimentSpec(
+        name="e1",
+        title="E1: the similarity cost (GDWA vs Similarity-GDWA)",
+        scenario="e1",
+        planners=("sgdwa", "gdwa"),
+        paper_ref="Tables 5-7",
+        description="Fixed weights alpha 0.5, beta 0.15, gamma 1, with and without the similarity cost "
+                    "(delta 0.5), on a map whose key nodes lie far apart.",
+        claims=(
+            Claim("planning_time", "gdwa", -0.7, "execution time 156.5 s vs 157.6 s (-0.7 %)"),
+            Claim("steps", "gdwa", -2.5, "iteration steps 352 vs 361 (-2.5 %)"),
+            Claim("mileage", "gdwa", -2.1, "mileage 27.6 m vs 28.2 m (-2.1 %)"),
+        ),
+    ),
+    "e2": ExperimentSpec(
+        name="e2",
+        title="E2: fuzzy weights (FGDWA vs fixed high-safety and high-similarity weights)",
+        scenario="e2",
+        planners=("fgdwa", "gdwa_high_safety", "gdwa_high_similarity"),
+        paper_ref="Tables 8-12",
+        description="The E1 map with obstacles missing from it, seen only by the lidar.",
+        claims=(
+            Claim("planning_time", "gdwa_high_safety", -26.2, "running time 89.58 s vs 121.36 s (-26.2 %)"),
+            Claim("planning_time", "gdwa_high_similarity", -10.8, "running time 89.58 s vs 100.37 s (-10.8 %)"),
+            Claim("steps", "gdwa_high_safety", -22.8, "iteration steps 171.3 vs 221.9 (-22.8 %)"),
+            Claim("steps", "gdwa_high_similarity", -6.8, "iteration steps 171.3 vs 183.9 (-6.8 %)"),
+            Claim("mileage", "gdwa_high_safety", -6.4, "mileage 27.36 m vs 29.22 m (-6.4 %)"),
+            Claim("mileage", "gdwa_high_similarity", 0.1,
+                  "mileage 27.36 m vs 27.32 m (+0.1 %, Table 11's effect -0.1: \"no obvious difference\")",
+                  kind="no_difference"),
+            Claim("danger_clearance", "gdwa_high_similarity", 50.0,
+                  "danger-point clearance 0.48 m vs 0.32 m (+50 %, Table 12)"),
+        ),
+    ),
+    "e3": ExperimentSpec(
+        name="e3",
+        title="E3: complex terrain (FGDWA vs GDWA)",
+        scenario="e3",
+        planners=("fgdwa", "gdwa"),
+        paper_ref="Tables 13-18",
+        description="Slope grades, a C-shaped obstacle group, a dense obstacle area and unknown moving obstacles.",
+        claims=(
+            Claim(FINISHING, "gdwa", 25.0, "finishing rate 100 % vs 80 % (Table 18)"),
+            Claim("planning_time", "gdwa", -21.3, "running time 89.1 s vs 113.2 s over finished runs (Table 15)"),
+            Claim("steps", "gdwa", -18.0, "iteration steps 182 vs 222 over finished runs (Table 16)"),
+            Claim("mileage", "gdwa", -0.2, "mileage 30.80 m vs 30.87 m over finished runs (Table 17)"),
+        ),
+    ),
+}
+
+
+def experiment_names() -> list:
+    return list(EXPERIMENTS)
+
+
+# --------------------------------------------------------------------------------------------- scenarios
+
+def resolve_scenario(source) -> Scenario:
+    """A Scenario from a Scenario, a zero-argument callable, or a ``load_scenario`` source."""
+    if isinstance(source, Scenario):
+        return source
+    if callable(source):
+        scenario = source()
+        if not isinstance(scenario, Scenario):
+            raise FgdwaError(f"scenario factory {source!r} returned {type(scenario).__name__}, not a Scenario")
+        return scenario
+    if not isinstance(source, str):
+        raise FgdwaError(f"scenario = {source!r}: expected a name, a YAML path or text, a callable or a Scenario")
+    try:
+        from fgdwa.scenario_file import load_scenario
+    except ImportError:  # scenario files not in this build: the built-in stand-ins
+        return _builtin_scenario(source)
+    return load_scenario(source)
+
+
+def _builtin_scenario(name: str) -> Scenario:
+    from fgdwa import builtin
+
+    factories = {
+        "demo": builtin.demo_scenario,
+        "e1": builtin.c_trap_scenario,
+        "e2": builtin.unknown_beside_path_scenario,
+        "e3": builtin.c_trap_scenario,
+        "c_trap": builtin.c_trap_scenario,
+        "hidden_obstacles": builtin.hidden_obstacles_scenario,
+        "unknown_beside_path": builtin.unknown_beside_path_scenario,
+    }
+    if name not in factories:
+        raise FgdwaError(f"scenario {name!r}: not a built-in one ({', '.join(sorted(factories))})")
+    return factories[name]()
+
+
+# --------------------------------------------------------------------------------------------- trials
+
+@dataclass(frozen=True)
+class TrialTask:
+    """One episode to run: picklable, so a worker process or a dask worker can run it."""
+
+    experiment: str
+    scenario: object  # see ExperimentSpec.scenario
+    planner: str
+    trial: int  # 0-based
+    seed: int
+    options: tuple = ()  # (name, value) pairs of run_scenario keyword arguments, e.g. (("max_steps", 100),)
+
+
+@dataclass
+class TrialRecord:
+    """What a trial returns: its metrics and the traces the figures need."""
+
+    experiment: str
+    planner: str
+    trial: int
+    seed: int
+    metrics: dict  # EpisodeResult.metrics()
+    wall_time: float  # s, the whole episode in its worker
+    poses: np.ndarray
+    cycle_times: np.ndarray
+    beta: np.ndarray
+    delta: np.ndarray
+    density: np.ndarray
+    deviation: np.ndarray
+    global_path: Optional[np.ndarray] = None
+    key_nodes: Optional[np.ndarray] = None
+    dt: float = float("nan")
+
+    @property
+    def success(self) -> bool:
+        return self.metrics["outcome"] == "success"
+
+
+def run_trial(task: TrialTask) -> TrialRecord:
+    """Run one trial (in whatever process calls it)."""
+    scenario = resolve_scenario(task.scenario)
+    tic = time.perf_counter()
+    result = run_scenario(scenario, task.planner, task.seed, **dict(task.options))
+    wall = time.perf_counter() - tic
+    return TrialRecord(
+        experiment=task.experiment, planner=task.planner, trial=task.trial, seed=task.seed,
+        metrics=result.metrics(), wall_time=wall, poses=result.poses, cycle_times=result.cycle_times,
+        beta=result.beta, delta=result.delta, density=result.density, deviation=result.deviation,
+        global_path=result.global_path, key_nodes=result.key_nodes,
+        dt=result.sim_time / result.steps if result.steps else float("nan"),
+    )
+
+
+def trial_tasks(spec: ExperimentSpec, trials: int, base_seed: int = 0, options: Optional[dict] = None) -> list:
+    """Every (planner, trial) task of an experiment; trial i has seed base_seed + i for every planner."""
+    if isinstance(trials, bool) or not isinstance(trials, (int, np.integer)) or trials < 1:
+        raise FgdwaError(f"trials = {trials!r}: must be an integer >= 1")
+    items = tuple(sorted((options or {}).items()))
+    return [TrialTask(spec.name, spec.scenario, planner, i, int(base_seed) + i, items)
+            for i in range(int(trials)) for planner in spec.planners]
+
+
+def run_tasks(tasks: Sequence[TrialTask], executor: str = "local", scheduler: Optional[str] = None,
+              workers: int = DEFAULT_WORKERS, progress: bool = True, runner: Callable = run_trial) -> list:
+    """Run the tasks and return their records in the tasks' order.
+
+    executor "local": a ProcessPoolExecutor of ``workers`` processes; "dask": a
+    dask.distributed Client at ``scheduler``, or a LocalCluster of ``workers``
+    single-threaded processes when no address is given; "serial": one after
+    another in this process. A progress bar (tqdm, on stderr) counts the trials."""
+    if executor not in EXECUTORS:
+        raise FgdwaError(f"executor = {executor!r}: expected one of {', '.join(EXECUTORS)}")
+    if scheduler is not None and executor != "dask":
+        raise FgdwaError(f"scheduler = {scheduler!r}: only the dask executor takes a scheduler address")
+    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
+        raise FgdwaError(f"workers = {workers!r}: must be an integer >= 1")
+    tasks = list(tasks)
+    if executor != "serial":
+        _check_picklable(tasks)
+    from tqdm import tqdm
+
+    results = [None] * len(tasks)
+    with tqdm(total=len(tasks), desc="trials", unit="run", disable=not progress, leave=False,
+              dynamic_ncols=True) as bar:
+        if executor == "serial":
+            for i, task in enumerate(tasks):
+                results[i] = runner(task)
+                bar.update()
+        elif executor == "local":
+            with ProcessPoolExecutor(max_workers=int(workers)) as pool:
+                futures = {pool.submit(runner, task): i for i, task in enumerate(tasks)}
+                for future in as_completed(futures):
+                    results[futures[future]] = future.result()
+                    bar.update()
+        else:
+            _run_dask(tasks, scheduler, int(workers), bar, results, runner)
+    return results
+
+
+def _check_picklable(tasks: Sequence[TrialTask]) -> None:
+    for task in tasks:
+        if isinstance(task.scenario, Scenario):
+            raise FgdwaError("a Scenario object cannot be sent to worker processes: give the experiment a "
+                             "scenario name, file or a module-level factory function, or use executor='serial'")
+
+
+def _run_dask(tasks, scheduler, workers, bar, results, runner) -> None:
+    try:
+        from dask.distributed import Client, LocalCluster
+        from dask.distributed import as_completed as dask_completed
+    except ImportError as error:  # pragma: no cover - dask is a dependency
+        raise FgdwaError(f"executor 'dask' needs dask[distributed]: {error}") from error
+    cluster = None
+    if scheduler is None:
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
+        client = Client(cluster)
+    else:
+        client = Client(scheduler)
+    try:
+        futures = client.map(runner, tasks, pure=False)
+        index = {future.key: i for i, future in enumerate(futures)}
+        for future in dask_completed(futures):
+            results[index[future.key]] = future.result()
+            bar.update()
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+# --------------------------------------------------------------------------------------------- results
+
+@dataclass
+class ExperimentResult:
+    spec: ExperimentSpec
+    trials: int
+    base_seed: int
+    records: list  # TrialRecord, by planner (spec order) then trial
+    wall_time: float = float("nan")  # s, the run these trials were part of
+    executor: str = "local"
+    options: dict = field(default_factory=dict)
+
+    def planner_records(self, planner: str) -> list:
+        return [r for r in self.records if r.planner == planner]
+
+    def record(self, planner: str, trial: int) -> TrialRecord:
+        for r in self.records:
+            if r.planner == planner and r.trial == trial:
+                return r
+        raise KeyError((planner, trial))
+
+    def values(self, planner: str, metric: str, successful_only: bool = True) -> list:
+        """The metric of each trial of ``planner`` (nan where the run failed, unless ``successful_only`` is False)."""
+        out = []
+        for r in self.planner_records(planner):
+            value = r.metrics[metric]
+            out.append(float(value) if (r.success or not successful_only) else float("nan"))
+        return out
+
+    def finishing(self, planner: str) -> tuple:
+        """(successful runs, runs) of ``planner``."""
+        records = self.planner_records(planner)
+        return sum(r.success for r in records), len(records)
+
+    def comparisons(self) -> list:
+        """Every metric of the proposed planner against each other planner (successful runs only)."""
+        out = []
+        for other in self.spec.others:
+            for metric in METRICS:
+                out.append(stats.compare(metric.key, self.spec.proposed, self.values(self.spec.proposed, metric.key),
+                                         other, self.values(other, metric.key)))
+        return out
+
+    def finishing_comparisons(self) -> list:
+        out = []
+        sp, n_p = self.finishing(self.spec.proposed)
+        for other in self.spec.others:
+            so, n_o = self.finishing(other)
+            rate_p, rate_o = _rate(sp, n_p), _rate(so, n_o)
+            out.append({"metric": FINISHING, "proposed": self.spec.proposed, "other": other,
+                        "rate_proposed": rate_p, "rate_other": rate_o,
+                        "effect_pct": stats.effect_percent(rate_p, rate_o),
+                        "fisher_p": stats.fisher_p(sp, n_p, so, n_o)})
+        return out
+
+    def cycle_time_stats(self) -> dict:
+        """Per planner and overall: median and 95th percentile of the per-cycle planning time (ms)."""
+        out = {}
+        everything = []
+        for planner in self.spec.planners:
+            times = np.concatenate([r.cycle_times for r in self.planner_records(planner)] or [np.zeros(0)])
+            everything.append(times)
+            out[planner] = _cycle_stats(times)
+        out["all"] = _cycle_stats(np.concatenate(everything) if everything else np.zeros(0))
+        return out
+
+    def to_dict(self) -> dict:
+        """Everything the reports need, as JSON-able plain data."""
+        comparisons = [c.to_dict() for c in self.comparisons()]
+        finishing = self.finishing_comparisons()
+        return {
+            "experiment": self.spec.name,
+            "title": self.spec.title,
+            "description": self.spec.description,
+            "paper_ref": self.spec.paper_ref,
+            "scenario": self.spec.scenario if isinstance(self.spec.scenario, str) else repr(self.spec.scenario),
+            "planners": list(self.spec.planners),
+            "labels": {p: planner_label(p) for p in self.spec.planners},
+            "proposed": self.spec.proposed,
+            "trials": self.trials,
+            "base_seed": self.base_seed,
+            "seeds": [self.base_seed + i for i in range(self.trials)],
+            "executor": self.executor,
+            "options": dict(self.options),
+            "wall_time": self.wall_time,
+            "episode_wall_time": float(sum(r.wall_time for r in self.records)),
+            "metrics": [dataclasses.asdict(m) for m in METRICS],
+            "runs": [dict(planner=r.planner, trial=r.trial, seed=r.seed, wall_time=r.wall_time, **r.metrics)
+                     for r in self.records],
+            "summary": {p: {m.key: stats.describe(self.values(p, m.key)).to_dict() for m in METRICS}
+                        for p in self.spec.planners},
+            "finishing": {p: dict(zip(("successes", "runs"), self.finishing(p))) for p in self.spec.planners},
+            "comparisons": comparisons,
+            "finishing_comparisons": finishing,
+            "claims": judge_claims(self.spec.claims, comparisons, finishing),
+            "cycle_time_ms": self.cycle_time_stats(),
+        }
+
+
+def _rate(successes: int, runs: int) -> float:
+    return 100.0 * successes / runs if runs else float("nan")
+
+
+def _cycle_stats(times: np.ndarray) -> dict:
+    ms = 1e3 * np.asarray(times, dtype=float)
+    return {"cycles": int(len(ms)), "median": stats.percentile(ms, 50), "p95": stats.percentile(ms, 95),
+            "max": float(np.max(ms)) if len(ms) else float("nan")}
+
+
+def judge_claims(claims: Iterable[Claim], comparisons: Sequence[dict], finishing: Sequence[dict]) -> list:
+    """For each claim of the paper: our effect, its p-values and a verdict computed from them."""
+    out = []
+    for claim in claims:
+        row = {"metric": claim.metric, "other": claim.other, "paper_effect": claim.paper_effect,
+               "paper": claim.paper, "kind": claim.kind}
+        if claim.metric == FINISHING:
+            found = [f for f in finishing if f["other"] == claim.other]
+            ours = found[0] if found else {}
+            row.update(effect_pct=ours.get("effect_pct", float("nan")), p=ours.get("fisher_p", float("nan")),
+                       test="Fisher exact", ours=f"{_fmt(ours.get('rate_proposed'), 0)} % vs "
+                                                  f"{_fmt(ours.get('rate_other'), 0)} %")
+            if ours and ours["rate_proposed"] == ours["rate_other"]:
+                row["effect_pct"] = 0.0
+        else:
+            digits = 1 if claim.metric == "steps" else 3
+            found = [c for c in comparisons if c["metric"] == claim.metric and c["other"] == claim.other]
+            ours = found[0] if found else {}
+            row.update(effect_pct=ours.get("effect_pct", float("nan")), p=ours.get("welch_p", float("nan")),
+                       mwu_p=ours.get("mwu_p", float("nan")), test="Welch t",
+                       ours=f"{_fmt(ours.get('mean_proposed'), digits)} vs {_fmt(ours.get('mean_other'), digits)} "
+                            f"(n = {ours.get('n_proposed', 0)}, {ours.get('n_other', 0)})")
+        row["verdict"], row["agrees"] = verdict(claim, row["effect_pct"], row["p"])
+        out.append(row)
+    return out
+
+
+def verdict(claim: Claim, effect: float, p: float) -> tuple:
+    """(words, agrees) for a claim given our effect in % and its p-value; agrees is None when not measurable."""
+    if effect is None or not math.isfinite(effect):
+        return "not measurable (no successful run on a side, or a zero reference)", None
+    significant = p is not None and math.isfinite(p) and p < SIGNIFICANCE
+    p_text = f"p = {p:.3g}" if p is not None and math.isfinite(p) else "no p-value"
+    if claim.kind == "no_difference":
+        if significant:
+            return f"differs: significant {_pct(effect)} % ({p_text})", False
+        return f"same: no significant difference, {_pct(effect)} % ({p_text})", True
+    if effect == 0:
+        return f"no difference in our runs ({p_text})", False
+    same = math.copysign(1.0, effect) == math.copysign(1.0, claim.paper_effect)
+    direction = "same direction" if same else "opposite direction"
+    strength = "significant" if significant else "not significant"
+    return f"{direction}, {strength} ({_pct(effect)} %, {p_text})", same
+
+
+def _pct(effect: float) -> str:
+    return f"{effect:+.1f}" if abs(effect) >= 0.1 else f"{effect:+.2g}"
+
+
+def _fmt(value, digits: int = 3) -> str:
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return "-"
+    return f"{value:.{digits}f}" if digits else f"{value:.0f}"
+
+
+# --------------------------------------------------------------------------------------------- running
+
+def run_experiments(specs: Sequence[Union[ExperimentSpec, str]], trials: int = 15, base_seed: int = 0,
+                    executor: str = "local", scheduler: Optional[str] = None, workers: int = DEFAULT_WORKERS,
+                    progress: bool = True, options: Optional[dict] = None) -> list:
+    """Run the trials of several experiments in one pool (so the workers stay busy) and
+    return one ExperimentResult each. ``options`` go to ``run_scenario`` (e.g. max_steps)."""
+    specs = [EXPERIMENTS[s] if isinstance(s, str) and s in EXPERIMENTS else s for s in specs]
+    for spec in specs:
+        if not isinstance(spec, ExperimentSpec):
+            raise FgdwaError(f"experiment {spec!r}: expected one of {', '.join(EXPERIMENTS)} or an ExperimentSpec")
+    tasks = [task for spec in specs for task in trial_tasks(spec, trials, base_seed, options)]
+    tic = time.perf_counter()
+    records = run_tasks(tasks, executor=executor, scheduler=scheduler, workers=workers, progress=progress)
+    wall = time.perf_counter() - tic
+    out = []
+    for spec in specs:
+        mine = [r for r in records if r.experiment == spec.name]
+        mine.sort(key=lambda r: (spec.planners.index(r.planner), r.trial))
+        out.append(ExperimentResult(spec, int(trials), int(base_seed), mine, wall, executor, dict(options or {})))
+    return out
+
+
+def run_experiment(spec: Union[ExperimentSpec, str], trials: int = 15, base_seed: int = 0, **kwargs) -> ExperimentResult:
+    """One experiment; see run_experiments."""
+    return run_experiments([spec], trials, base_seed, **kwargs)[0]
+
+
+def comparable_runs(result: ExperimentResult, exclude: Sequence[str] = ("planning_time",)) -> list:
+    """The per-trial metrics without wall-clock fields: what must not depend on the executor."""
+    return [(r.planner, r.trial, r.seed, {k: v for k, v in r.metrics.items() if k not in exclude})
+            for r in result.records]
