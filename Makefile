@@ -45,7 +45,7 @@ $(BUILD)/build.ninja: CMakeLists.txt | $(VENV)/.tools
 	  -DFGDWA_BUILD_BENCHMARKS=ON -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja
 
 demo: setup
-	$(BIN)/fgdwa demo --out $(OUT)/demo
+	$(BIN)/fgdwa run demo --planner fgdwa --out $(OUT)/demo --gif $(OUT)/demo/demo.gif
 
 test: setup test-cpp test-python
 

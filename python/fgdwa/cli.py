@@ -1,15 +1,20 @@
-"""The ``fgdwa`` command."""
+"""The ``fgdwa`` command: ``demo``, ``run`` (one episode, its figure and GIF) and
+``experiment`` (the paper's experiments, SPEC 10)."""
 
 from __future__ import annotations
 
 import argparse
+import shlex
 import sys
+import time
 from pathlib import Path
 
-from fgdwa._core import FgdwaError, PlannerParams
-from fgdwa.builtin import demo_scenario
-from fgdwa.plotting import plot_episode
-from fgdwa.sim import run_episode
+import numpy as np
+
+from fgdwa._core import FgdwaError, PlannerParams, preset_names
+
+DEFAULT_EXPERIMENT_OUT = "docs/results"
+DEFAULT_RESULTS_MD = "docs/RESULTS.md"
 
 
 def _format_metrics(metrics: dict) -> str:
@@ -19,7 +24,19 @@ def _format_metrics(metrics: dict) -> str:
     return "\n".join(rows)
 
 
+def _cycle_line(cycle_times) -> str:
+    ms = 1e3 * np.asarray(cycle_times, dtype=float)
+    if len(ms) == 0:
+        return "  cycle time       (no cycle)"
+    return (f"  cycle time       median {np.median(ms):.3f} ms, p95 {np.percentile(ms, 95):.3f} ms "
+            f"over {len(ms)} cycles")
+
+
 def cmd_demo(args: argparse.Namespace) -> int:
+    from fgdwa.builtin import demo_scenario
+    from fgdwa.plotting import plot_episode
+    from fgdwa.sim import run_episode
+
     scenario = demo_scenario()
     result = run_episode(scenario.world, scenario.start, scenario.goal, params=PlannerParams(),
                          max_steps=args.max_steps)
@@ -27,23 +44,158 @@ def cmd_demo(args: argparse.Namespace) -> int:
     print("planner dwa (classic dynamic window, heading to the goal)")
     print(_format_metrics(result.metrics()))
     if len(result.cycle_times):
-        print(f"  cycle time       median {1e3 * float(sorted(result.cycle_times)[len(result.cycle_times) // 2]):.3f} ms")
+        print(_cycle_line(result.cycle_times))
     png = Path(args.out) / "demo.png"
     plot_episode(result, scenario.world, scenario.goal, png)
     print(f"figure: {png}")
     return 0 if result.outcome == "success" else 1
 
 
-def main(argv=None) -> int:
+def cmd_run(args: argparse.Namespace) -> int:
+    from fgdwa.experiments import resolve_scenario
+    from fgdwa.plotting import plot_episode
+    from fgdwa.scenario import run_scenario, trial_variation
+
+    scenario = resolve_scenario(args.scenario)
+    planner = args.planner or scenario.planner
+    options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
+    tic = time.perf_counter()
+    result = run_scenario(scenario, planner, args.seed, **options)
+    wall = time.perf_counter() - tic
+    print(f"scenario {scenario.name}: {scenario.description}")
+    print(f"planner {planner}, seed {args.seed}")
+    print(_format_metrics(result.metrics()))
+    print(_cycle_line(result.cycle_times))
+    print(f"  episode wall     {wall:.2f} s")
+    out = Path(args.out)
+    _, world, _ = trial_variation(scenario, args.seed)
+    png = out / f"{scenario.name}_{planner}.png"
+    plot_episode(result, world, scenario.goal, png, title=f"{scenario.name}, {planner}, seed {args.seed}: "
+                 f"{result.outcome}, {result.steps} steps, {result.mileage:.2f} m",
+                 footprint_radius=scenario.footprint.radius)
+    print(f"figure: {png}")
+    if args.gif:
+        from fgdwa.animation import write_gif
+
+        tic = time.perf_counter()
+        gif = write_gif(result, scenario, args.gif, planner=planner, seed=args.seed, max_frames=args.frames)
+        print(f"animation: {gif} ({time.perf_counter() - tic:.1f} s to draw)")
+    return 0 if result.outcome == "success" else 1
+
+
+def cmd_experiment(args: argparse.Namespace, argv) -> int:
+    from fgdwa.experiments import EXPERIMENTS, run_experiments
+    from fgdwa.report import save_experiment, terminal_report, write_results
+
+    names = list(EXPERIMENTS) if args.name == "all" else [args.name]
+    out = Path(args.out)
+    options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
+    command = "fgdwa " + " ".join(shlex.quote(a) for a in (argv if argv is not None else sys.argv[1:]))
+    tic = time.perf_counter()
+    print(f"{', '.join(n.upper() for n in names)}: {args.trials} trials per planner, seeds {args.seed}.."
+          f"{args.seed + args.trials - 1}, executor {args.executor}", flush=True)
+    results = run_experiments(names, trials=args.trials, base_seed=args.seed, executor=args.executor,
+                              scheduler=args.scheduler, workers=args.workers, progress=not args.no_progress,
+                              options=options)
+    trials_wall = time.perf_counter() - tic
+    for result in results:
+        d = save_experiment(result, out, figures=not args.no_figures)
+        print()
+        print(terminal_report(d))
+        print(f"files: {out / result.spec.name}/")
+    surfaces = None
+    if not args.no_figures and any("fgdwa" in r.spec.planners for r in results):
+        from fgdwa.figures import control_surfaces_figure
+
+        surfaces = control_surfaces_figure(out / "control_surfaces.png")
+    written = []
+    if len(names) > 1:
+        written.append(write_results(out, names, command, out / "report.md", surfaces))
+    results_md = args.results_md
+    if results_md is None and args.out == DEFAULT_EXPERIMENT_OUT:
+        results_md = DEFAULT_RESULTS_MD
+    if results_md:
+        written.append(write_results(out, list(EXPERIMENTS), command, Path(results_md),
+                                     surfaces if surfaces is not None else _existing(out / "control_surfaces.png")))
+    for path in written:
+        print(f"report: {path}")
+    wall = time.perf_counter() - tic
+    cycles = np.concatenate([r.cycle_times for result in results for r in result.records])
+    print()
+    print(f"wall time: {wall:.1f} s ({trials_wall:.1f} s of trials, {wall - trials_wall:.1f} s of reports and "
+          f"figures); {sum(len(r.records) for r in results)} episodes")
+    for result in results:
+        ms = 1e3 * np.concatenate([r.cycle_times for r in result.records])
+        print(f"  {result.spec.name}: per-cycle planning time median {np.median(ms):.3f} ms, "
+              f"p95 {np.percentile(ms, 95):.3f} ms over {len(ms)} cycles")
+    if len(cycles):
+        print(f"  all: per-cycle planning time median {1e3 * np.median(cycles):.3f} ms, "
+              f"p95 {1e3 * np.percentile(cycles, 95):.3f} ms over {len(cycles)} cycles")
+    return 0
+
+
+def _existing(path: Path):
+    return path if path.exists() else None
+
+
+def _positive(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{text}: must be an integer >= 1")
+    return value
+
+
+def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="fgdwa", description="fgdwa: dynamic window local planning.")
     sub = parser.add_subparsers(dest="command", required=True)
+
     demo = sub.add_parser("demo", help="run the classic DWA on the built-in demo scenario")
     demo.add_argument("--out", default="out/demo", help="directory for the figure (default: out/demo)")
-    demo.add_argument("--max-steps", type=int, default=1000)
-    demo.set_defaults(func=cmd_demo)
+    demo.add_argument("--max-steps", type=_positive, default=1000)
+    demo.set_defaults(func=lambda args, argv: cmd_demo(args))
+
+    run = sub.add_parser("run", help="run one episode of a scenario: metrics, a PNG and optionally a GIF")
+    run.add_argument("scenario", help="a shipped scenario name (demo, e1, e2, e3) or a scenario YAML file")
+    run.add_argument("--planner", default=None, choices=preset_names(),
+                     help="planner preset (default: the scenario's)")
+    run.add_argument("--seed", type=int, default=0, help="trial seed: start jitter, obstacle phases, lidar noise")
+    run.add_argument("--out", default="out/run", help="directory for the PNG (default: out/run)")
+    run.add_argument("--gif", default=None, metavar="FILE", help="also write an animated GIF of the run")
+    run.add_argument("--frames", type=_positive, default=150, help="at most this many GIF frames (default 150)")
+    run.add_argument("--max-steps", type=_positive, default=None, help="override the scenario's max_steps")
+    run.set_defaults(func=lambda args, argv: cmd_run(args))
+
+    exp = sub.add_parser("experiment", help="run the paper's experiments (SPEC 10) and write tables, figures "
+                                            "and reports")
+    exp.add_argument("name", choices=["e1", "e2", "e3", "all"])
+    exp.add_argument("--trials", type=_positive, default=15, help="trials per planner (default 15)")
+    exp.add_argument("--seed", type=int, default=0, help="base seed: trial i uses seed + i (default 0)")
+    exp.add_argument("--out", default=DEFAULT_EXPERIMENT_OUT,
+                     help=f"output directory (default {DEFAULT_EXPERIMENT_OUT}, which also rewrites "
+                          f"{DEFAULT_RESULTS_MD})")
+    exp.add_argument("--executor", choices=["local", "dask", "serial"], default="local",
+                     help="local: a process pool on this machine (default); dask: a dask.distributed cluster; "
+                          "serial: this process")
+    exp.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                     help="dask scheduler address (default: a LocalCluster on this machine)")
+    exp.add_argument("--workers", type=_positive, default=2, help="worker processes (default 2)")
+    exp.add_argument("--max-steps", type=_positive, default=None, help="override every scenario's max_steps")
+    exp.add_argument("--results-md", default=None, metavar="PATH",
+                     help=f"also write the results page there (default: {DEFAULT_RESULTS_MD} when --out is "
+                          "the default)")
+    exp.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
+    exp.add_argument("--no-progress", action="store_true", help="no progress bar")
+    exp.set_defaults(func=cmd_experiment)
+    return parser
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
     args = parser.parse_args(argv)
+    if args.command == "experiment" and args.scheduler is not None and args.executor != "dask":
+        parser.error("--scheduler needs --executor dask")
     try:
-        return args.func(args)
+        return args.func(args, argv)
     except FgdwaError as error:
         print(f"fgdwa: {error}", file=sys.stderr)
         return 2

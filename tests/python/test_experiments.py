@@ -1,0 +1,287 @@
+"""Experiments (SPEC 10): statistics, tables and reports, executors, the CLI and the GIF."""
+
+import csv
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy import stats as sps
+
+from fgdwa import FgdwaError, builtin, stats
+from fgdwa.cli import main
+from fgdwa.experiments import (
+    EXPERIMENTS,
+    FINISHING,
+    Claim,
+    ExperimentResult,
+    ExperimentSpec,
+    TrialRecord,
+    comparable_runs,
+    judge_claims,
+    run_experiment,
+    run_tasks,
+    trial_tasks,
+    verdict,
+)
+from fgdwa.report import (
+    EXCLUSION_NOTE,
+    per_trial_table,
+    read_json,
+    save_experiment,
+    terminal_report,
+    write_csvs,
+    write_json,
+    write_markdown,
+)
+
+A = [89.0, 88.6, 90.2, 81.9, 87.6, 88.6, 93.5]
+B = [113.4, 113.6, 115.8, 113.5, 113.2, 112.4, 111.0, 114.1]
+
+
+# --------------------------------------------------------------------------------------------- statistics
+
+def test_welch_and_mann_whitney_match_scipy():
+    p, note = stats.welch_p(A, B)
+    assert p == pytest.approx(sps.ttest_ind(A, B, equal_var=False).pvalue, rel=1e-12)
+    assert note == ""
+    p, note = stats.mwu_p(A, B)
+    assert p == pytest.approx(sps.mannwhitneyu(A, B, alternative="two-sided").pvalue, rel=1e-12)
+    assert note == ""
+    assert stats.fisher_p(15, 15, 12, 15) == pytest.approx(sps.fisher_exact([[15, 0], [12, 3]]).pvalue)
+
+
+def test_effect_percent_follows_the_papers_tables():
+    assert stats.effect_percent(89.58, 121.36) == pytest.approx(-26.19, abs=0.01)  # Table 9
+    assert stats.effect_percent(0.48, 0.32) == pytest.approx(50.0)  # Table 12
+    assert stats.effect_percent(100.0, 80.0) == pytest.approx(25.0)  # Table 18
+    assert stats.effect_percent(1.0, -2.0) == pytest.approx(150.0)  # relative to |other|
+    assert stats.effect_percent(0.0, 0.0) == 0.0
+    assert math.isnan(stats.effect_percent(1.0, 0.0))
+    assert math.isnan(stats.effect_percent(float("nan"), 1.0))
+
+
+def test_describe_drops_missing_values():
+    s = stats.describe([1.0, float("nan"), 3.0, None])
+    assert (s.n, s.mean, s.median, s.min, s.max) == (2, 2.0, 2.0, 1.0, 3.0)
+    assert s.std == pytest.approx(np.std([1.0, 3.0], ddof=1))
+    one = stats.describe([5.0])
+    assert one.n == 1 and one.mean == 5.0 and math.isnan(one.std)
+    assert stats.describe([]).n == 0 and math.isnan(stats.describe([]).mean)
+
+
+def test_degenerate_samples_give_defined_p_values():
+    assert stats.welch_p([2.0, 2.0, 2.0], [2.0, 2.0]) == (1.0, "all values equal")
+    assert stats.mwu_p([2.0, 2.0, 2.0], [2.0, 2.0]) == (1.0, "all values equal")
+    p, note = stats.welch_p([1.0, 1.0, 1.0], [2.0, 2.0, 2.0])
+    assert p == 0.0 and "constant" in note
+    assert stats.mwu_p([1.0, 1.0, 1.0], [2.0, 2.0, 2.0])[0] == pytest.approx(
+        sps.mannwhitneyu([1, 1, 1], [2, 2, 2], alternative="two-sided").pvalue)
+    p, note = stats.welch_p([1.0], [2.0, 3.0])
+    assert math.isnan(p) and "n < 2" in note
+    assert stats.mwu_p([1.0], [2.0, 3.0])[0] == pytest.approx(
+        sps.mannwhitneyu([1.0], [2.0, 3.0], alternative="two-sided").pvalue)
+    p, note = stats.mwu_p([], [1.0])
+    assert math.isnan(p) and "no value" in note
+    assert math.isnan(stats.fisher_p(0, 0, 1, 2))
+    c = stats.compare("steps", "a", [float("nan")] * 3, "b", [1.0, 2.0])
+    assert c.proposed_summary.n == 0 and math.isnan(c.welch_p) and math.isnan(c.mwu_p) and c.note
+
+
+def test_verdicts_come_from_the_numbers():
+    down = Claim("steps", "gdwa", -2.5, "paper")
+    assert verdict(down, -4.0, 0.01) == ("same direction, significant (-4.0 %, p = 0.01)", True)
+    assert verdict(down, -4.0, 0.2)[0].startswith("same direction, not significant")
+    assert verdict(down, 3.0, 0.01) == ("opposite direction, significant (+3.0 %, p = 0.01)", False)
+    assert verdict(down, float("nan"), float("nan"))[1] is None
+    assert verdict(down, 0.0, 1.0)[1] is False
+    none = Claim("mileage", "x", 0.1, "paper", kind="no_difference")
+    assert verdict(none, 0.05, 0.6)[1] is True
+    assert verdict(none, 3.0, 0.001)[1] is False
+
+
+# --------------------------------------------------------------------------------------------- tables and files
+
+def _record(planner, trial, outcome="success", steps=100, time=0.1, mileage=10.0, danger=0.5):
+    metrics = {"outcome": outcome, "steps": steps, "sim_time": 0.15 * steps, "planning_time": time,
+               "mileage": mileage, "min_clearance": 0.2, "mean_clearance": 0.8, "danger_clearance": danger,
+               "mean_deviation": 0.1, "max_deviation": 0.3, "smoothness": 1.0}
+    n = steps
+    return TrialRecord("t", planner, trial, 7 + trial, metrics, wall_time=0.2, poses=np.zeros((n + 1, 3)),
+                       cycle_times=np.full(n, time / n), beta=np.full(n, 0.3), delta=np.full(n, 1.0),
+                       density=np.zeros(n), deviation=np.zeros(n), dt=0.15)
+
+
+def _hand_made_result():
+    spec = ExperimentSpec("t", "T: hand-made", "demo", ("fgdwa", "gdwa"),
+                          claims=(Claim("steps", "gdwa", -10.0, "fewer steps"),
+                                  Claim(FINISHING, "gdwa", 25.0, "100 % vs 80 %")))
+    records = [_record("fgdwa", i, steps=s, time=t, mileage=m)
+               for i, (s, t, m) in enumerate([(100, 0.10, 10.0), (102, 0.11, 10.2), (98, 0.09, 9.9)])]
+    records += [_record("gdwa", 0, steps=120, time=0.12, mileage=11.0),
+                _record("gdwa", 1, outcome="collision", steps=40, time=0.05, mileage=3.0),
+                _record("gdwa", 2, steps=124, time=0.13, mileage=11.4)]
+    return ExperimentResult(spec, 3, 7, records, wall_time=1.0, executor="serial")
+
+
+def test_failed_runs_count_in_the_finishing_rate_only():
+    result = _hand_made_result()
+    assert result.values("gdwa", "steps")[1] != result.values("gdwa", "steps")[1]  # nan
+    assert result.finishing("gdwa") == (2, 3)
+    d = result.to_dict()
+    assert d["summary"]["gdwa"]["steps"]["n"] == 2
+    assert d["summary"]["gdwa"]["steps"]["mean"] == pytest.approx(122.0)
+    steps = next(c for c in d["comparisons"] if c["metric"] == "steps")
+    assert steps["welch_p"] == pytest.approx(sps.ttest_ind([100, 102, 98], [120, 124], equal_var=False).pvalue)
+    assert steps["effect_pct"] == pytest.approx((100.0 - 122.0) / 122.0 * 100)
+    finishing = d["finishing_comparisons"][0]
+    assert (finishing["rate_proposed"], finishing["rate_other"]) == (100.0, pytest.approx(200 / 3))
+    assert finishing["fisher_p"] == pytest.approx(sps.fisher_exact([[3, 0], [2, 1]]).pvalue)
+    claims = {c["metric"]: c for c in d["claims"]}
+    assert claims["steps"]["agrees"] is True and "same direction" in claims["steps"]["verdict"]
+    assert claims[FINISHING]["agrees"] is True
+    assert d["seeds"] == [7, 8, 9]
+    assert d["cycle_time_ms"]["all"]["cycles"] == 100 + 102 + 98 + 120 + 40 + 124
+
+
+def test_tables_csv_json_and_markdown(tmp_path):
+    d = _hand_made_result().to_dict()
+    table = per_trial_table(d, "steps")
+    text = table.text()
+    assert "collision" in text and "Welch p" in text and "Mann-Whitney p" in text
+    assert table.rows[0][1:] == ["100", "120"]
+    text = terminal_report(d)
+    for words in ("finishing rate", "Iteration steps", "Mileage", "Danger-point clearance", "claims", "p95"):
+        assert words in text
+
+    paths = write_csvs(d, tmp_path)
+    with open(paths[0]) as f:
+        runs = list(csv.DictReader(f))
+    assert len(runs) == 6 and runs[4]["outcome"] == "collision" and runs[4]["steps"] == "40"
+    with open(paths[2]) as f:
+        comparisons = list(csv.DictReader(f))
+    assert {r["metric"] for r in comparisons} >= {"steps", "planning_time", "mileage", FINISHING}
+
+    d["comparisons"][0]["note"] = "x"
+    d["comparisons"][0]["mwu_p"] = float("nan")
+    path = write_json(d, tmp_path / "t.json")
+    raw = json.loads(path.read_text())  # strict JSON: nan written as null
+    assert raw["comparisons"][0]["mwu_p"] is None
+    back = read_json(path)
+    assert math.isnan(back["comparisons"][0]["mwu_p"])
+    assert per_trial_table(back, "mileage").text() == per_trial_table(d, "mileage").text()
+
+    md = write_markdown(d, tmp_path / "sub" / "report.md", {"a figure": tmp_path / "fig.png"}).read_text()
+    assert EXCLUSION_NOTE in md and "| Iteration steps |" in md and "![a figure](../fig.png)" in md
+
+
+# --------------------------------------------------------------------------------------------- running
+
+SMALL = ExperimentSpec("small", "small", builtin.unknown_beside_path_scenario, ("fgdwa", "gdwa"))
+
+
+def test_trials_share_seeds_across_planners():
+    tasks = trial_tasks(SMALL, 3, base_seed=10, options={"max_steps": 5})
+    assert [(t.planner, t.seed) for t in tasks] == [("fgdwa", 10), ("gdwa", 10), ("fgdwa", 11), ("gdwa", 11),
+                                                     ("fgdwa", 12), ("gdwa", 12)]
+    assert all(dict(t.options) == {"max_steps": 5} for t in tasks)
+    with pytest.raises(FgdwaError, match="trials"):
+        trial_tasks(SMALL, 0)
+
+
+def test_bad_executor_arguments():
+    with pytest.raises(FgdwaError, match="executor"):
+        run_tasks([], executor="threads")
+    with pytest.raises(FgdwaError, match="scheduler"):
+        run_tasks([], executor="local", scheduler="tcp://x:1")
+    scenario_object = ExperimentSpec("o", "o", builtin.demo_scenario(), ("gdwa",))
+    with pytest.raises(FgdwaError, match="cannot be sent"):
+        run_tasks(trial_tasks(scenario_object, 1), executor="local", progress=False)
+
+
+def test_results_do_not_depend_on_the_executor():
+    options = {"max_steps": 60}
+    serial = run_experiment(SMALL, trials=2, base_seed=3, executor="serial", progress=False, options=options)
+    local = run_experiment(SMALL, trials=2, base_seed=3, executor="local", progress=False, options=options)
+    dask = run_experiment(SMALL, trials=2, base_seed=3, executor="dask", progress=False, options=options)
+    expected = comparable_runs(serial)
+    assert [r[:3] for r in expected] == [("fgdwa", 0, 3), ("fgdwa", 1, 4), ("gdwa", 0, 3), ("gdwa", 1, 4)]
+    assert comparable_runs(local) == expected
+    assert comparable_runs(dask) == expected
+    for other in (local, dask):
+        for a, b in zip(serial.records, other.records):
+            np.testing.assert_array_equal(a.poses, b.poses)
+            np.testing.assert_array_equal(a.beta, b.beta)
+
+
+def test_judge_claims_without_runs():
+    rows = judge_claims([Claim("steps", "gdwa", -1.0, "p")], [], [])
+    assert rows[0]["agrees"] is None and "not measurable" in rows[0]["verdict"]
+
+
+def test_the_three_experiments_end_to_end(tmp_path, capsys):
+    out = tmp_path / "results"
+    results_md = tmp_path / "docs" / "RESULTS.md"
+    code = main(["experiment", "all", "--trials", "3", "--seed", "0", "--out", str(out), "--results-md",
+                 str(results_md), "--no-progress"])
+    assert code == 0
+    printed = capsys.readouterr().out
+    assert "wall time:" in printed and "per-cycle planning time median" in printed and "p95" in printed
+    for name, spec in EXPERIMENTS.items():
+        folder = out / name
+        for f in (f"{name}.json", f"{name}_runs.csv", f"{name}_summary.csv", f"{name}_comparisons.csv",
+                  "report.md", f"{name}_paths.png", f"{name}_boxplots.png"):
+            assert (folder / f).stat().st_size > 0, f
+        d = read_json(folder / f"{name}.json")
+        assert d["planners"] == list(spec.planners) and d["trials"] == 3 and d["seeds"] == [0, 1, 2]
+        assert len(d["runs"]) == 3 * len(spec.planners)
+        assert len(d["claims"]) == len(spec.claims)
+        assert all(c["verdict"] for c in d["claims"])
+        assert (folder / f"{name}_weights.png").exists() == ("fgdwa" in spec.planners)
+        assert spec.title in printed
+    assert (out / "control_surfaces.png").stat().st_size > 0
+    page = results_md.read_text()
+    assert "## The paper's claims" in page and "../results/e2/e2_paths.png" in page
+    assert page.count("| E2 |") == len(EXPERIMENTS["e2"].claims)
+    assert (out / "report.md").exists()
+
+
+def test_a_single_experiment_updates_the_results_page_from_saved_runs(tmp_path):
+    out = tmp_path / "r"
+    save_experiment(_hand_made_result(), out, figures=False)
+    assert main(["experiment", "e1", "--trials", "2", "--out", str(out), "--results-md", str(tmp_path / "R.md"),
+                 "--no-figures", "--no-progress", "--executor", "serial", "--max-steps", "30"]) == 0
+    page = (tmp_path / "R.md").read_text()
+    assert "E1" in page and (out / "e1" / "e1.json").exists()
+
+
+def test_run_writes_png_and_a_readable_gif(tmp_path, capsys):
+    from PIL import Image
+
+    gif = tmp_path / "demo.gif"
+    code = main(["run", "demo", "--planner", "fgdwa", "--seed", "1", "--out", str(tmp_path), "--gif", str(gif),
+                 "--frames", "12"])
+    printed = capsys.readouterr().out
+    assert code == 0, printed
+    assert "outcome          success" in printed and "cycle time" in printed
+    assert (tmp_path / "demo_fgdwa.png").stat().st_size > 0
+    with Image.open(gif) as image:
+        assert image.format == "GIF"
+        assert image.n_frames == 12
+        image.seek(image.n_frames - 1)
+        assert image.size[0] > 100
+    import matplotlib.image
+
+    assert matplotlib.image.imread(tmp_path / "demo_fgdwa.png").ndim == 3
+
+
+def test_cli_rejects_bad_arguments(capsys):
+    with pytest.raises(SystemExit):
+        main(["experiment", "e1", "--scheduler", "tcp://127.0.0.1:1"])
+    with pytest.raises(SystemExit):
+        main(["experiment", "e9"])
+    with pytest.raises(SystemExit):
+        main(["experiment", "e1", "--trials", "0"])
+    assert main(["run", "no_such_scenario_xyz"]) == 2
+    assert "no_such_scenario_xyz" in capsys.readouterr().err
