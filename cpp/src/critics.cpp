@@ -44,6 +44,38 @@ double SimilarityCritic::score(const Rollout& rollout) const {
   return 1.0 / (workspace_.distance(positions_, reference_, params_.band) + 1.0);
 }
 
+void SimilarityCritic::score_all(const std::vector<Rollout>& rollouts, double* out) const {
+  if (params_.band != kNoBand) {
+    Critic::score_all(rollouts, out);
+    return;
+  }
+  // Batches of rollouts side by side: the DTW recurrence of one rollout is a
+  // chain of dependent steps, several rollouts in step keep the processor busy.
+  constexpr std::size_t kBatch = 8;
+  for (std::size_t first = 0; first < rollouts.size(); first += kBatch) {
+    const std::size_t count = std::min(kBatch, rollouts.size() - first);
+    const std::size_t n = rollouts[first].poses->size();
+    bool same_length = true;
+    for (std::size_t k = 1; k < count; ++k) same_length = same_length && rollouts[first + k].poses->size() == n;
+    if (!same_length || n == 0) {
+      for (std::size_t k = 0; k < count; ++k) out[first + k] = score(rollouts[first + k]);
+      continue;
+    }
+    batch_x_.resize(n * count);
+    batch_y_.resize(n * count);
+    for (std::size_t k = 0; k < count; ++k) {
+      const Trajectory& poses = *rollouts[first + k].poses;
+      for (std::size_t i = 0; i < n; ++i) {
+        batch_x_[i * count + k] = poses[i].x;
+        batch_y_[i * count + k] = poses[i].y;
+      }
+    }
+    workspace_.distance_batch(batch_x_.data(), batch_y_.data(), n, count, reference_.data(), reference_.size(),
+                              out + first);
+    for (std::size_t k = 0; k < count; ++k) out[first + k] = 1.0 / (out[first + k] + 1.0);
+  }
+}
+
 namespace {
 using Params = std::map<std::string, double>;
 using Options = std::map<std::string, std::string>;

@@ -60,6 +60,47 @@ double DtwWorkspace::distance(const Vec2* a, std::size_t n, const Vec2* b, std::
   return previous_[m - 1];
 }
 
+void DtwWorkspace::distance_batch(const double* ax, const double* ay, std::size_t n, std::size_t count,
+                                  const Vec2* b, std::size_t m, double* out) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const std::size_t K = count;
+  bx_.resize(m);
+  by_.resize(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    bx_[j] = b[j].x();
+    by_[j] = b[j].y();
+  }
+  previous_.assign(m * K, kInf);
+  current_.resize(m * K);
+  left_.resize(K);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* xi = ax + i * K;
+    const double* yi = ay + i * K;
+    std::fill(left_.begin(), left_.end(), kInf);
+    for (std::size_t j = 0; j < m; ++j) {
+      const double bxj = bx_[j], byj = by_[j];
+      double* cur = &current_[j * K];
+      const double* up = &previous_[j * K];
+      const double* diag = j > 0 ? &previous_[(j - 1) * K] : nullptr;
+      for (std::size_t k = 0; k < K; ++k) {
+        const double dx = xi[k] - bxj, dy = yi[k] - byj;
+        const double d = std::sqrt(dx * dx + dy * dy);
+        double best;
+        if (i == 0 && j == 0) {
+          best = 0.0;
+        } else {
+          best = std::min(left_[k], up[k]);
+          if (diag) best = std::min(best, diag[k]);
+        }
+        left_[k] = d + best;
+        cur[k] = left_[k];
+      }
+    }
+    std::swap(previous_, current_);
+  }
+  for (std::size_t k = 0; k < K; ++k) out[k] = previous_[(m - 1) * K + k];
+}
+
 double dtw(const std::vector<Vec2>& a, const std::vector<Vec2>& b, int band) {
   if (a.empty() || b.empty()) throw Error("dtw: both sequences need at least one point");
   for (const auto* seq : {&a, &b})

@@ -39,12 +39,23 @@ double LaserScanner::cast_grid(const Vec2& origin, const Vec2& dir) const {
   if (!world_ || !world_->has_obstacles()) return kInf;
   const OccupancyGrid& grid = world_->grid();
   const double res = grid.resolution();
-  const double range = params_.max_range;
-  double t = 0.0;
-  // Far from obstacles, jump by the clearance: nothing lies closer.
+  // Obstacles lie only inside the grid: clip the ray to its rectangle.
+  const Vec2 lo = grid.origin(), hi = lo + Vec2(grid.cols() * res, grid.rows() * res);
+  double t = 0.0, range = params_.max_range;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (dir[axis] == 0.0) {
+      if (origin[axis] < lo[axis] || origin[axis] > hi[axis]) return kInf;
+      continue;
+    }
+    double t0 = (lo[axis] - origin[axis]) / dir[axis], t1 = (hi[axis] - origin[axis]) / dir[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    t = std::max(t, t0);
+    range = std::min(range, t1);
+  }
+  if (t > range) return kInf;
+  // Far from obstacles, jump by a lower bound of the clearance: nothing lies closer.
   while (t < range) {
-    const double d = world_->distance(origin + t * dir);
-    if (d <= 0.0) return t;
+    const double d = world_->lower_bound(origin + t * dir);
     if (d < res) break;
     t += d;
   }
@@ -70,7 +81,7 @@ double LaserScanner::cast_grid(const Vec2& origin, const Vec2& dir) const {
       entry = t_r;
       t_r += delta_r;
     }
-    if (entry >= range) return kInf;
+    if (entry >= params_.max_range) return kInf;
     if (grid.in_bounds(row, col)) {
       if (grid.occupied(row, col)) return entry;
     } else if ((step_c > 0 ? col >= grid.cols() : col < 0) || (step_r > 0 ? row >= grid.rows() : row < 0)) {

@@ -297,16 +297,19 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
   result_.normalized.setZero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
   result_.total.setConstant(static_cast<Eigen::Index>(n), -std::numeric_limits<double>::infinity());
 
-  Rollout r;
+  admissible_.clear();
+  admissible_index_.clear();
   for (std::size_t i = 0; i < n; ++i) {
     if (result_.reasons[i] != RejectReason::None) continue;
-    r.command = result_.samples[i];
-    r.poses = &rollouts_[i];
-    r.min_clearance = result_.min_clearance[i];
-    r.free_distance = result_.free_distance[i];
-    for (std::size_t j = 0; j < m; ++j) result_.raw(i, j) = critics_[j]->score(r);
+    admissible_.push_back(Rollout{result_.samples[i], &rollouts_[i], result_.min_clearance[i], result_.free_distance[i]});
+    admissible_index_.push_back(i);
   }
-  if (result_.admissible_count() == 0) return;
+  if (admissible_.empty()) return;
+  scores_.resize(admissible_.size());
+  for (std::size_t j = 0; j < m; ++j) {
+    critics_[j]->score_all(admissible_, scores_.data());
+    for (std::size_t a = 0; a < admissible_.size(); ++a) result_.raw(admissible_index_[a], j) = scores_[a];
+  }
 
   for (std::size_t j = 0; j < m; ++j) {
     double sum = 0.0, lo = std::numeric_limits<double>::infinity(), hi = -lo;

@@ -45,6 +45,11 @@ class Critic {
   // Whether the critic reads the global path (the planner refuses to run it without one).
   virtual bool needs_path() const { return false; }
   virtual double score(const Rollout& rollout) const = 0;
+  // score() of each rollout into out[i]; critics that gain from seeing many
+  // rollouts at once override it, with the same results.
+  virtual void score_all(const std::vector<Rollout>& rollouts, double* out) const {
+    for (std::size_t i = 0; i < rollouts.size(); ++i) out[i] = score(rollouts[i]);
+  }
 };
 
 // How a critic is named in configuration: its registered name, the weight the
@@ -120,6 +125,7 @@ class SimilarityCritic : public Critic {
   bool needs_path() const override { return true; }
   void prepare(const CriticContext& context) override;
   double score(const Rollout& rollout) const override;
+  void score_all(const std::vector<Rollout>& rollouts, double* out) const override;
   // The reference samples of the current cycle.
   const std::vector<Vec2>& reference() const { return reference_; }
 
@@ -127,6 +133,7 @@ class SimilarityCritic : public Critic {
   SimilarityParams params_;
   std::vector<Vec2> reference_;
   mutable std::vector<Vec2> positions_;
+  mutable std::vector<double> batch_x_, batch_y_;
   mutable DtwWorkspace workspace_;
 };
 

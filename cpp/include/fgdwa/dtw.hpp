@@ -22,8 +22,15 @@ class DtwWorkspace {
     return distance(a.data(), a.size(), b.data(), b.size(), band);
   }
 
+  // The full DTW (no band) of `count` sequences of n points each against b,
+  // side by side so the compiler can vectorise across them: point i of
+  // sequence k is (ax[i * count + k], ay[i * count + k]). Each result equals
+  // distance() of that sequence, bit for bit.
+  void distance_batch(const double* ax, const double* ay, std::size_t n, std::size_t count, const Vec2* b,
+                      std::size_t m, double* out);
+
  private:
-  std::vector<double> previous_, current_, bx_, by_, row_;
+  std::vector<double> previous_, current_, bx_, by_, row_, left_;
 };
 
 // One-off DTW; throws fgdwa::Error on an empty sequence or a non-finite point.

@@ -131,6 +131,9 @@ class LocalPlanner {
   std::vector<Trajectory> rollouts_;
   std::vector<double> bounds_, exact_;
   std::vector<RolloutTurn> turns_;  // per omega of the window
+  std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
+  std::vector<std::size_t> admissible_index_;
+  std::vector<double> scores_;
   std::vector<double> arc_factors_;  // per omega: arc length over chord of one step  // per pose of the rollout in hand: clearance lower bound, exact value
   std::unique_ptr<GlobalPath> path_;
   std::unique_ptr<KeyNodeTracker> tracker_;
