@@ -27,7 +27,7 @@ int main() {
   const fgdwa::RobotLimits limits;  // 1.2 m/s, 1 rad/s
   const fgdwa::Footprint footprint = fgdwa::Footprint::circle(0.25);
   fgdwa::PlannerParams params;
-  params.critics = {{"heading", 0.5, {}}, {"clearance", 0.3, {}}, {"velocity", 1.0, {}}};
+  params.critics = {{"heading", 0.5, {}}, {"clearance", 0.6, {}}, {"velocity", 1.0, {}}};
   fgdwa::LocalPlanner planner(limits, footprint, params);
 
   fgdwa::RobotState state;

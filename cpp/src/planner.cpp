@@ -57,6 +57,7 @@ void PlannerParams::validate() const {
   if (n_steps() < 1) throw Error(detail::describe("sim_time", sim_time, "must be at least one dt"));
   window.validate();
   detail::require_non_negative("goal_tolerance", goal_tolerance);
+  detail::require_non_negative("safety_margin", safety_margin);
   key_nodes.validate();
   if (critics.empty()) throw Error("critics: at least one critic is needed");
   for (std::size_t i = 0; i < critics.size(); ++i)
@@ -177,39 +178,48 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
 }
 
 namespace {
-// The pose `steps` (a real number) steps into a constant-command rollout, on the
-// circle through its poses: the discrete model's poses all lie on one circle of
-// radius v dt / (2 sin(omega dt / 2)), with the heading turning omega dt per step.
-Pose2 pose_along_rollout(const Pose2& start, const Twist& cmd, double dt, double steps) {
-  const double a = start.theta, b = cmd.omega * dt, chord = cmd.v * dt;
-  if (std::abs(b) < 1e-9) {
-    const double d = steps * chord, th = a + steps * b;
-    return Pose2{start.x + d * std::cos(th), start.y + d * std::sin(th), wrap_angle(th)};
-  }
-  const double radius = chord / (2.0 * std::sin(0.5 * b));  // signed: negative turning right
-  const double cx = start.x - radius * std::sin(a + 0.5 * b), cy = start.y + radius * std::cos(a + 0.5 * b);
-  const double phi = a + 0.5 * b + steps * b;
-  return Pose2{cx + radius * std::sin(phi), cy - radius * std::cos(phi), wrap_angle(a + steps * b)};
+// One step of the motion model turns in place by omega dt, then drives straight
+// to the next pose. Whether the footprint stays clear along a piece of it,
+// given the clearances c0 and c1 at its ends: no footprint point moves more
+// than `sweep` over the piece and the clearance changes no faster than the
+// footprint moves, so a piece with c0 + c1 above its sweep is clear; others are
+// halved until they are, down to a millimetre. `pose(f)`, f in [0, 1], walks the piece.
+template <typename PoseAt>
+bool clear_along(const ClearanceSource& world, const Footprint& footprint, const PoseAt& pose, double t0, double dt,
+                 double f0, double c0, double f1, double c1, double sweep, double margin) {
+  if (c0 <= 0.0 || c1 <= 0.0) return false;
+  const double piece = (f1 - f0) * sweep;
+  if (c0 + c1 > piece) return true;
+  if (piece < 1e-3) return false;
+  const double fm = 0.5 * (f0 + f1);
+  const double cm = world.clearance(footprint, pose(fm), t0 + fm * dt) - margin;
+  return clear_along(world, footprint, pose, t0, dt, f0, c0, fm, cm, sweep, margin) &&
+         clear_along(world, footprint, pose, t0, dt, fm, cm, f1, c1, sweep, margin);
 }
 
-// Whether the footprint stays clear along the rollout's arc between steps s0
-// and s1, given the clearances c0 and c1 there. No footprint point moves more
-// than `sweep_per_step` per step and the clearance changes no faster than the
-// footprint moves, so a piece with c0 + c1 above its sweep is clear; others are
-// halved until they are, down to a millimetre. The poses alone miss an obstacle
-// corner that the footprint clips between two of them.
-bool clear_between(const ClearanceSource& world, const Footprint& footprint, const Pose2& start, const Twist& cmd,
-                   double dt, double s0, double c0, double s1, double c1, double sweep_per_step) {
-  if (c0 <= 0.0 || c1 <= 0.0) return false;
-  const double sweep = (s1 - s0) * sweep_per_step;
-  if (c0 + c1 > sweep) return true;
-  if (sweep < 1e-3) return false;
-  const double sm = 0.5 * (s0 + s1);
-  const double cm = world.clearance(footprint, pose_along_rollout(start, cmd, dt, sm), sm * dt);
-  return clear_between(world, footprint, start, cmd, dt, s0, c0, sm, cm, sweep_per_step) &&
-         clear_between(world, footprint, start, cmd, dt, sm, cm, s1, c1, sweep_per_step);
+// The step from `from` (clearance c0, at time t0) to `to` (clearance c1): the
+// turn in place, for a footprint that is not a circle, then the straight drive.
+// Clearances count from the safety margin.
+bool step_clear(const ClearanceSource& world, const Footprint& footprint, const Pose2& from, double c0, const Pose2& to,
+                double c1, double t0, double dt, double margin) {
+  Pose2 turned{from.x, from.y, to.theta};
+  double c_turned = c0;
+  if (!footprint.is_circle()) {
+    const double turn = angle_difference(to.theta, from.theta);
+    c_turned = world.clearance(footprint, turned, t0) - margin;
+    const auto turning = [&](double f) { return Pose2{from.x, from.y, from.theta + f * turn}; };
+    if (!clear_along(world, footprint, turning, t0, 0.0, 0.0, c0, 1.0, c_turned, footprint.radius() * std::abs(turn),
+                     margin))
+      return false;
+  }
+  const auto driving = [&](double f) {
+    return Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta};
+  };
+  return clear_along(world, footprint, driving, t0, dt, 0.0, c_turned, 1.0, c1, std::hypot(to.x - from.x, to.y - from.y),
+                     margin);
 }
 }  // namespace
+
 
 void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSource& world) {
   const std::size_t n = result_.samples.size();
@@ -219,7 +229,14 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   result_.free_distance.resize(n);
   const double inf = std::numeric_limits<double>::infinity();
   // A start already in contact is not held against the first step, so the robot can still leave.
-  const double start_clearance = world.clearance(footprint_, state.pose, 0.0);
+  // Contact is judged against the safety margin: the robot's motion between
+  // control cycles (braking included) strays from the checked rollout by a few
+  // millimetres, so a rollout grazing an obstacle is not trusted.
+  // The margin never asks for more room than the robot already has, so a robot
+  // that came within it can still move on without closing in.
+  const double clearance_now = world.clearance(footprint_, state.pose, 0.0);
+  const double margin = std::clamp(clearance_now - 1e-3, 0.0, params_.safety_margin);
+  const double start_clearance = clearance_now - margin;
   const double turn_reach = footprint_.is_circle() ? 0.0 : footprint_.radius();
   bounds_.resize(static_cast<std::size_t>(n_steps_));
   exact_.resize(static_cast<std::size_t>(n_steps_));
@@ -227,28 +244,25 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   // Samples come v-major: the turns of the first row serve every row.
   const std::size_t n_omega = static_cast<std::size_t>(params_.window.n_omega);
   turns_.clear();
-  arc_factors_.clear();
   for (std::size_t j = 0; j < std::min(n_omega, n); ++j) {
     turns_.emplace_back(result_.samples[j].omega, params_.dt);
-    // An arc is longer than its chord v dt by (b / 2) / sin(b / 2), b the turn.
-    const double b = std::abs(result_.samples[j].omega) * params_.dt;
-    arc_factors_.push_back(b < 1e-9 ? 1.0 : (0.5 * b) / std::sin(0.5 * b));
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Twist& cmd = result_.samples[i];
     Trajectory& poses = rollouts_[i];
     rollout(state.pose, cos_start, sin_start, cmd.v * params_.dt, turns_[i % n_omega], n_steps_, poses);
-    // Farthest any footprint point moves per step: the arc plus the turn.
-    const double sweep_per_step = cmd.v * params_.dt * arc_factors_[i % n_omega] +
-                                  turn_reach * std::abs(cmd.omega) * params_.dt;
+    // Farthest any footprint point moves per step: the turn, then the drive.
+    const double sweep_per_step = cmd.v * params_.dt + turn_reach * std::abs(cmd.omega) * params_.dt;
     // Cheap lower bounds first; exact clearances only where a bound cannot
     // settle contact or the minimum. The result is the same as evaluating
     // every pose exactly.
     world.clearance_lower_bounds(footprint_, poses, params_.dt, bounds_.data());
+    for (double& bound : bounds_) bound -= margin;
     std::fill(exact_.begin(), exact_.end(), std::numeric_limits<double>::quiet_NaN());
     const auto exact = [&](int k) {
       double& c = exact_[static_cast<std::size_t>(k)];
-      if (std::isnan(c)) c = world.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt);
+      if (std::isnan(c))
+        c = world.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt) - margin;
       return c;
     };
     double free_distance = inf;
@@ -261,8 +275,10 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
         continue;  // clear at pose k and on the way there
       const double c = exact(k);
       const double previous = k == 0 ? start_clearance : exact(k - 1);
-      const bool clear = c > 0.0 && (leaving_contact || clear_between(world, footprint_, state.pose, cmd, params_.dt, k,
-                                                                       previous, k + 1, c, sweep_per_step));
+      const Pose2& from = k == 0 ? state.pose : poses[static_cast<std::size_t>(k - 1)];
+      const bool clear = c > 0.0 && (leaving_contact || step_clear(world, footprint_, from, previous,
+                                                                   poses[static_cast<std::size_t>(k)], c,
+                                                                   k * params_.dt, params_.dt, margin));
       if (!clear) {
         // Contact at or before pose k + 1: the robot travels k full steps in free space.
         free_distance = k * cmd.v * params_.dt;
@@ -278,7 +294,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     double min_clearance = exact(first_guess);
     for (int k = 0; k <= last; ++k)
       if (bounds_[static_cast<std::size_t>(k)] < min_clearance) min_clearance = std::min(min_clearance, exact(k));
-    result_.min_clearance[i] = min_clearance;
+    result_.min_clearance[i] = min_clearance + margin;
     result_.free_distance[i] = free_distance;
     result_.reasons[i] = is_admissible(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;
     ++result_.reject_counts[static_cast<std::size_t>(result_.reasons[i])];

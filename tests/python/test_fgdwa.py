@@ -74,7 +74,7 @@ def test_controller_runs_the_cycle_a_robot_would():
     controller = fgdwa.Controller(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.25), preset.params,
                                   fgdwa.DistanceField(grid), preset.weight_policy())
     controller.set_global_path([[1.0, 3.0], [15.0, 3.0]])
-    state = fgdwa.RobotState((3.6, 3.2, 0.0), (0.8, 0.0))  # the first unknown block is 0.4 m ahead-left
+    state = fgdwa.RobotState((3.2, 3.2, 0.0), (0.5, 0.0))  # the first unknown block is 0.8 m ahead-left
     scan = fgdwa.LaserScanner(fgdwa.LidarParams(), truth).scan(state.pose)
     plan = controller.step(state, (15.0, 3.0), scan)
     report = controller.report

@@ -56,6 +56,7 @@ struct PlannerParams {
   Normalization normalization = Normalization::Sum;
   BrakingModel braking = BrakingModel::Discrete;  // admissibility (Eq. 3); Continuous is the paper's literal form
   double goal_tolerance = 0.3;  // m, GoalReached within this distance of the goal
+  double safety_margin = 0.02;  // m, clearance below which a rollout counts as in contact (at most the robot's own)
   HeadingTarget heading_target = HeadingTarget::Goal;
   KeyNodeParams key_nodes;      // key-node angle and reach radius, for HeadingTarget::KeyNodes
   std::vector<CriticConfig> critics = {
@@ -134,7 +135,6 @@ class LocalPlanner {
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;
-  std::vector<double> arc_factors_;  // per omega: arc length over chord of one step  // per pose of the rollout in hand: clearance lower bound, exact value
   std::unique_ptr<GlobalPath> path_;
   std::unique_ptr<KeyNodeTracker> tracker_;
   PlanResult result_;
