@@ -137,3 +137,9 @@ def test_episode_arguments(open_world):
         run_episode(world, (0.5, 0.5, 0.0), (math.nan, 2.8))
     with raises("max_steps"):
         run_episode(world, (0.5, 0.5, 0.0), (2.8, 2.8), max_steps=0)
+
+
+def test_safety_margin():
+    assert fgdwa.PlannerParams().safety_margin == 0.02
+    with raises("safety_margin"):
+        fgdwa.PlannerParams(safety_margin=-0.01)
