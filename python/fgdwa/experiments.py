@@ -174,28 +174,9 @@ def resolve_scenario(source) -> Scenario:
         return scenario
     if not isinstance(source, str):
         raise FgdwaError(f"scenario = {source!r}: expected a name, a YAML path or text, a callable or a Scenario")
-    try:
-        from fgdwa.scenario_file import load_scenario
-    except ImportError:  # scenario files not in this build: the built-in stand-ins
-        return _builtin_scenario(source)
+    from fgdwa.scenario_file import load_scenario
+
     return load_scenario(source)
-
-
-def _builtin_scenario(name: str) -> Scenario:
-    from fgdwa import builtin
-
-    factories = {
-        "demo": builtin.demo_scenario,
-        "e1": builtin.c_trap_scenario,
-        "e2": builtin.unknown_beside_path_scenario,
-        "e3": builtin.c_trap_scenario,
-        "c_trap": builtin.c_trap_scenario,
-        "hidden_obstacles": builtin.hidden_obstacles_scenario,
-        "unknown_beside_path": builtin.unknown_beside_path_scenario,
-    }
-    if name not in factories:
-        raise FgdwaError(f"scenario {name!r}: not a built-in one ({', '.join(sorted(factories))})")
-    return factories[name]()
 
 
 # --------------------------------------------------------------------------------------------- trials
