@@ -242,13 +242,16 @@ def json_safe(value):
     return value
 
 
-def json_restore(value):
+NOT_NUMBERS = ("agrees",)  # keys whose None means "unknown", not a missing number
+
+
+def json_restore(value, key: str = ""):
     """The inverse of json_safe for the numbers the tables read: None back to nan."""
     if isinstance(value, dict):
-        return {k: json_restore(v) for k, v in value.items()}
+        return {k: json_restore(v, k) for k, v in value.items()}
     if isinstance(value, list):
-        return [json_restore(v) for v in value]
-    return float("nan") if value is None else value
+        return [json_restore(v, key) for v in value]
+    return float("nan") if value is None and key not in NOT_NUMBERS else value
 
 
 def write_json(d: dict, path: Path) -> Path:
@@ -313,6 +316,9 @@ def experiment_markdown(d: dict, figures: Optional[dict] = None, relative_to: Op
               f"with seed {d['base_seed']} + i (seeds {seeds}) for every planner; executor `{d['executor']}`"
               + (f"; run options {d['options']}" if d.get("options") else "") + ".", ""]
     lines += [EXCLUSION_NOTE, "", TEST_NOTE, ""]
+    if isinstance(d.get("wall_time"), float) and math.isfinite(d["wall_time"]):
+        lines += [f"{len(d['runs'])} episodes, {d['episode_wall_time']:.1f} s of episode wall time in the workers; "
+                  f"the trials of this invocation took {d['wall_time']:.1f} s wall.", ""]
     if d["claims"]:
         lines += [claims_table(d).markdown(), ""]
     lines += [finishing_table(d).markdown(), ""]
@@ -355,14 +361,17 @@ def results_markdown(experiments: Sequence[tuple], command: str, relative_to: Pa
                        rows).markdown())
     claims = [c for d, _ in experiments for c in d["claims"]]
     direction = [c for c in claims if c["kind"] == "direction"]
-    same = [c for c in direction if c["agrees"]]
+    same = [c for c in direction if c["agrees"] is True]
     significant = [c for c in same if _significant(c["p"])]
-    measurable = [c for c in direction if c["agrees"] is not None]
+    measurable = [c for c in direction if c["agrees"] in (True, False)]
     none_claims = [c for c in claims if c["kind"] == "no_difference"]
-    lines += ["", f"Of the paper's {len(direction)} directional claims, {len(measurable)} could be measured here; "
-                  f"{len(same)} show the same direction in our runs, {len(significant)} of them with Welch p < 0.05."
-              + (f" Of its {len(none_claims)} claim(s) of no difference, {sum(1 for c in none_claims if c['agrees'])} "
-                 f"hold (no significant difference here)." if none_claims else ""), ""]
+    summary = (f"Of the paper's {len(direction)} directional claims, {len(measurable)} could be measured here; "
+               f"{len(same)} show the same direction in our runs, {len(significant)} of them with Welch p < 0.05.")
+    if none_claims:
+        summary += (f" Of its {len(none_claims)} claim(s) of no difference, "
+                    f"{sum(1 for c in none_claims if c['agrees'] in (True, False))} could be measured and "
+                    f"{sum(1 for c in none_claims if c['agrees'] is True)} hold (no significant difference here).")
+    lines += ["", summary, ""]
     for d, figures in experiments:
         lines += [experiment_markdown(d, figures, relative_to=relative_to, heading="##"), ""]
     return "\n".join(lines)

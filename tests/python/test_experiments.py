@@ -247,6 +247,23 @@ def test_the_three_experiments_end_to_end(tmp_path, capsys):
     assert (out / "report.md").exists()
 
 
+def test_results_page_counts_claims_read_back_from_json(tmp_path):
+    from fgdwa.report import write_results
+
+    result = _hand_made_result()
+    result.spec = ExperimentSpec("t", "T", "demo", ("fgdwa", "gdwa"),
+                                 claims=(Claim("steps", "gdwa", -10.0, "fewer"),
+                                         Claim("steps", "nobody", -10.0, "not run here"),
+                                         Claim("mileage", "gdwa", 0.1, "same", kind="no_difference")))
+    save_experiment(result, tmp_path, figures=False)
+    d = read_json(tmp_path / "t" / "t.json")
+    mileage_p = sps.ttest_ind([10.0, 10.2, 9.9], [11.0, 11.4], equal_var=False).pvalue
+    assert [c["agrees"] for c in d["claims"]] == [True, None, bool(mileage_p >= 0.05)]
+    page = write_results(tmp_path, ["t"], "fgdwa experiment t", tmp_path / "R.md").read_text()
+    assert "Of the paper's 2 directional claims, 1 could be measured here; 1 show the same direction" in page
+    assert f"1 claim(s) of no difference, 1 could be measured and {int(mileage_p >= 0.05)} hold" in page
+
+
 def test_a_single_experiment_updates_the_results_page_from_saved_runs(tmp_path):
     out = tmp_path / "r"
     save_experiment(_hand_made_result(), out, figures=False)
