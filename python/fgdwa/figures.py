@@ -3,6 +3,7 @@ the fuzzy weights over time (the paper's Figure 20) and the control surfaces."""
 
 from __future__ import annotations
 
+import textwrap
 from pathlib import Path
 from typing import Optional
 
@@ -11,6 +12,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from matplotlib.transforms import blended_transform_factory  # noqa: E402
 
 from fgdwa.experiments import METRIC_BY_KEY, ExperimentResult, TrialRecord, planner_label, resolve_scenario  # noqa: E402
 from fgdwa.plotting import draw_world  # noqa: E402
@@ -108,8 +110,14 @@ def boxplot_figure(result: ExperimentResult, path: Path, metrics=BOX_METRICS) ->
             for pos, d in filled:
                 jitter = np.linspace(-0.12, 0.12, len(d)) if len(d) > 1 else np.zeros(1)
                 ax.plot(pos + jitter, d, ".", color="k", markersize=4)
+        column = blended_transform_factory(ax.transData, ax.transAxes)
+        for pos, d in zip(positions, data):
+            if not len(d):
+                ax.text(pos, 0.5, "no successful\nrun", transform=column, ha="center", va="center", fontsize=8,
+                        color="0.4")
         ax.set_xticks(positions)
-        ax.set_xticklabels([planner_label(p).replace(", ", ",\n") for p in planners], fontsize=8)
+        ax.set_xlim(0.4, len(planners) + 0.6)
+        ax.set_xticklabels([textwrap.fill(planner_label(p), 15) for p in planners], fontsize=8)
         lines = [METRIC_BY_KEY[key].label]
         for other in result.spec.others:
             c = comparisons[(key, other)]
