@@ -305,7 +305,7 @@ def write_csvs(d: dict, directory: Path) -> list:
 
 
 def experiment_markdown(d: dict, figures: Optional[dict] = None, relative_to: Optional[Path] = None,
-                        heading: str = "#") -> str:
+                        heading: str = "#", notes: bool = True) -> str:
     """The Markdown report of one experiment; ``figures`` maps a caption to a PNG path,
     linked relative to ``relative_to`` (the report's folder)."""
     lines = [f"{heading} {d['title']}", ""]
@@ -315,7 +315,8 @@ def experiment_markdown(d: dict, figures: Optional[dict] = None, relative_to: Op
     lines += [f"Paper: {d['paper_ref']}. Scenario `{d['scenario']}`; {d['trials']} trials per planner, trial i "
               f"with seed {d['base_seed']} + i (seeds {seeds}) for every planner; executor `{d['executor']}`"
               + (f"; run options {d['options']}" if d.get("options") else "") + ".", ""]
-    lines += [EXCLUSION_NOTE, "", TEST_NOTE, ""]
+    if notes:
+        lines += [EXCLUSION_NOTE, "", TEST_NOTE, ""]
     if isinstance(d.get("wall_time"), float) and math.isfinite(d["wall_time"]):
         lines += [f"{len(d['runs'])} episodes, {d['episode_wall_time']:.1f} s of episode wall time in the workers; "
                   f"the trials of this invocation took {d['wall_time']:.1f} s wall.", ""]
@@ -373,7 +374,7 @@ def results_markdown(experiments: Sequence[tuple], command: str, relative_to: Pa
                     f"{sum(1 for c in none_claims if c['agrees'] is True)} hold (no significant difference here).")
     lines += ["", summary, ""]
     for d, figures in experiments:
-        lines += [experiment_markdown(d, figures, relative_to=relative_to, heading="##"), ""]
+        lines += [experiment_markdown(d, figures, relative_to=relative_to, heading="##", notes=False), ""]
     return "\n".join(lines)
 
 
