@@ -186,6 +186,9 @@ def build_parser() -> argparse.ArgumentParser:
     exp.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
     exp.add_argument("--no-progress", action="store_true", help="no progress bar")
     exp.set_defaults(func=cmd_experiment)
+    from fgdwa.datasets.barn import register_barn_commands
+
+    register_barn_commands(sub)
     return parser
 
 

@@ -469,3 +469,11 @@ def test_score_is_the_challenge_formula():
 def test_world_score_uses_its_optimal_time(barn):
     world = barn.world(0)
     assert world.score(True, 3 * world.optimal_time) == pytest.approx(1 / 3)
+
+
+def test_cli_barn_import_writes_the_file(world_dir, tmp_path):
+    from fgdwa.cli import main
+
+    out = tmp_path / "barn.npz"
+    assert main(["barn", "import", str(world_dir), "--out", str(out)]) == 0
+    assert len(fgdwa.datasets.barn.load_barn(out)) == 3

@@ -652,4 +652,4 @@ def register_barn_commands(subparsers) -> None:
     imp.add_argument("--out", required=True, metavar="FILE", help="the barn.npz file to write")
     imp.add_argument("--worlds", default=None, metavar="SPEC",
                      help="world ids to convert: 'all' (default), '0,6,12', '0-49' or '0-299:6'")
-    imp.set_defaults(func=lambda args: barn_import_command(args.world_dir, args.out, args.worlds))
+    imp.set_defaults(func=lambda args, *_: barn_import_command(args.world_dir, args.out, args.worlds))
