@@ -215,7 +215,8 @@ bool step_clear(const ClearanceSource& world, const Footprint& footprint, const 
   const auto driving = [&](double f) {
     return Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta};
   };
-  return clear_along(world, footprint, driving, t0, dt, 0.0, c_turned, 1.0, c1, std::hypot(to.x - from.x, to.y - from.y),
+  const double dx = to.x - from.x, dy = to.y - from.y;
+  return clear_along(world, footprint, driving, t0, dt, 0.0, c_turned, 1.0, c1, std::sqrt(dx * dx + dy * dy),
                      margin);
 }
 }  // namespace
