@@ -74,7 +74,7 @@ void init_planner(py::module_& m) {
       .def(py::init([](double dt, double sim_time, int n_v, int n_omega, const std::string& normalization,
                        const std::string& braking, double goal_tolerance, py::object critics,
                        const std::string& heading_target, double key_node_angle_deg, double key_node_radius,
-                       double safety_margin) {
+                       double safety_margin, bool key_node_sight) {
              PlannerParams p;
              p.dt = dt;
              p.sim_time = sim_time;
@@ -86,6 +86,7 @@ void init_planner(py::module_& m) {
              p.heading_target = heading_target_from_string(heading_target);
              p.key_nodes.min_turn = key_node_angle_deg * M_PI / 180.0;
              p.key_nodes.reach_radius = key_node_radius;
+             p.key_nodes.require_sight = key_node_sight;
              p.safety_margin = safety_margin;
              if (!critics.is_none()) {
                p.critics.clear();
@@ -97,7 +98,7 @@ void init_planner(py::module_& m) {
            py::arg("dt") = 0.15, py::arg("sim_time") = 3.0, py::arg("n_v") = 21, py::arg("n_omega") = 21,
            py::arg("normalization") = "sum", py::arg("braking") = "discrete", py::arg("goal_tolerance") = 0.3, py::arg("critics") = py::none(),
            py::arg("heading_target") = "goal", py::arg("key_node_angle_deg") = 10.0, py::arg("key_node_radius") = 1.0,
-           py::arg("safety_margin") = 0.02,
+           py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = true,
            "dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample "
            "counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance "
            "with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts "
@@ -105,7 +106,8 @@ void init_planner(py::module_& m) {
            "heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet "
            "reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this "
            "near is reached; safety_margin (m): a rollout closer than this to an obstacle counts as in contact "
-           "(never more than the robot's own clearance).")
+           "(never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as "
+           "reached only once the next one is in sight (False: SPEC 5 as written).")
       .def_readonly("dt", &PlannerParams::dt)
       .def_readonly("sim_time", &PlannerParams::sim_time)
       .def_property_readonly("n_v", [](const PlannerParams& p) { return p.window.n_v; })
@@ -117,6 +119,7 @@ void init_planner(py::module_& m) {
       .def_property_readonly("key_node_angle_deg", [](const PlannerParams& p) { return p.key_nodes.min_turn * 180.0 / M_PI; })
       .def_property_readonly("key_node_radius", [](const PlannerParams& p) { return p.key_nodes.reach_radius; })
       .def_readonly("safety_margin", &PlannerParams::safety_margin)
+      .def_property_readonly("key_node_sight", [](const PlannerParams& p) { return p.key_nodes.require_sight; })
       .def_readonly("critics", &PlannerParams::critics)
       .def_property_readonly("n_steps", &PlannerParams::n_steps)
       .def("__repr__", [](const PlannerParams& p) {

@@ -89,12 +89,14 @@ KeyNodeTracker::KeyNodeTracker(const GlobalPath& path, const KeyNodeParams& para
   params_.validate();
 }
 
-Vec2 KeyNodeTracker::update(const Vec2& robot) {
+Vec2 KeyNodeTracker::update(const Vec2& robot, const std::function<bool(const Vec2&, const Vec2&)>& in_sight) {
   const double along = path_->project(robot).arc_length;
   while (current_ + 1 < nodes_.size()) {
     const std::size_t vertex = nodes_[current_];
-    const bool near = (robot - path_->points()[vertex]).norm() <= params_.reach_radius;
     const bool passed = along > path_->arc_length_at_vertex(vertex);
+    bool near = (robot - path_->points()[vertex]).norm() <= params_.reach_radius;
+    if (near && !passed && params_.require_sight && in_sight)
+      near = in_sight(robot, path_->points()[nodes_[current_ + 1]]);
     if (!near && !passed) break;
     ++current_;
   }

@@ -119,7 +119,19 @@ const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, 
   require_finite_state(state);
   if (params_.heading_target == HeadingTarget::Goal) return run_cycle(state, goal, goal, -1, world);
   if (!tracker_) throw Error("heading_target = key_nodes needs a global path: call set_global_path first");
-  const Vec2 target = tracker_->update(state.pose.position());
+  // In sight: the footprint, heading for b, stays clear every 10 cm of the way.
+  const auto in_sight = [&](const Vec2& a, const Vec2& b) {
+    const Vec2 d = b - a;
+    const double length = d.norm();
+    const double heading = std::atan2(d.y(), d.x());
+    const int pieces = std::max(1, static_cast<int>(std::ceil(length / 0.1)));
+    for (int k = 1; k <= pieces; ++k) {
+      const Vec2 p = a + d * (double(k) / pieces);
+      if (world.clearance(footprint_, Pose2{p.x(), p.y(), heading}, 0.0) <= 0.0) return false;
+    }
+    return true;
+  };
+  const Vec2 target = tracker_->update(state.pose.position(), in_sight);
   return run_cycle(state, goal, target, static_cast<int>(tracker_->current()), world);
 }
 

@@ -27,7 +27,7 @@ from fgdwa.sim import EpisodeResult, run_episode
 from fgdwa.world import World
 
 PARAM_FIELDS = ("dt", "sim_time", "n_v", "n_omega", "normalization", "braking", "goal_tolerance", "heading_target",
-                "key_node_angle_deg", "key_node_radius", "safety_margin", "critics")
+                "key_node_angle_deg", "key_node_radius", "key_node_sight", "safety_margin", "critics")
 
 
 @dataclass(frozen=True)

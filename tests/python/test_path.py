@@ -73,3 +73,17 @@ def test_key_node_target_switching():
     goal_mode = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2))
     r = goal_mode.plan(fgdwa.RobotState((0, 0, 0)), (10, 5), world)
     assert r.target == (10.0, 5.0) and r.key_node == -1
+
+
+@pytest.mark.parametrize("sight", [True, False])
+def test_a_near_key_node_is_kept_while_the_next_is_out_of_sight(sight):
+    cells = np.zeros((80, 120), np.uint8)
+    cells[20:22, 30:49] = 1  # a wall at y = 2.0 from x = 3.0 to 4.9: it hides (5, 5) from (4.2, 0.3)
+    world = fgdwa.FieldClearance(fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.1)))
+    params = fgdwa.PlannerParams(heading_target="key_nodes", key_node_radius=1.0, key_node_sight=sight)
+    planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), params)
+    planner.set_global_path([[0, 0], [5, 0], [5, 5], [10, 5]])
+    r = planner.plan(fgdwa.RobotState((4.2, 0.3, 0.0)), (10, 5), world)
+    assert r.target == ((5.0, 0.0) if sight else (5.0, 5.0))
+    r = planner.plan(fgdwa.RobotState((5.6, 0.5, 1.5)), (10, 5), world)  # past the wall's end: in sight
+    assert r.target == (5.0, 5.0)
