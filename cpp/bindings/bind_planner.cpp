@@ -98,7 +98,7 @@ void init_planner(py::module_& m) {
            py::arg("dt") = 0.15, py::arg("sim_time") = 3.0, py::arg("n_v") = 21, py::arg("n_omega") = 21,
            py::arg("normalization") = "sum", py::arg("braking") = "discrete", py::arg("goal_tolerance") = 0.3, py::arg("critics") = py::none(),
            py::arg("heading_target") = "goal", py::arg("key_node_angle_deg") = 10.0, py::arg("key_node_radius") = 1.0,
-           py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = true,
+           py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = false,
            "dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample "
            "counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance "
            "with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts "
@@ -107,7 +107,7 @@ void init_planner(py::module_& m) {
            "reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this "
            "near is reached; safety_margin (m): a rollout closer than this to an obstacle counts as in contact "
            "(never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as "
-           "reached only once the next one is in sight (False: SPEC 5 as written).")
+           "reached only once the next one is in sight (default False: SPEC 5 as written).")
       .def_readonly("dt", &PlannerParams::dt)
       .def_readonly("sim_time", &PlannerParams::sim_time)
       .def_property_readonly("n_v", [](const PlannerParams& p) { return p.window.n_v; })

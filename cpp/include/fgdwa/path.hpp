@@ -66,9 +66,10 @@ struct KeyNodeParams {
   double min_turn = 0.17453292519943295;  // rad (10 deg), turn that makes a vertex a key node
   double reach_radius = 1.0;              // m, a key node closer than this is reached
   // A node within reach_radius counts as reached only once the next one is in
-  // sight; false is SPEC 5 as written. Aiming past a corner at a node behind it
-  // drove robots into the corner.
-  bool require_sight = true;
+  // sight. Off (SPEC 5 as written) by default: on, it keeps robots from aiming
+  // past a wall's end at a node behind it, but a robot circling a node it may
+  // not leave can stray, and did into the C-shaped trap.
+  bool require_sight = false;
   void validate() const;
 };
 
