@@ -51,7 +51,7 @@ void SimilarityCritic::score_all(const std::vector<Rollout>& rollouts, double* o
   }
   // Batches of rollouts side by side: the DTW recurrence of one rollout is a
   // chain of dependent steps, several rollouts in step keep the processor busy.
-  constexpr std::size_t kBatch = 8;
+  constexpr std::size_t kBatch = 32;
   for (std::size_t first = 0; first < rollouts.size(); first += kBatch) {
     const std::size_t count = std::min(kBatch, rollouts.size() - first);
     const std::size_t n = rollouts[first].poses->size();

@@ -81,19 +81,27 @@ void DtwWorkspace::distance_batch(const double* ax, const double* ay, std::size_
       const double bxj = bx_[j], byj = by_[j];
       double* cur = &current_[j * K];
       const double* up = &previous_[j * K];
-      const double* diag = j > 0 ? &previous_[(j - 1) * K] : nullptr;
-      for (std::size_t k = 0; k < K; ++k) {
-        const double dx = xi[k] - bxj, dy = yi[k] - byj;
-        const double d = std::sqrt(dx * dx + dy * dy);
-        double best;
-        if (i == 0 && j == 0) {
-          best = 0.0;
-        } else {
-          best = std::min(left_[k], up[k]);
-          if (diag) best = std::min(best, diag[k]);
+      double* left = left_.data();
+      // Three branch-free loops over the batch, so each one vectorises.
+      if (i == 0 && j == 0) {
+        for (std::size_t k = 0; k < K; ++k) {
+          const double dx = xi[k] - bxj, dy = yi[k] - byj;
+          left[k] = std::sqrt(dx * dx + dy * dy) + 0.0;
+          cur[k] = left[k];
         }
-        left_[k] = d + best;
-        cur[k] = left_[k];
+      } else if (j == 0) {
+        for (std::size_t k = 0; k < K; ++k) {
+          const double dx = xi[k] - bxj, dy = yi[k] - byj;
+          left[k] = std::sqrt(dx * dx + dy * dy) + std::min(left[k], up[k]);
+          cur[k] = left[k];
+        }
+      } else {
+        const double* diag = &previous_[(j - 1) * K];
+        for (std::size_t k = 0; k < K; ++k) {
+          const double dx = xi[k] - bxj, dy = yi[k] - byj;
+          left[k] = std::sqrt(dx * dx + dy * dy) + std::min(std::min(left[k], up[k]), diag[k]);
+          cur[k] = left[k];
+        }
       }
     }
     std::swap(previous_, current_);
