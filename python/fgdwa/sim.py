@@ -217,7 +217,6 @@ def run_episode(
     density, deviation, betas, deltas = [], [], [], []
     outcome = "timeout"
     last_plan = None
-    last_rollouts = None
     scan = None
     for k in range(max_steps):
         position = np.array([state.pose.x, state.pose.y])
@@ -237,7 +236,6 @@ def run_episode(
         betas.append(report.beta)
         deltas.append(report.delta)
         last_plan = plan
-        last_rollouts = planner.rollouts()
         statuses.append(plan.status.name)
         targets.append(plan.target)
         command = plan.command
@@ -292,7 +290,8 @@ def run_episode(
         statuses=statuses,
         cycle_times=np.array(cycle_times),
         last_plan=last_plan,
-        last_rollouts=last_rollouts,
+        # The planner keeps its last cycle's rollouts: copied once, not every cycle.
+        last_rollouts=planner.rollouts() if last_plan is not None else None,
         global_path=None if path is None else path.points,
         key_nodes=None if path is None else path.points[planner.key_nodes],
         targets=np.array(targets, dtype=float).reshape(-1, 2),
