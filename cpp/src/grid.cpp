@@ -210,57 +210,32 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
 
 double DistanceField::distance(const Vec2& p) const {
   if (!has_obstacles_) return kInf;
-  const double res = grid_.resolution();
-  const double half = 0.5 * res;
+  const double half = 0.5 * grid_.resolution();
   const int rows = grid_.rows(), cols = grid_.cols();
-  const Vec2& lo = grid_.origin();
-  // Inside the grid (the common case): the candidates of p's cell.
-  const double gx = (p.x() - lo.x()) * inverse_half_resolution_ * 0.5;
-  const double gy = (p.y() - lo.y()) * inverse_half_resolution_ * 0.5;
-  if (gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows) {
-    const std::size_t cell = grid_.index(static_cast<int>(gy), static_cast<int>(gx));
-    const std::size_t end = candidate_start_[cell + 1];
-    double best = kInf;
-    for (std::size_t k = candidate_start_[cell]; k < end; ++k) {
-      const Vec2& o = candidates_[k];
-      const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
-      const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
-      best = std::min(best, dx * dx + dy * dy);
-    }
-    return std::sqrt(best);
-  }
-  const Vec2 hi = lo + Vec2(cols * res, rows * res);
-  const auto square_distance = [&](int row, int col) {
-    const Vec2 o = grid_.cell_center(row, col);
+  const double gx = (p.x() - grid_.origin().x()) * inverse_half_resolution_ * 0.5;
+  const double gy = (p.y() - grid_.origin().y()) * inverse_half_resolution_ * 0.5;
+  const auto square_distance = [&](const Vec2& o) {
     const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
     const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
     return dx * dx + dy * dy;
   };
-  // Outside the grid every cell of a row lies on the same side of p in x, so the
-  // row's outermost obstacle toward p is its nearest; likewise per column in y.
-  if (p.x() < lo.x() || p.x() > hi.x()) {
-    const std::vector<int>& outermost = p.x() < lo.x() ? row_first_ : row_last_;
-    double best = kInf;
-    for (int r = 0; r < rows; ++r)
-      if (outermost[r] >= 0) best = std::min(best, square_distance(r, outermost[r]));
-    return std::sqrt(best);
-  }
-  if (p.y() < lo.y() || p.y() > hi.y()) {
-    const std::vector<int>& outermost = p.y() < lo.y() ? col_first_ : col_last_;
-    double best = kInf;
-    for (int c = 0; c < cols; ++c)
-      if (outermost[c] >= 0) best = std::min(best, square_distance(outermost[c], c));
-    return std::sqrt(best);
-  }
-  const int col = std::clamp(static_cast<int>(std::floor((p.x() - lo.x()) / res)), 0, cols - 1);
-  const int row = std::clamp(static_cast<int>(std::floor((p.y() - lo.y()) / res)), 0, rows - 1);
-  const std::size_t cell = grid_.index(row, col);
   double best = kInf;
-  for (std::size_t k = candidate_start_[cell]; k < candidate_start_[cell + 1]; ++k) {
-    const Vec2& o = candidates_[k];
-    const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
-    const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
-    best = std::min(best, dx * dx + dy * dy);
+  if (gx < 0.0 || gx > cols) {
+    // Outside the grid every cell of a row lies on the same side of p in x, so
+    // the row's outermost obstacle toward p is its nearest.
+    const std::vector<int>& outermost = gx < 0.0 ? row_first_ : row_last_;
+    for (int r = 0; r < rows; ++r)
+      if (outermost[r] >= 0) best = std::min(best, square_distance(grid_.cell_center(r, outermost[r])));
+  } else if (gy < 0.0 || gy > rows) {
+    // Likewise per column in y.
+    const std::vector<int>& outermost = gy < 0.0 ? col_first_ : col_last_;
+    for (int c = 0; c < cols; ++c)
+      if (outermost[c] >= 0) best = std::min(best, square_distance(grid_.cell_center(outermost[c], c)));
+  } else {
+    // Inside the grid (its far edges included): the candidates of p's cell.
+    const std::size_t cell = grid_.index(std::min(static_cast<int>(gy), rows - 1), std::min(static_cast<int>(gx), cols - 1));
+    for (std::size_t k = candidate_start_[cell]; k < candidate_start_[cell + 1]; ++k)
+      best = std::min(best, square_distance(candidates_[k]));
   }
   return std::sqrt(best);
 }
