@@ -15,7 +15,7 @@ import numpy as np  # noqa: E402
 from matplotlib.transforms import blended_transform_factory  # noqa: E402
 
 from fgdwa.experiments import METRIC_BY_KEY, ExperimentResult, TrialRecord, planner_label, resolve_scenario  # noqa: E402
-from fgdwa.plotting import draw_world  # noqa: E402
+from fgdwa.plotting import draw_world, save_figure  # noqa: E402
 from fgdwa.report import fmt_p  # noqa: E402
 
 DPI = 100
@@ -24,11 +24,7 @@ BOX_METRICS = ("planning_time", "steps", "mileage", "danger_clearance")
 
 
 def _save(fig, path: Path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=DPI, bbox_inches="tight")
-    plt.close(fig)
-    return path
+    return save_figure(fig, path, dpi=DPI, bbox_inches="tight")
 
 
 def danger_points_of(result: ExperimentResult, scenario, global_path: np.ndarray) -> np.ndarray:

@@ -314,8 +314,7 @@ def plot_control_surfaces(engine_or_preset: Union[MamdaniEngine, Mapping, str] =
         ax.set_title(title)
     fig.tight_layout()
     if path is not None:
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(path, dpi=120)
-        plt.close(fig)
+        from fgdwa.plotting import save_figure
+
+        save_figure(fig, path)
     return fig

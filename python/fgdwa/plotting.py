@@ -16,6 +16,15 @@ from fgdwa.sim import EpisodeResult  # noqa: E402
 from fgdwa.world import World  # noqa: E402
 
 
+def save_figure(fig, path, dpi: int = 120, **options) -> Path:
+    """Writes ``fig`` to ``path`` (its folder made as needed) and closes it."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=dpi, **options)
+    plt.close(fig)
+    return path
+
+
 def draw_world(ax, world: World, t: float = 0.0) -> None:
     """Terrain grades in browns, the map in grey, obstacles missing from it in
     orange, moving obstacles as circles at time ``t``."""
@@ -81,8 +90,5 @@ def plot_episode(result: EpisodeResult, world: World, goal, path: Optional[Path]
         ax.set_ylim(y0, y1)
     fig.tight_layout()
     if path is not None:
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(path, dpi=120)
-        plt.close(fig)
+        save_figure(fig, path)
     return fig
