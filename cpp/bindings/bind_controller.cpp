@@ -48,6 +48,11 @@ void init_controller(py::module_& m) {
           },
           py::arg("state"), py::arg("goal"), py::arg("scan") = nullptr, py::arg("discs") = std::vector<Disc>{},
            "One cycle toward goal with this cycle's scan (or None) and the known moving discs placed now.")
+      .def("set_map", &Controller::set_map, py::arg("map"),
+           "Replaces the map's distance field (None for none), e.g. with ScanMap.field() after new cells.")
+      .def_property_readonly("map", &Controller::map)
+      .def_property_readonly("world", &Controller::world, py::return_value_policy::reference_internal,
+                             "What the planner saw last cycle: the map's field, the sensed points and the discs.")
       .def_property_readonly("report", &Controller::report, py::return_value_policy::copy)
       .def_property_readonly("planner", &Controller::planner, py::return_value_policy::reference_internal)
       .def("__repr__", [](const Controller&) { return std::string("Controller()"); });

@@ -19,6 +19,7 @@ void init_planner(py::module_& m);
 void init_fuzzy(py::module_& m);
 void init_weights(py::module_& m);
 void init_controller(py::module_& m);
+void init_mapping(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "fgdwa's C++ core: robot model, grids, collision, dynamic window, critics and planner.";
@@ -38,4 +39,5 @@ PYBIND11_MODULE(_core, m) {
   init_fuzzy(m);
   init_weights(m);
   init_controller(m);
+  init_mapping(m);
 }

@@ -119,7 +119,22 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
     const double dr = std::abs(r - gr), dc = std::abs(c - gc);
     return res * min_multiplier * (std::max(dr, dc) + (M_SQRT2 - 1.0) * std::min(dr, dc));
   };
-  const auto passable = [&](std::size_t i) { return !blocked_[i] || i == start_cell || i == goal_cell; };
+  // A start in the inflated band (a robot close to an obstacle) may leave it:
+  // the band's cells within the inflation radius of the start are open to it,
+  // the obstacles themselves never.
+  std::vector<std::uint8_t> escape;
+  if (blocked_[start_cell]) {
+    escape.assign(n, 0);
+    const int reach = static_cast<int>(std::ceil(params_.inflation_radius / res));
+    for (int r = std::max(0, sr - reach); r <= std::min(rows - 1, sr + reach); ++r)
+      for (int c = std::max(0, sc - reach); c <= std::min(cols - 1, sc + reach); ++c)
+        escape[grid_.index(r, c)] = !grid_.occupied(r, c) &&
+                                    (grid_.cell_center(r, c) - start).norm() <= params_.inflation_radius &&
+                                    grade(grid_.index(r, c)) < TerrainGrid::kMaxGrade;
+  }
+  const auto passable = [&](std::size_t i) {
+    return !blocked_[i] || i == start_cell || i == goal_cell || (!escape.empty() && escape[i]);
+  };
 
   struct Node {
     double f, h;

@@ -21,6 +21,11 @@ Controller::Controller(const RobotLimits& limits, const Footprint& footprint, co
 
 void Controller::set_global_path(const GlobalPath& path) { planner_.set_global_path(path); }
 
+void Controller::set_map(std::shared_ptr<const DistanceField> map) {
+  map_ = std::move(map);
+  world_.set_field(map_);
+}
+
 const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,
                                    const std::vector<Disc>& discs) {
   report_ = CycleReport{};

@@ -29,6 +29,7 @@ from fgdwa._core import (
     PlannerPreset,
     PlannerParams,
     PlanResult,
+    Pose2,
     RobotLimits,
     RobotState,
     Status,
@@ -37,6 +38,7 @@ from fgdwa._core import (
     step,
 )
 from fgdwa.global_planning import plan_global
+from fgdwa.mapping import ScanNavigator, check_mapping
 from fgdwa.metrics import danger_point_clearance, danger_points, smoothness
 from fgdwa.world import MovingObstacle, World  # noqa: F401  (World is part of this module's API)
 
@@ -74,6 +76,9 @@ class EpisodeResult:
     beta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) clearance weight per cycle
     delta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) similarity weight (nan without)
     last_scan: Optional[object] = None  # the last cycle's Scan, when sensing
+    mapping: str = "known"  # "known": the planners had the map; "scan": they had the robot's own map
+    scan_map: Optional[np.ndarray] = None  # (rows, cols) the robot's map at the end, with mapping="scan"
+    paths: list = field(default_factory=list)  # with mapping="scan": (cycle, (n, 2) points) per global plan
 
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
@@ -149,6 +154,9 @@ def run_episode(
     weight_policy=None,
     seed: int = 0,
     danger_clearance: Optional[float] = None,
+    mapping: str = "known",
+    replan_interval: int = 5,
+    stall_cycles: Optional[int] = None,
 ) -> EpisodeResult:
     """Drive from ``start`` (x, y, theta, at rest) to ``goal`` (x, y).
 
@@ -176,6 +184,19 @@ def run_episode(
     the grade under the robot times ``limits.v_max``; entering grade 4 ends the
     episode as a fall. Danger points are the global path's points whose static
     clearance is below ``danger_clearance`` (default: footprint radius + 0.3 m).
+
+    ``mapping="scan"`` hides the map: the robot starts with an empty one of the
+    same layout, the lidar (``lidar``, default ``LidarParams()``) marks what it
+    hits, and both planners read that map; a path-following planner's global
+    path is planned on it with A* (obstacles inflated by the footprint's radius
+    plus GLOBAL_PATH_MARGIN, else the radius, else the inscribed radius) and
+    replanned when the part ahead of the robot comes within the inscribed radius
+    of a mapped obstacle, at most every ``replan_interval`` cycles
+    (``fgdwa.mapping.ScanNavigator``).
+
+    ``stall_cycles`` (either mapping, path-following planners): a robot that
+    has moved less than 0.1 m in that many cycles gives up the next 0.6 m of
+    its path, and the path is replanned around them.
     """
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
@@ -190,19 +211,41 @@ def run_episode(
 
     if weight_policy is not None and lidar is None:
         raise FgdwaError("weight_policy: the obstacle density it reads needs a lidar")
+    check_mapping(mapping)
+    scanning = mapping == "scan"
+    if scanning and lidar is None:
+        lidar = LidarParams()
     window = window if window is not None else DetectWindowParams()
     true_grid = world.true_grid()
     truth = CollisionWorld(true_grid, world.discs_at(0.0))
     if truth.in_collision(footprint, start_pose, 0.0):
         raise FgdwaError(f"start = {tuple(start_pose)}: the robot's footprint there overlaps an obstacle")
-    map_field = DistanceField(world.grid) if world.grid is not None else None
+    map_field = DistanceField(world.grid) if world.grid is not None and not scanning else None
     scanner = None
     if lidar is not None:
         true_field = DistanceField(true_grid) if true_grid is not None else None
         scanner = LaserScanner(lidar, true_field)
     controller = Controller(limits, footprint, params, map_field, weight_policy, window)
     planner = controller.planner
-    path = _global_path(world, start_pose, goal_point, footprint, params, global_path, global_method, global_options)
+    navigator = None
+    follows_path = params.heading_target == "key_nodes"
+    # Tight spots put the robot inside the band a wide inflation closes, so
+    # the last radius is the inscribed one: a way out, then a wider path.
+    radii = [footprint.radius + GLOBAL_PATH_MARGIN, footprint.radius, footprint.inscribed_radius]
+    options = dict(replan_interval=replan_interval, follow_path=follows_path, stall_cycles=stall_cycles)
+    if scanning:
+        if true_grid is None:
+            raise FgdwaError("mapping = 'scan' builds a map on the world grid's layout: the world needs a grid")
+        navigator = ScanNavigator(true_grid, goal_point, radii, footprint.inscribed_radius, **options)
+        path = None if global_path is None else _global_path(world, start_pose, goal_point, footprint, params,
+                                                                 global_path, global_method, global_options)
+    else:
+        path = _global_path(world, start_pose, goal_point, footprint, params, global_path, global_method,
+                            global_options)
+        if stall_cycles is not None and follows_path and world.grid is not None:
+            navigator = ScanNavigator.with_map(world.grid, goal_point, radii, footprint.inscribed_radius, **options)
+    if navigator is not None:
+        navigator.path = path
     if path is not None:
         controller.set_global_path(path)
 
@@ -228,7 +271,24 @@ def run_episode(
         discs_now = world.discs_at(t)
         if scanner is not None:
             scan = scanner.scan(state.pose, discs_now, 0.0, seed=int(seed) * 1_000_003 + k)
-        plan = controller.step(state, goal_point, scan, discs_now if world.discs_known else [])
+        if navigator is not None:
+            update = navigator.update(scan, position, k)
+            if update.new_cells:
+                controller.set_map(update.field)
+            if update.path is not None:
+                path = update.path
+                controller.set_global_path(path)
+        command = None
+        if navigator is not None and navigator.backing_up:
+            command = _backup_command(state.pose, navigator.backup_speed, dt, footprint, controller.world,
+                                      params.safety_margin)
+            navigator.backed_up(done=command is None)
+        if command is None:
+            plan = controller.step(state, goal_point, scan, discs_now if world.discs_known else [])
+            command = plan.command
+            status = plan.status.name
+        else:
+            status = "BackingUp"
         cycle_times.append(time.perf_counter() - tic)
         report = controller.report
         density.append(report.density)
@@ -236,9 +296,8 @@ def run_episode(
         betas.append(report.beta)
         deltas.append(report.delta)
         last_plan = plan
-        statuses.append(plan.status.name)
+        statuses.append(status)
         targets.append(plan.target)
-        command = plan.command
         # Steep ground slows the robot whatever it was told.
         factor = world.passing_factors[world.grade_at(position)]
         command = Twist(min(command.v, factor * limits.v_max), command.omega)
@@ -300,7 +359,22 @@ def run_episode(
         beta=np.array(betas, dtype=float),
         delta=np.array(deltas, dtype=float),
         last_scan=scan,
+        mapping=mapping,
+        scan_map=None if not scanning else navigator.map.grid.cells,
+        paths=[] if navigator is None else list(navigator.paths),
     )
+
+
+def _backup_command(pose, speed: float, dt: float, footprint: Footprint, seen, margin: float) -> Optional[Twist]:
+    """Straight back at ``speed`` when the robot's own view of the world (``seen``,
+    a ClearanceSource) shows the footprint clear all along the step; else None."""
+    command = Twist(-speed, 0.0)
+    after = step(pose, command, dt)
+    for f in (0.5, 1.0):
+        between = Pose2(pose.x + f * (after.x - pose.x), pose.y + f * (after.y - pose.y), pose.theta)
+        if seen.clearance(footprint, between, 0.0) <= margin:
+            return None
+    return command
 
 
 def _falls(world: World, before, after, spacing: float = 0.05) -> bool:

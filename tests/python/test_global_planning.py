@@ -84,6 +84,27 @@ def test_astar_simplified_path_never_crosses_the_inflated_grid(rng):
             assert_path_clear(result.path, planner.blocked.astype(bool), grid)
 
 
+def test_astar_start_in_the_band_leaves_it_without_touching_obstacles():
+    # The start sits 0.1 m below a wall, deep in the 0.3 m band: every
+    # neighbour of its cell is banded too. Before, A* found no path.
+    cells = np.zeros((30, 40), dtype=np.uint8)
+    cells[10, :] = 1
+    cells[6, 14:17] = 1  # an obstacle between start and goal
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    planner = fgdwa.AStarPlanner(grid, inflation_radius=0.3, simplify=False)
+    start, goal = (1.05, 0.95), (3.5, 0.35)
+    assert all(planner.blocked[9 + dr, 10 + dc] for dr in (-1, 0) for dc in (-1, 0, 1))
+    result = planner.plan(start, goal)
+    assert result.status == fgdwa.GlobalStatus.Found
+    path = np.asarray(result.path)
+    rows, cols = (path[:, 1] // 0.1).astype(int), (path[:, 0] // 0.1).astype(int)
+    assert not cells[rows, cols].any()
+    banded = planner.blocked.astype(bool)[rows, cols]
+    from_start = np.hypot(path[:, 0] - start[0], path[:, 1] - start[1])
+    assert np.all(from_start[banded] <= 0.3), "the band is open near the start only"
+    assert not banded[-1]
+
+
 def test_astar_is_deterministic(rng):
     cells = random_block_grid(rng, rows=60, cols=60, blocks=20)
     cells[:3, :3] = 0

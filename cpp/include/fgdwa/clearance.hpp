@@ -46,6 +46,8 @@ class FieldClearance : public ClearanceSource {
   explicit FieldClearance(std::shared_ptr<const DistanceField> field = nullptr, std::vector<Disc> discs = {});
 
   void set_discs(std::vector<Disc> discs);
+  // Replaces the static map's field (null for none), e.g. with a map built from scans.
+  void set_field(std::shared_ptr<const DistanceField> field) { field_ = std::move(field); }
   const std::vector<Disc>& discs() const { return discs_; }
   const std::shared_ptr<const DistanceField>& field() const { return field_; }
   // Obstacles seen by the lidar but missing from the map (perception.hpp's

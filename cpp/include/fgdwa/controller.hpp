@@ -5,7 +5,7 @@
 // planner picks the command. Data flows one way; nothing reaches back.
 //
 // Lifecycle: construct once with the map; set_global_path when a path is
-// planned; step() every control period.
+// planned, set_map when the map grows; step() every control period.
 #include <limits>
 #include <memory>
 #include <vector>
@@ -33,6 +33,10 @@ class Controller {
              const DetectWindowParams& window = {});
 
   void set_global_path(const GlobalPath& path);
+  // Replaces the map (null for none), e.g. with the field of a ScanMap after new
+  // cells; the next step() reads it.
+  void set_map(std::shared_ptr<const DistanceField> map);
+  const std::shared_ptr<const DistanceField>& map() const { return map_; }
 
   // One cycle from `state` toward `goal`. `scan` (may be null) is this cycle's
   // lidar scan; `discs` the moving obstacles the robot knows, placed now.

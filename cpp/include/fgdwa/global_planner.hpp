@@ -58,7 +58,8 @@ struct AStarParams {
 // needs both cells beside it free (no corner cutting). Ties are broken by the
 // smaller heuristic, then the smaller cell index, so results are reproducible.
 // The start and goal cells may lie in the inflated band (a robot parked near a
-// wall) but not in an obstacle.
+// wall) but not in an obstacle; from a start in the band, the band's cells
+// within the inflation radius of the start are passable, so the path can leave it.
 class AStarPlanner {
  public:
   AStarPlanner(const OccupancyGrid& grid, const AStarParams& params = {},
