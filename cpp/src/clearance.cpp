@@ -27,22 +27,59 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
 }
 
 namespace {
+// m: how finely a polygon's outline is resolved where an obstacle is near it.
+constexpr double kOutlineTolerance = 0.005;
+
 double field_clearance(const DistanceField* field, const Footprint& footprint, const Pose2& pose) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!field || !field->has_obstacles()) return kInf;
   const double centre = field->distance(pose.position());
   if (footprint.is_circle()) return centre - footprint.radius();
 
-  // Polygon: the distance from its outline, walked at half-cell spacing.
+  // Polygon: the distance from its outline, never above the true one. The
+  // outline is sampled at half-cell spacing; the field is 1-Lipschitz, so a
+  // piece of length L whose ends lie at da and db holds no point nearer than
+  // (da + db - L) / 2. Pieces whose bound could still lower the result are
+  // halved down to kOutlineTolerance, where the bound itself is taken.
   const double res = field->grid().resolution();
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   const auto world = [&](const Vec2& q) { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); };
   const auto& vertices = footprint.vertices();
   double best = kInf;
+  struct Piece {
+    Vec2 a, b;
+    double da, db;
+  };
+  std::vector<Piece> pending;
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    const Vec2 a = vertices[i], b = vertices[(i + 1) % vertices.size()];
+    const Vec2 a = world(vertices[i]), b = world(vertices[(i + 1) % vertices.size()]);
     const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * res))));
-    for (int k = 0; k < pieces; ++k) best = std::min(best, field->distance(world(a + (b - a) * (double(k) / pieces))));
+    Vec2 p = a;
+    double dp = field->distance(p);
+    for (int k = 1; k <= pieces; ++k) {
+      const Vec2 q = a + (b - a) * (double(k) / pieces);
+      const double dq = field->distance(q);
+      pending.push_back({p, q, dp, dq});
+      best = std::min(best, dp);
+      p = q;
+      dp = dq;
+    }
+  }
+  while (!pending.empty()) {
+    const Piece piece = pending.back();
+    pending.pop_back();
+    const double length = (piece.b - piece.a).norm();
+    const double bound = 0.5 * (piece.da + piece.db - length);
+    if (bound >= best) continue;
+    if (length <= kOutlineTolerance) {
+      best = bound;
+      continue;
+    }
+    const Vec2 mid = 0.5 * (piece.a + piece.b);
+    const double dm = field->distance(mid);
+    best = std::min(best, dm);
+    pending.push_back({piece.a, mid, piece.da, dm});
+    pending.push_back({mid, piece.b, dm, piece.db});
   }
   if (best <= 0.0 || centre >= footprint.radius()) return best;
   // An obstacle cell can sit wholly inside a footprint wider than a cell.
@@ -69,6 +106,8 @@ double FieldClearance::clearance_lower_bound(const Footprint& footprint, const P
   if (field_) best = field_->lower_bound(p);
   if (sensed_) best = std::min(best, sensed_->lower_bound(p));
   best -= footprint.radius();
+  // A polygon's clearance may sit up to half the outline tolerance under the truth.
+  if (!footprint.is_circle()) best -= 0.5 * kOutlineTolerance;
   for (const Disc& disc : discs_)
     best = std::min(best, (disc.center_at(t) - p).norm() - disc.radius - footprint.radius());
   return best;
@@ -76,7 +115,8 @@ double FieldClearance::clearance_lower_bound(const Footprint& footprint, const P
 
 void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
                                             double* out) const {
-  const double r = footprint.radius();
+  // As clearance_lower_bound: a polygon's clearance may sit half the outline tolerance under the truth.
+  const double r = footprint.radius() + (footprint.is_circle() ? 0.0 : 0.5 * kOutlineTolerance);
   const std::size_t n = poses.size();
   if (field_) {
     for (std::size_t k = 0; k < n; ++k) out[k] = field_->lower_bound(poses[k].position()) - r;

@@ -281,7 +281,7 @@ def run_tasks(tasks: Sequence[TrialTask], executor: str = "local", scheduler: Op
 
 def _check_picklable(tasks: Sequence[TrialTask]) -> None:
     for task in tasks:
-        if isinstance(task.scenario, Scenario):
+        if isinstance(getattr(task, "scenario", None), Scenario):
             raise FgdwaError("a Scenario object cannot be sent to worker processes: give the experiment a "
                              "scenario name, file or a module-level factory function, or use executor='serial'")
 

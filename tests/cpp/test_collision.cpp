@@ -91,17 +91,20 @@ std::vector<Query> random_queries(std::mt19937& rng, const OccupancyGrid& grid, 
 class ClearanceAgreement : public ::testing::TestWithParam<int> {};
 
 // FCL is exact (checked against a brute-force distance to the cell squares);
-// the distance field stays within one cell of it.
-TEST_P(ClearanceAgreement, FieldAgreesWithFclWithinOneCell) {
+// the distance field never reports more room than there is, and at most a few
+// millimetres less (the polygon outline's tolerance). Case 2 has BARN's
+// coarse 0.15 m cells, where a plain half-cell walk of the outline overstated
+// the clearance by centimetres.
+TEST_P(ClearanceAgreement, FieldNeverAboveFclAndWithinAFewMillimetres) {
   const Footprint footprint = GetParam() == 0
                                   ? Footprint::circle(0.25)
                                   : Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
   std::mt19937 rng(2024 + GetParam());
-  const OccupancyGrid grid = test::random_rectangles(rng, 100, 100, 0.1, Vec2::Zero(), 0.15);
+  const double cell = GetParam() == 2 ? 0.15 : 0.1;
+  const OccupancyGrid grid = test::random_rectangles(rng, 100, 100, cell, Vec2::Zero(), 0.15);
   const auto field = std::make_shared<const DistanceField>(grid);
   const FieldClearance fast(field);
   const CollisionWorld exact(grid);
-  const double res = grid.resolution();
 
   int compared = 0, contacts = 0;
   double worst = 0.0;
@@ -114,7 +117,8 @@ TEST_P(ClearanceAgreement, FieldAgreesWithFclWithinOneCell) {
     ASSERT_NEAR(d_fcl, d_brute, 1e-6);
     // The clearance term only looks below the 2 m cap.
     if (d_fcl < 2.0) {
-      ASSERT_LE(std::abs(std::max(d_field, 0.0) - d_fcl), res + 1e-9);
+      ASSERT_LE(d_field, d_fcl + 1e-9);
+      ASSERT_LE(std::abs(std::max(d_field, 0.0) - d_fcl), 0.0025 + 1e-9);
       worst = std::max(worst, std::abs(std::max(d_field, 0.0) - d_fcl));
       ++compared;
     }
@@ -129,7 +133,7 @@ TEST_P(ClearanceAgreement, FieldAgreesWithFclWithinOneCell) {
   RecordProperty("worst_field_error", std::to_string(worst));
 }
 
-INSTANTIATE_TEST_SUITE_P(CircleAndRectangle, ClearanceAgreement, ::testing::Values(0, 1));
+INSTANTIATE_TEST_SUITE_P(CircleAndRectangle, ClearanceAgreement, ::testing::Values(0, 1, 2));
 
 TEST(CollisionWorld, MovingDiscsMatchTheAnalyticDistance) {
   std::mt19937 rng(77);

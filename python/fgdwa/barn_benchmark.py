@@ -1,0 +1,296 @@
+"""The BARN benchmark: every planner on BARN worlds, scored as the challenge scores.
+
+One run is one world, one planner, one trial, with the map known to the
+planners (``mapping="known"``) or built by the robot from its lidar
+(``"scan"``, the challenge's setting). All planners share the robot (the
+``jackal`` preset, speed-capped by :class:`BarnSetup`), the sampler, the lidar
+and the simulator. Outcomes follow the challenge (docs/barn.md): success is
+ending within the goal radius without collision before the time limit; the
+score is ``success * OT / clip(T, 2 OT, 8 OT)`` with T simulated time.
+
+:func:`run_barn` returns one :class:`BarnRun` per run; :func:`summarize`
+turns them into the per-planner table; :func:`write_barn_outputs` writes
+runs.csv, summary.json and failures.png (docs/barn.md, "Running the benchmark").
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import json
+import math
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Optional, Sequence
+
+import numpy as np
+
+from fgdwa._core import FgdwaError, LidarParams, OccupancyGrid, RobotLimits, planner_preset, preset_names, robot_preset
+from fgdwa.datasets.barn import BarnDataset, barn_score
+from fgdwa.experiments import run_tasks
+from fgdwa.mapping import check_mapping
+from fgdwa.scenario import params_with
+from fgdwa.sim import run_episode
+from fgdwa.world import World
+
+BARN_PLANNERS = ("dwa", "gdwa", "sgdwa", "fgdwa", "dwb")
+OUTCOMES = ("success", "collision", "timeout")
+RUN_FIELDS = ("world", "planner", "mapping", "trial", "seed", "outcome", "success", "time", "score", "optimal_time",
+              "mileage", "min_clearance", "replans", "backing_up", "cycle_ms_mean", "cycle_ms_p95", "wall_time")
+
+
+@dataclass(frozen=True)
+class BarnSetup:
+    """How every planner runs on BARN.
+
+    The Jackal's own limits (``jackal`` robot preset: 2 m/s, 4 rad/s, 20 m/s^2,
+    25 rad/s^2) with the forward speed capped at ``v_max``: the score stops
+    growing once T <= 2 OT, i.e. at a mean speed of 1 m/s along the reference
+    path, and a slower robot has more room to pick its way. The rollouts are
+    shortened to ``sim_time`` at period ``dt`` because BARN's gaps are a few
+    centimetres wider than the robot: a 3 s horizon at 1 m/s reaches through
+    them into the next obstacle and leaves no curved rollout admissible.
+    The lidar is the Jackal's Hokuyo UST-10LX class: 270 degrees, 0.5 degree
+    steps, 10 m, ``noise_std`` Gaussian range noise (drawn from the trial's seed).
+    """
+
+    v_max: float = 1.0  # m/s
+    dt: float = 0.1  # s, control period and rollout step
+    sim_time: float = 1.0  # s, rollout horizon
+    lidar_beams: int = 541
+    lidar_range: float = 10.0  # m
+    noise_std: float = 0.01  # m
+    replan_interval: int = 5  # cycles between global replans at most (scan mode)
+    stall_cycles: int = 30  # cycles without 0.1 m of progress before a recovery
+
+    def __post_init__(self):
+        for name in ("v_max", "dt", "sim_time", "lidar_range"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+                raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be a finite number > 0")
+        if not (math.isfinite(self.noise_std) and self.noise_std >= 0):
+            raise FgdwaError(f"BarnSetup.noise_std = {self.noise_std!r}: must be >= 0 (m)")
+        for name in ("lidar_beams", "replan_interval", "stall_cycles"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
+                raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be an integer >= 1")
+
+    def limits(self) -> RobotLimits:
+        jackal = robot_preset("jackal").limits
+        if self.v_max > jackal.v_max:
+            raise FgdwaError(f"BarnSetup.v_max = {self.v_max}: above the Jackal's {jackal.v_max} m/s")
+        return RobotLimits(v_min=jackal.v_min, v_max=self.v_max, omega_max=jackal.omega_max, acc_v=jackal.acc_v,
+                           acc_omega=jackal.acc_omega)
+
+    def lidar(self) -> LidarParams:
+        return LidarParams(fov_deg=270.0, beams=self.lidar_beams, max_range=self.lidar_range,
+                           noise_std=self.noise_std)
+
+
+@dataclass(frozen=True)
+class BarnTask:
+    """One run, self-contained (the world's arrays travel with it) so a worker
+    process or a dask worker needs nothing else."""
+
+    world_id: int
+    cells: np.ndarray  # (rows, cols) uint8
+    resolution: float
+    origin: tuple
+    start: tuple
+    goal: tuple
+    goal_radius: float
+    time_limit: float
+    optimal_time: float
+    planner: str
+    mapping: str
+    trial: int
+    seed: int
+    setup: BarnSetup = field(default_factory=BarnSetup)
+
+
+@dataclass
+class BarnRun:
+    """One run's row of runs.csv, plus the trace failures.png draws."""
+
+    row: dict
+    cells: np.ndarray  # (rows, cols) the world's grid
+    extent: tuple  # (x0, x1, y0, y1) m, the grid's
+    poses: np.ndarray  # (steps + 1, 3)
+    paths: list  # scan mode: (cycle, (n, 2) points) per global plan; known: [(0, path)]
+    scan_map: Optional[np.ndarray] = None  # scan mode: the robot's map at the end
+
+    @property
+    def outcome(self) -> str:
+        return self.row["outcome"]
+
+
+def barn_tasks(dataset: BarnDataset, world_ids: Sequence[int], planners: Sequence[str], mapping: str,
+               trials: int = 1, base_seed: int = 0, setup: Optional[BarnSetup] = None) -> list:
+    """One task per world, planner and trial (world-major, so a progress bar
+    sweeps the worlds); trial i of every run uses seed ``base_seed + i``."""
+    check_mapping(mapping)
+    planners = check_planners(planners)
+    if isinstance(trials, bool) or not isinstance(trials, (int, np.integer)) or trials < 1:
+        raise FgdwaError(f"trials = {trials!r}: must be an integer >= 1")
+    setup = setup if setup is not None else BarnSetup()
+    tasks = []
+    for wid in world_ids:
+        w = dataset.world(wid)
+        for planner in planners:
+            for trial in range(int(trials)):
+                tasks.append(BarnTask(
+                    world_id=w.world_id, cells=np.asarray(w.grid.cells), resolution=w.grid.resolution,
+                    origin=tuple(w.grid.origin), start=tuple(w.start), goal=tuple(w.goal),
+                    goal_radius=w.goal_radius, time_limit=w.time_limit, optimal_time=w.optimal_time,
+                    planner=planner, mapping=mapping, trial=trial, seed=int(base_seed) + trial, setup=setup))
+    return tasks
+
+
+def check_planners(planners: Sequence[str]) -> list:
+    """The planner names, checked against the presets, without repeats."""
+    if isinstance(planners, str):
+        planners = [p.strip() for p in planners.split(",") if p.strip()]
+    planners = list(dict.fromkeys(planners))
+    if not planners:
+        raise FgdwaError("planners: name at least one (e.g. fgdwa,dwb)")
+    known = preset_names()
+    for name in planners:
+        if name not in known:
+            raise FgdwaError(f"planner {name!r} unknown (known: {', '.join(known)})")
+    return planners
+
+
+def run_barn_task(task: BarnTask) -> BarnRun:
+    """Run one task (in whatever process calls it)."""
+    setup = task.setup
+    preset = planner_preset(task.planner)
+    params = params_with(preset.params, dt=setup.dt, sim_time=setup.sim_time, goal_tolerance=task.goal_radius)
+    robot = robot_preset("jackal")
+    world = World(grid=OccupancyGrid(task.cells, task.resolution, task.origin))
+    max_steps = int(math.floor(task.time_limit / setup.dt + 1e-9))
+    tic = time.perf_counter()
+    result = run_episode(world, task.start, task.goal, limits=setup.limits(), footprint=robot.footprint,
+                         params=params, max_steps=max_steps, goal_tolerance=task.goal_radius, lidar=setup.lidar(),
+                         weight_policy=preset.weight_policy(), seed=task.seed, mapping=task.mapping,
+                         replan_interval=setup.replan_interval, stall_cycles=setup.stall_cycles)
+    wall = time.perf_counter() - tic
+    # The challenge knows three outcomes; running out of steps is its timeout.
+    outcome = result.outcome if result.outcome in OUTCOMES else "timeout"
+    success = outcome == "success"
+    cycle_ms = 1e3 * result.cycle_times if len(result.cycle_times) else np.array([float("nan")])
+    paths = result.paths if result.paths else ([] if result.global_path is None else [(0, result.global_path)])
+    row = {
+        "world": task.world_id, "planner": task.planner, "mapping": task.mapping, "trial": task.trial,
+        "seed": task.seed, "outcome": outcome, "success": int(success), "time": result.sim_time,
+        "score": barn_score(success, result.sim_time, task.optimal_time), "optimal_time": task.optimal_time,
+        "mileage": result.mileage, "min_clearance": result.min_clearance,
+        "replans": max(0, len(result.paths) - 1), "backing_up": result.statuses.count("BackingUp"),
+        "cycle_ms_mean": float(np.mean(cycle_ms)), "cycle_ms_p95": float(np.percentile(cycle_ms, 95)),
+        "wall_time": wall,
+    }
+    grid = world.grid
+    return BarnRun(row=row, cells=task.cells, extent=tuple(grid.extent), poses=result.poses, paths=paths,
+                   scan_map=result.scan_map)
+
+
+def run_barn(dataset: BarnDataset, worlds="all", planners: Sequence[str] = BARN_PLANNERS, mapping: str = "known",
+             trials: int = 1, base_seed: int = 0, setup: Optional[BarnSetup] = None, executor: str = "local",
+             scheduler: Optional[str] = None, workers: int = 2, progress: bool = True) -> list:
+    """Every run of the selection, in task order (see :func:`barn_tasks` and
+    :func:`fgdwa.experiments.run_tasks` for the executors)."""
+    tasks = barn_tasks(dataset, dataset.select_ids(worlds), planners, mapping, trials, base_seed, setup)
+    return run_tasks(tasks, executor=executor, scheduler=scheduler, workers=workers, progress=progress,
+                     runner=run_barn_task)
+
+
+def summarize(runs: Sequence[BarnRun]) -> dict:
+    """Per planner, in order of first appearance: n, the rates of success,
+    collision and timeout, mean_time (s, successful runs; NaN when none),
+    mean_score (all runs) and the mean planning cycle (ms)."""
+    table = {}
+    for planner in dict.fromkeys(run.row["planner"] for run in runs):
+        rows = [run.row for run in runs if run.row["planner"] == planner]
+        n = len(rows)
+        times = [r["time"] for r in rows if r["success"]]
+        table[planner] = {
+            "n": n,
+            **{outcome: sum(r["outcome"] == outcome for r in rows) / n for outcome in OUTCOMES},
+            "mean_time": float(np.mean(times)) if times else float("nan"),
+            "mean_score": float(np.mean([r["score"] for r in rows])),
+            "cycle_ms_mean": float(np.nanmean([r["cycle_ms_mean"] for r in rows])),
+        }
+    return table
+
+
+def format_summary(summary: dict, mapping: str) -> str:
+    """The terminal table."""
+    lines = [f"BARN, map {mapping}",
+             f"{'planner':<10} {'n':>5} {'success':>8} {'collision':>10} {'timeout':>8} {'mean time':>10} "
+             f"{'mean score':>11} {'cycle ms':>9}"]
+    for planner, s in summary.items():
+        mean_time = "-" if math.isnan(s["mean_time"]) else f"{s['mean_time']:.1f} s"
+        lines.append(f"{planner:<10} {s['n']:>5} {s['success']:>8.3f} {s['collision']:>10.3f} {s['timeout']:>8.3f} "
+                     f"{mean_time:>10} {s['mean_score']:>11.3f} {s['cycle_ms_mean']:>9.2f}")
+    return "\n".join(lines)
+
+
+def write_barn_outputs(runs: Sequence[BarnRun], out_dir, mapping: str, meta: Optional[dict] = None,
+                       figure: bool = True) -> dict:
+    """Write runs.csv, summary.json and (``figure``) failures.png into ``out_dir``;
+    return the summary."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / "runs.csv", "w", newline="") as handle:
+        writer = csv.DictWriter(handle, fieldnames=RUN_FIELDS)
+        writer.writeheader()
+        for run in runs:
+            writer.writerow({k: _csv_value(run.row[k]) for k in RUN_FIELDS})
+    summary = summarize(runs)
+    document = {"mapping": mapping, **(meta or {}), "planners": _json_safe(summary)}
+    (out / "summary.json").write_text(json.dumps(document, indent=2) + "\n")
+    if figure:
+        from fgdwa.barn_figures import plot_failures
+
+        plot_failures(runs, out / "failures.png")
+    return summary
+
+
+def setup_dict(setup: BarnSetup) -> dict:
+    return dataclasses.asdict(setup)
+
+
+def _csv_value(value):
+    if isinstance(value, float):
+        return "" if math.isnan(value) else f"{value:.6g}"
+    return value
+
+
+def _json_safe(value):
+    if isinstance(value, dict):
+        return {k: _json_safe(v) for k, v in value.items()}
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+def barn_command(args) -> int:
+    """``fgdwa barn``: run, print the table, write the outputs."""
+    from fgdwa.datasets.barn import find_barn_file, load_barn
+
+    if args.scheduler is not None and args.executor != "dask":
+        raise FgdwaError("--scheduler needs --executor dask")
+    dataset = load_barn(find_barn_file(args.data))
+    world_ids = dataset.select_ids(args.worlds)
+    planners = check_planners(args.planners)
+    tic = time.perf_counter()
+    runs = run_barn(dataset, world_ids, planners, args.mapping, args.trials, args.seed, executor=args.executor,
+                    scheduler=args.scheduler, workers=args.workers, progress=not args.no_progress)
+    wall = time.perf_counter() - tic
+    meta = {"data": str(dataset.source), "worlds": world_ids, "trials": args.trials, "seed": args.seed,
+            "setup": setup_dict(BarnSetup()), "wall_time": wall}
+    summary = write_barn_outputs(runs, args.out, args.mapping, meta, figure=not args.no_figures)
+    print(format_summary(summary, args.mapping))
+    print(f"{len(runs)} runs in {wall:.1f} s; wrote {Path(args.out) / 'runs.csv'}, summary.json"
+          + ("" if args.no_figures else ", failures.png"))
+    return 0
