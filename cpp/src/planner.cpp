@@ -37,6 +37,7 @@ const char* to_string(Normalization normalization) {
   switch (normalization) {
     case Normalization::Sum: return "sum";
     case Normalization::MinMax: return "minmax";
+    case Normalization::None: return "none";
   }
   return "?";
 }
@@ -351,10 +352,11 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
     for (std::size_t i = 0; i < n; ++i) {
       if (result_.reasons[i] != RejectReason::None) continue;
       double& out = result_.normalized(i, j);
-      if (params_.normalization == Normalization::Sum)
-        out = sum != 0.0 ? result_.raw(i, j) / sum : 0.0;
-      else
-        out = hi > lo ? (result_.raw(i, j) - lo) / (hi - lo) : 0.0;
+      switch (params_.normalization) {
+        case Normalization::Sum: out = sum != 0.0 ? result_.raw(i, j) / sum : 0.0; break;
+        case Normalization::MinMax: out = hi > lo ? (result_.raw(i, j) - lo) / (hi - lo) : 0.0; break;
+        case Normalization::None: out = result_.raw(i, j); break;
+      }
     }
   }
   double best = -std::numeric_limits<double>::infinity();
