@@ -178,6 +178,8 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   context.n_steps = n_steps_;
   context.path = path_.get();
   context.v_max = limits_.v_max;
+  context.world = &world;
+  context.footprint = &footprint_;
   score_and_choose(context);
 
   if (result_.best_index < 0) {
