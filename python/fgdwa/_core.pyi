@@ -1153,7 +1153,7 @@ def paper_fuzzy_controller(resolution: typing.SupportsInt | typing.SupportsIndex
     """
 def planner_preset(name: str) -> PlannerPreset:
     """
-    A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity.
+    A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity; dwb (Nav2's DWB critics).
     """
 def points_field(points: typing.Any, resolution: typing.SupportsFloat | typing.SupportsIndex) -> DistanceField:
     """

@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "fgdwa/clearance.hpp"
+#include "fgdwa/collision.hpp"
 #include "fgdwa/dwb_critics.hpp"
+#include "fgdwa/presets.hpp"
 #include "test_support.hpp"
 
 namespace fgdwa {
@@ -280,6 +282,91 @@ TEST(MakeCritic, RejectsBadDwbParametersByName) {
   }
   expect_error_naming([] { make_critic({"dwb_obstacle", 1.0, {}, {{"aggregation", "max"}}}); }, "aggregation");
   expect_error_naming([] { make_critic({"dwb_goal_dist", 1.0, {}, {{"aggregation", "sum"}}}); }, "aggregation");
+}
+
+// A corridor 1 m wide between walls at y = 1 and y = 2, 13 m long; the global
+// path runs down its middle and the robot starts 0.15 m off it, turned away.
+struct CorridorRun {
+  bool reached = false;
+  int cycles = 0;
+  int contacts = 0;
+  double min_clearance = test::kInf;
+  double max_deviation_late = 0.0;  // m from the path once past x = 4
+  double distance = 0.0;
+};
+
+CorridorRun drive_corridor(const PlannerParams& params) {
+  const int rows = 30, cols = 130;
+  std::vector<std::uint8_t> cells(rows * cols, 0);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) cells[static_cast<std::size_t>(r * cols + c)] = (r < 10 || r >= 20) ? 1 : 0;
+  const OccupancyGrid grid(rows, cols, 0.1, Vec2::Zero(), cells);
+  const FieldClearance sensed(std::make_shared<DistanceField>(grid));
+  const CollisionWorld truth(grid);
+  const Footprint footprint = Footprint::circle(0.25);
+  const RobotLimits limits;
+  LocalPlanner planner(limits, footprint, params);
+  const GlobalPath path({Vec2(1.0, 1.5), Vec2(12.0, 1.5)});
+  planner.set_global_path(path);
+  const Vec2 goal(12.0, 1.5);
+  RobotState state{Pose2{1.0, 1.35, -0.2}, Twist{}};
+  CorridorRun run;
+  for (run.cycles = 0; run.cycles < 600; ++run.cycles) {
+    const PlanResult& result = planner.plan(state, goal, sensed);
+    if (result.status == Status::GoalReached) {
+      run.reached = true;
+      break;
+    }
+    const Pose2 next = step(state.pose, result.command, params.dt);
+    run.distance += (next.position() - state.pose.position()).norm();
+    state = RobotState{next, result.command};
+    if (truth.in_collision(footprint, state.pose)) ++run.contacts;
+    run.min_clearance = std::min(run.min_clearance, truth.clearance(footprint, state.pose, 0.0));
+    if (state.pose.x > 4.0) run.max_deviation_late = std::max(run.max_deviation_late, path.deviation(state.pose.position()));
+  }
+  return run;
+}
+
+TEST(DwbPreset, NavTwoCriticsAndScalesUnnormalised) {
+  const PlannerPreset preset = planner_preset("dwb");
+  EXPECT_FALSE(preset.fuzzy);
+  EXPECT_EQ(preset.params.normalization, Normalization::None);
+  EXPECT_EQ(preset.params.heading_target, HeadingTarget::KeyNodes);
+  EXPECT_EQ(preset.params.dt, 0.15);
+  EXPECT_EQ(preset.params.sim_time, 3.0);
+  // nav2_params.yaml's scales; the map-grid ones times half the 0.05 m resolution.
+  const std::vector<std::pair<std::string, double>> want = {
+      {"dwb_obstacle", 0.02}, {"dwb_path_align", 0.8}, {"dwb_goal_align", 0.6}, {"dwb_path_dist", 0.8},
+      {"dwb_goal_dist", 0.6}};
+  ASSERT_EQ(preset.params.critics.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    EXPECT_EQ(preset.params.critics[i].name, want[i].first);
+    EXPECT_NEAR(preset.params.critics[i].weight, want[i].second, 1e-12) << want[i].first;
+  }
+  const auto names = preset_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), "dwb"), names.end());
+}
+
+TEST(DwbPreset, FollowsAStraightCorridorPathToTheGoal) {
+  const CorridorRun run = drive_corridor(planner_preset("dwb").params);
+  EXPECT_TRUE(run.reached) << "after " << run.cycles << " cycles";
+  EXPECT_EQ(run.contacts, 0);
+  EXPECT_GT(run.min_clearance, 0.0);
+  EXPECT_LT(run.max_deviation_late, 0.05);
+  EXPECT_LT(run.distance, 11.5);  // 11 m of path, plus the way back onto it
+  RecordProperty("cycles", run.cycles);
+  RecordProperty("max_deviation_late_m", std::to_string(run.max_deviation_late));
+  RecordProperty("min_clearance_m", std::to_string(run.min_clearance));
+  std::printf("cycles %d  distance %.3f  max deviation past x=4 %.4f  min clearance %.3f\n", run.cycles, run.distance,
+              run.max_deviation_late, run.min_clearance);
+}
+
+TEST(DwbPreset, RefusesToRunWithoutAGlobalPath) {
+  PlannerParams params = planner_preset("dwb").params;
+  params.heading_target = HeadingTarget::Goal;
+  LocalPlanner planner(RobotLimits{}, Footprint::circle(0.25), params);
+  const FieldClearance empty;
+  expect_error_naming([&] { planner.plan(RobotState{}, Vec2(5, 0), empty); }, "dwb_path_align");
 }
 
 }  // namespace
