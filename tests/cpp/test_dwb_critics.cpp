@@ -355,10 +355,9 @@ TEST(DwbPreset, FollowsAStraightCorridorPathToTheGoal) {
   EXPECT_LT(run.max_deviation_late, 0.05);
   EXPECT_LT(run.distance, 11.5);  // 11 m of path, plus the way back onto it
   RecordProperty("cycles", run.cycles);
+  RecordProperty("distance_m", std::to_string(run.distance));
   RecordProperty("max_deviation_late_m", std::to_string(run.max_deviation_late));
   RecordProperty("min_clearance_m", std::to_string(run.min_clearance));
-  std::printf("cycles %d  distance %.3f  max deviation past x=4 %.4f  min clearance %.3f\n", run.cycles, run.distance,
-              run.max_deviation_late, run.min_clearance);
 }
 
 TEST(DwbPreset, RefusesToRunWithoutAGlobalPath) {
