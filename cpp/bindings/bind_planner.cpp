@@ -56,7 +56,8 @@ HeadingTarget heading_target_from_string(const std::string& name) {
 Normalization normalization_from_string(const std::string& name) {
   if (name == "sum") return Normalization::Sum;
   if (name == "minmax") return Normalization::MinMax;
-  throw Error("normalization = '" + name + "': expected 'sum' or 'minmax'");
+  if (name == "none") return Normalization::None;
+  throw Error("normalization = '" + name + "': expected 'sum', 'minmax' or 'none'");
 }
 
 }  // namespace
@@ -100,7 +101,7 @@ void init_planner(py::module_& m) {
            py::arg("heading_target") = "goal", py::arg("key_node_angle_deg") = 10.0, py::arg("key_node_radius") = 1.0,
            py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = false,
            "dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample "
-           "counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance "
+           "counts; normalization: 'sum', 'minmax' or 'none' (raw terms, as Nav2's DWB adds them); braking: 'discrete' (stop within the free distance "
            "with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts "
            "or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0); "
            "heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet "

@@ -85,7 +85,7 @@ void init_weights(py::module_& m) {
         return "PlannerPreset('" + p.name + "', fuzzy=" + (p.fuzzy ? "True" : "False") + ")";
       });
   m.def("planner_preset", &planner_preset, py::arg("name"),
-        "A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity.");
+        "A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity; dwb (Nav2's DWB critics).");
   m.def("preset_names", &preset_names);
 
   py::class_<RobotPreset>(m, "RobotPreset", "A robot by name: limits and footprint.")

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "fgdwa/dwb_critics.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -117,12 +118,41 @@ std::unique_ptr<Critic> make_similarity(Params& p, Options& o) {
   return std::make_unique<SimilarityCritic>(params);
 }
 
+std::unique_ptr<Critic> make_dwb_obstacle(Params& p, Options& o) {
+  DwbObstacleParams params;
+  params.cost_scaling_factor = take(p, "cost_scaling_factor", params.cost_scaling_factor);
+  params.inflation_margin = take(p, "inflation_margin", params.inflation_margin);
+  const std::string aggregation = take_option(o, "aggregation", "last");
+  if (aggregation == "sum")
+    params.aggregation = DwbAggregation::Sum;
+  else if (aggregation != "last")
+    throw Error("critic dwb_obstacle: aggregation = '" + aggregation + "': expected 'last' or 'sum'");
+  return std::make_unique<DwbObstacleCritic>(params);
+}
+
+// The map-grid critics; only the align ones look ahead of the last pose.
+template <typename T>
+Factory dwb_grid(bool forward_point) {
+  return [forward_point](Params& p, Options&) -> std::unique_ptr<Critic> {
+    DwbGridParams params;
+    params.resolution = take(p, "resolution", params.resolution);
+    params.local_extent = take(p, "local_extent", params.local_extent);
+    if (forward_point) params.forward_point_distance = take(p, "forward_point_distance", params.forward_point_distance);
+    return std::make_unique<T>(params);
+  };
+}
+
 const std::map<std::string, Factory>& registry() {
   static const std::map<std::string, Factory> factories = {
       {"heading", [](Params&, Options&) { return std::make_unique<HeadingCritic>(); }},
       {"clearance", [](Params& p, Options&) { return std::make_unique<ClearanceCritic>(take(p, "cap", 2.0)); }},
       {"velocity", [](Params&, Options&) { return std::make_unique<VelocityCritic>(); }},
       {"similarity", make_similarity},
+      {"dwb_obstacle", make_dwb_obstacle},
+      {"dwb_path_dist", dwb_grid<DwbPathDistCritic>(false)},
+      {"dwb_goal_dist", dwb_grid<DwbGoalDistCritic>(false)},
+      {"dwb_path_align", dwb_grid<DwbPathAlignCritic>(true)},
+      {"dwb_goal_align", dwb_grid<DwbGoalAlignCritic>(true)},
   };
   return factories;
 }

@@ -37,6 +37,7 @@ const char* to_string(Normalization normalization) {
   switch (normalization) {
     case Normalization::Sum: return "sum";
     case Normalization::MinMax: return "minmax";
+    case Normalization::None: return "none";
   }
   return "?";
 }
@@ -177,6 +178,8 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   context.n_steps = n_steps_;
   context.path = path_.get();
   context.v_max = limits_.v_max;
+  context.world = &world;
+  context.footprint = &footprint_;
   score_and_choose(context);
 
   if (result_.best_index < 0) {
@@ -351,10 +354,11 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
     for (std::size_t i = 0; i < n; ++i) {
       if (result_.reasons[i] != RejectReason::None) continue;
       double& out = result_.normalized(i, j);
-      if (params_.normalization == Normalization::Sum)
-        out = sum != 0.0 ? result_.raw(i, j) / sum : 0.0;
-      else
-        out = hi > lo ? (result_.raw(i, j) - lo) / (hi - lo) : 0.0;
+      switch (params_.normalization) {
+        case Normalization::Sum: out = sum != 0.0 ? result_.raw(i, j) / sum : 0.0; break;
+        case Normalization::MinMax: out = hi > lo ? (result_.raw(i, j) - lo) / (hi - lo) : 0.0; break;
+        case Normalization::None: out = result_.raw(i, j); break;
+      }
     }
   }
   double best = -std::numeric_limits<double>::infinity();

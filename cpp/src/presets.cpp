@@ -19,6 +19,28 @@ PlannerParams guided(double beta, double delta, bool similarity) {
   return p;
 }
 
+// Nav2's DWB with the scales of nav2_bringup's nav2_params.yaml: BaseObstacle
+// 0.02, PathAlign 32, GoalAlign 24, PathDist 32, GoalDist 24. DWB multiplies a
+// map-grid critic's scale by half the costmap resolution (MapGridCritic::getScale),
+// so the weight of a cost in cells is scale * 0.05 / 2; BaseObstacle's scale is
+// its weight. Key nodes only so that a global path is planned: no critic here
+// reads the heading target.
+PlannerParams dwb() {
+  constexpr double kCostmapResolution = 0.05;  // m, the dwb_* critics' default cell
+  constexpr double grid_scale = 0.5 * kCostmapResolution;
+  PlannerParams p;
+  p.dt = 0.15;
+  p.sim_time = 3.0;
+  p.heading_target = HeadingTarget::KeyNodes;
+  p.normalization = Normalization::None;
+  p.critics = {{"dwb_obstacle", 0.02},
+               {"dwb_path_align", 32.0 * grid_scale},
+               {"dwb_goal_align", 24.0 * grid_scale},
+               {"dwb_path_dist", 32.0 * grid_scale},
+               {"dwb_goal_dist", 24.0 * grid_scale}};
+  return p;
+}
+
 const std::map<std::string, std::function<PlannerPreset()>>& presets() {
   static const std::map<std::string, std::function<PlannerPreset()>> table = {
       {"dwa",
@@ -56,6 +78,11 @@ const std::map<std::string, std::function<PlannerPreset()>>& presets() {
          return PlannerPreset{"gdwa_high_similarity",
                               "guided DWA with similarity, fixed high similarity weight delta = 5",
                               guided(0.15, 5.0, true), false};
+       }},
+      {"dwb",
+       [] {
+         return PlannerPreset{"dwb", "Nav2's DWB critics and scales (nav2_params.yaml), costs added unnormalised",
+                              dwb(), false};
        }},
   };
   return table;
@@ -100,7 +127,7 @@ RobotPreset robot_preset(const std::string& name) {
 std::vector<std::string> robot_names() { return {"default", "jackal"}; }
 
 std::vector<std::string> preset_names() {
-  return {"dwa", "gdwa", "sgdwa", "fgdwa", "gdwa_high_safety", "gdwa_high_similarity"};
+  return {"dwa", "gdwa", "sgdwa", "fgdwa", "gdwa_high_safety", "gdwa_high_similarity", "dwb"};
 }
 
 }  // namespace fgdwa

@@ -705,7 +705,7 @@ class PlannerParams:
     """
     def __init__(self, dt: typing.SupportsFloat | typing.SupportsIndex = 0.15, sim_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21, normalization: str = 'sum', braking: str = 'discrete', goal_tolerance: typing.SupportsFloat | typing.SupportsIndex = 0.3, critics: typing.Any = None, heading_target: str = 'goal', key_node_angle_deg: typing.SupportsFloat | typing.SupportsIndex = 10.0, key_node_radius: typing.SupportsFloat | typing.SupportsIndex = 1.0, safety_margin: typing.SupportsFloat | typing.SupportsIndex = 0.02, key_node_sight: bool = False) -> None:
         """
-        dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample counts; normalization: 'sum' or 'minmax'; braking: 'discrete' (stop within the free distance with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0); heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this near is reached; safety_margin (m): a rollout closer than this to an obstacle counts as in contact (never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as reached only once the next one is in sight (default False: SPEC 5 as written).
+        dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample counts; normalization: 'sum', 'minmax' or 'none' (raw terms, as Nav2's DWB adds them); braking: 'discrete' (stop within the free distance with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0); heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this near is reached; safety_margin (m): a rollout closer than this to an obstacle counts as in contact (never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as reached only once the next one is in sight (default False: SPEC 5 as written).
         """
     def __repr__(self) -> str:
         ...
@@ -1153,7 +1153,7 @@ def paper_fuzzy_controller(resolution: typing.SupportsInt | typing.SupportsIndex
     """
 def planner_preset(name: str) -> PlannerPreset:
     """
-    A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity.
+    A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity; dwb (Nav2's DWB critics).
     """
 def points_field(points: typing.Any, resolution: typing.SupportsFloat | typing.SupportsIndex) -> DistanceField:
     """

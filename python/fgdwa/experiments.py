@@ -63,6 +63,7 @@ PLANNER_LABELS = {
     "fgdwa": "FGDWA",
     "gdwa_high_safety": "GDWA, high safety weight",
     "gdwa_high_similarity": "GDWA, high similarity weight",
+    "dwb": "DWB (Nav2 critics)",
 }
 
 

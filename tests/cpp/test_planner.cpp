@@ -373,7 +373,7 @@ void check_normalization(Normalization mode) {
             ASSERT_EQ(hi, 0.0);
             ASSERT_EQ(lo, 0.0);
           }
-        } else {
+        } else if (mode == Normalization::MinMax) {
           ASSERT_GE(lo, 0.0);
           ASSERT_LE(hi, 1.0);
           if (raw_hi > raw_lo) {
@@ -381,8 +381,25 @@ void check_normalization(Normalization mode) {
             ASSERT_NEAR(hi, 1.0, 1e-12);
             ++columns;
           }
+        } else {
+          ASSERT_EQ(sum, raw_sum);
+          ASSERT_EQ(lo, raw_lo);
+          ASSERT_EQ(hi, raw_hi);
+          if (raw_hi > raw_lo) ++columns;
         }
       }
+      if (mode != Normalization::None) continue;
+      // The total is the weighted sum of the raw terms and the choice its first maximum.
+      double best = -kInf;
+      Eigen::Index best_index = -1;
+      for (Eigen::Index i = 0; i < r.raw.rows(); ++i) {
+        if (r.reasons[static_cast<std::size_t>(i)] != RejectReason::None) continue;
+        ASSERT_EQ(r.normalized.row(i), r.raw.row(i));
+        const double total = 0.5 * r.raw(i, 0) + 0.15 * r.raw(i, 1) + 1.0 * r.raw(i, 2);
+        ASSERT_NEAR(r.total(i), total, 1e-12);
+        if (r.total(i) > best) best = r.total(i), best_index = i;
+      }
+      ASSERT_EQ(r.best_index, best_index);
     }
   }
   EXPECT_GT(columns, 50);
@@ -390,6 +407,7 @@ void check_normalization(Normalization mode) {
 
 TEST(LocalPlanner, SumNormalizationMakesEachColumnSumToOne) { check_normalization(Normalization::Sum); }
 TEST(LocalPlanner, MinMaxNormalizationMapsEachColumnOntoZeroOne) { check_normalization(Normalization::MinMax); }
+TEST(LocalPlanner, NoNormalizationWeighsTheRawTerms) { check_normalization(Normalization::None); }
 
 TEST(LocalPlanner, SetWeightChangesTheChoice) {
   const RobotLimits limits;

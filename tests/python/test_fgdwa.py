@@ -3,7 +3,7 @@ import pytest
 
 import fgdwa
 from fgdwa.builtin import unknown_beside_path_scenario
-from fgdwa.sim import run_episode, run_preset
+from fgdwa.sim import World, run_episode, run_preset
 
 
 def test_presets_follow_the_paper_tables():
@@ -15,17 +15,33 @@ def test_presets_follow_the_paper_tables():
         "gdwa_high_safety": ("key_nodes", {"heading": 0.5, "clearance": 1.0, "velocity": 1.0, "similarity": 0.5}, False),
         "gdwa_high_similarity": ("key_nodes", {"heading": 0.5, "clearance": 0.15, "velocity": 1.0, "similarity": 5.0},
                                  False),
+        # Nav2's scales; the map-grid critics' times half the 0.05 m costmap resolution.
+        "dwb": ("key_nodes", {"dwb_obstacle": 0.02, "dwb_path_align": 0.8, "dwb_goal_align": 0.6,
+                              "dwb_path_dist": 0.8, "dwb_goal_dist": 0.6}, False),
     }
     assert fgdwa.preset_names() == list(expected)
     for name, (target, weights, fuzzy) in expected.items():
         preset = fgdwa.planner_preset(name)
         assert preset.params.heading_target == target
-        assert {c.name: c.weight for c in preset.params.critics} == weights
+        assert {c.name: c.weight for c in preset.params.critics} == pytest.approx(weights, rel=1e-12)
+        assert preset.params.normalization == ("none" if name == "dwb" else "sum")
         assert (preset.params.dt, preset.params.sim_time) == (0.15, 3.0)
         assert preset.fuzzy == fuzzy
         assert (preset.weight_policy() is not None) == fuzzy
     with pytest.raises(fgdwa.FgdwaError, match="unknown planner preset 'fdwa'"):
         fgdwa.planner_preset("fdwa")
+
+
+def test_dwb_preset_follows_the_global_path_round_a_wall():
+    cells = np.zeros((60, 100), dtype=np.uint8)
+    cells[20:40, 48:52] = 1  # a wall across the straight line from start to goal
+    world = World(grid=fgdwa.OccupancyGrid(cells, 0.1))
+    result = run_preset(world, (1.0, 3.0, 0.0), (9.0, 3.0), "dwb", max_steps=400)
+    assert result.outcome == "success"
+    assert result.min_clearance > 0.0
+    # Its path critics keep it near the A* path around the wall.
+    assert result.max_deviation < 0.3
+    assert np.all(np.isnan(result.delta))  # no similarity critic to weigh
 
 
 def test_fuzzy_weights_follow_the_rule_tables():

@@ -59,6 +59,19 @@ def test_minmax_normalisation_maps_to_unit_interval(rng):
     assert result.normalized[ok].max() == pytest.approx(1.0)
 
 
+def test_no_normalisation_weighs_the_raw_terms(rng):
+    world = fgdwa.FieldClearance(fgdwa.DistanceField(fgdwa.OccupancyGrid(random_block_grid(rng), 0.1)))
+    planner = make_planner(normalization="none")
+    assert planner.params.normalization == "none"
+    result = planner.plan(fgdwa.RobotState((0.3, 0.3, 0.5), (0.5, 0.0)), (7, 5), world)
+    ok = result.admissible
+    np.testing.assert_array_equal(result.normalized[ok], result.raw[ok])
+    np.testing.assert_allclose(result.total[ok], result.raw[ok] @ np.array(result.weights))
+    assert result.best_index == int(np.argmax(result.total))
+    with pytest.raises(fgdwa.FgdwaError, match="'none'"):
+        make_planner(normalization="raw")
+
+
 def test_boxed_in_robot_brakes_with_status():
     cells = np.zeros((40, 40), dtype=np.uint8)
     cells[:, 22:24] = 1  # a wall 0.2 m past the robot's nose

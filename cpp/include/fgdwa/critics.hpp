@@ -18,6 +18,8 @@
 
 namespace fgdwa {
 
+class ClearanceSource;
+
 // What every critic may read about the current cycle.
 struct CriticContext {
   RobotState state;
@@ -27,6 +29,10 @@ struct CriticContext {
   int n_steps = 0;
   const GlobalPath* path = nullptr;  // the global path, when the planner has one
   double v_max = 0.0;                // m/s, the robot's speed limit
+  // What the planner measures clearance against, for critics that need the
+  // clearance of single poses (a Rollout carries only its minimum).
+  const ClearanceSource* world = nullptr;
+  const Footprint* footprint = nullptr;
 };
 
 // One sampled command with what the planner measured about it.
@@ -137,7 +143,8 @@ class SimilarityCritic : public Critic {
   mutable DtwWorkspace workspace_;
 };
 
-// Builds a critic by registered name; throws fgdwa::Error on an unknown name,
+// Builds a critic by registered name (those above, and the dwb_* ones of
+// dwb_critics.hpp); throws fgdwa::Error on an unknown name,
 // an unknown parameter or a bad value.
 std::unique_ptr<Critic> make_critic(const CriticConfig& config);
 // The names make_critic accepts.

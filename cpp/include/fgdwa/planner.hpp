@@ -35,6 +35,9 @@ constexpr std::size_t kRejectReasonCount = 2;
 enum class Normalization : std::uint8_t {
   Sum,     // each term divided by its sum over the admissible samples (classic DWA)
   MinMax,  // each term mapped to [0, 1] over the admissible samples
+  // Raw terms as they are, total = sum of weight * raw: how Nav2's DWB adds its
+  // critics (scale * cost), which only works with terms on agreed scales.
+  None,
 };
 
 // What the heading critic aims at (SPEC 5).
@@ -82,7 +85,7 @@ struct PlanResult {
   std::vector<double> min_clearance;            // m, per sample
   std::vector<double> free_distance;            // m, per sample (+inf: never touches)
   Matrix raw;                                   // samples x critics, 0 for rejected samples
-  Matrix normalized;                            // samples x critics, 0 for rejected samples
+  Matrix normalized;                            // samples x critics, 0 for rejected samples (raw with Normalization::None)
   Eigen::VectorXd total;                        // weighted sum of normalised terms; -inf if rejected
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reason
   int admissible_count() const { return reject_counts[0]; }

@@ -32,7 +32,8 @@ struct RobotPreset {
 RobotPreset robot_preset(const std::string& name);
 std::vector<std::string> robot_names();
 
-// dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity.
+// dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity; and dwb,
+// a baseline scored as Nav2's DWB controller scores (dwb_critics.hpp).
 PlannerPreset planner_preset(const std::string& name);
 std::vector<std::string> preset_names();
 
