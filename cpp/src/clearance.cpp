@@ -50,7 +50,9 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     Vec2 a, b;
     double da, db;
   };
-  std::vector<Piece> pending;
+  // Reused across calls: this runs thousands of times per control cycle.
+  thread_local std::vector<Piece> pending;
+  pending.clear();
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     const Vec2 a = world(vertices[i]), b = world(vertices[(i + 1) % vertices.size()]);
     const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * res))));
@@ -99,15 +101,27 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
 
 }  // namespace
 
-double FieldClearance::clearance_lower_bound(const Footprint& footprint, const Pose2& pose, double t) const {
-  // Every point of the footprint lies within its circumscribed radius of the pose.
-  const Vec2 p = pose.position();
+namespace {
+// Every point of the footprint lies in one of its cover discs; a polygon's
+// clearance may also sit up to half the outline tolerance under the truth.
+double static_lower_bound(const DistanceField* field, const DistanceField* sensed, const Footprint& footprint,
+                          const Pose2& pose) {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   double best = std::numeric_limits<double>::infinity();
-  if (field_) best = field_->lower_bound(p);
-  if (sensed_) best = std::min(best, sensed_->lower_bound(p));
-  best -= footprint.radius();
-  // A polygon's clearance may sit up to half the outline tolerance under the truth.
-  if (!footprint.is_circle()) best -= 0.5 * kOutlineTolerance;
+  for (const Footprint::CoverDisc& d : footprint.cover()) {
+    const Vec2 p(pose.x + c * d.centre.x() - s * d.centre.y(), pose.y + s * d.centre.x() + c * d.centre.y());
+    double here = std::numeric_limits<double>::infinity();
+    if (field) here = field->lower_bound(p);
+    if (sensed) here = std::min(here, sensed->lower_bound(p));
+    best = std::min(best, here - d.radius);
+  }
+  return footprint.is_circle() ? best : best - 0.5 * kOutlineTolerance;
+}
+}  // namespace
+
+double FieldClearance::clearance_lower_bound(const Footprint& footprint, const Pose2& pose, double t) const {
+  const Vec2 p = pose.position();
+  double best = static_lower_bound(field_.get(), sensed_.get(), footprint, pose);
   for (const Disc& disc : discs_)
     best = std::min(best, (disc.center_at(t) - p).norm() - disc.radius - footprint.radius());
   return best;
@@ -115,16 +129,19 @@ double FieldClearance::clearance_lower_bound(const Footprint& footprint, const P
 
 void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
                                             double* out) const {
-  // As clearance_lower_bound: a polygon's clearance may sit half the outline tolerance under the truth.
-  const double r = footprint.radius() + (footprint.is_circle() ? 0.0 : 0.5 * kOutlineTolerance);
+  const double r = footprint.radius();
   const std::size_t n = poses.size();
-  if (field_) {
-    for (std::size_t k = 0; k < n; ++k) out[k] = field_->lower_bound(poses[k].position()) - r;
+  if (!footprint.is_circle()) {
+    for (std::size_t k = 0; k < n; ++k) out[k] = static_lower_bound(field_.get(), sensed_.get(), footprint, poses[k]);
   } else {
-    std::fill(out, out + n, std::numeric_limits<double>::infinity());
+    if (field_) {
+      for (std::size_t k = 0; k < n; ++k) out[k] = field_->lower_bound(poses[k].position()) - r;
+    } else {
+      std::fill(out, out + n, std::numeric_limits<double>::infinity());
+    }
+    if (sensed_)
+      for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], sensed_->lower_bound(poses[k].position()) - r);
   }
-  if (sensed_)
-    for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], sensed_->lower_bound(poses[k].position()) - r);
   for (const Disc& disc : discs_)
     for (std::size_t k = 0; k < n; ++k)
       out[k] = std::min(out[k], (disc.center_at(static_cast<double>(k + 1) * dt) - poses[k].position()).norm() -

@@ -27,6 +27,7 @@ Footprint Footprint::circle(double radius) {
   Footprint fp;
   fp.radius_ = radius;
   fp.inscribed_radius_ = radius;
+  fp.cover_.push_back({Vec2::Zero(), radius});
   return fp;
 }
 
@@ -67,6 +68,18 @@ Footprint Footprint::polygon(std::vector<Vec2> vertices) {
   for (size_t i = 0; i < n; ++i)
     fp.inscribed_radius_ = std::min(
         fp.inscribed_radius_, point_segment_distance(Vec2::Zero(), fp.vertices_[i], fp.vertices_[(i + 1) % n]));
+  Vec2 lo = fp.vertices_[0], hi = fp.vertices_[0];
+  for (const Vec2& v : fp.vertices_) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const Vec2 size = hi - lo;
+  const bool long_x = size.x() >= size.y();
+  const double long_side = long_x ? size.x() : size.y(), short_side = long_x ? size.y() : size.x();
+  const int pieces = std::max(1, static_cast<int>(std::ceil(long_side / short_side - 1e-9)));
+  const double piece = long_side / pieces;
+  for (int k = 0; k < pieces; ++k) {
+    const double along = (k + 0.5) * piece;
+    const Vec2 centre = long_x ? Vec2(lo.x() + along, 0.5 * (lo.y() + hi.y())) : Vec2(0.5 * (lo.x() + hi.x()), lo.y() + along);
+    fp.cover_.push_back({centre, 0.5 * std::hypot(piece, short_side)});
+  }
   return fp;
 }
 

@@ -42,6 +42,16 @@ class Footprint {
   // Counter-clockwise vertices in the robot frame; empty for a circle.
   const std::vector<Vec2>& vertices() const { return vertices_; }
 
+  // Discs (robot frame: centre, radius) whose union covers the footprint: the
+  // circle itself, or a polygon's bounding box cut across its long side into
+  // near-square pieces. Distance bounds from them are tighter than from the
+  // circumscribed circle for an elongated robot.
+  struct CoverDisc {
+    Vec2 centre;
+    double radius;
+  };
+  const std::vector<CoverDisc>& cover() const { return cover_; }
+
   // Signed distance from the footprint placed at `pose` to the point `p`
   // (negative inside).
   double signed_distance(const Pose2& pose, const Vec2& p) const;
@@ -53,6 +63,7 @@ class Footprint {
   double radius_ = 0.0;
   double inscribed_radius_ = 0.0;
   std::vector<Vec2> vertices_;
+  std::vector<CoverDisc> cover_;
 };
 
 // One unicycle step of length dt: theta first, then the position along the new
