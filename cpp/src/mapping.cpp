@@ -26,8 +26,9 @@ bool ScanMap::mark_point(const Vec2& p) {
 
 std::size_t ScanMap::integrate(const Scan& scan) {
   // A hit lies on an obstacle's surface, where rounding may put it in the free
-  // cell beside; a quarter cell further along the beam it is inside.
-  const double push = 0.25 * grid_.resolution();
+  // cell beside; a micrometre further along the beam it is inside. No more:
+  // a beam clipping a cell's corner stays in it for a short chord only.
+  const double push = 1e-6 * grid_.resolution();
   std::size_t added = 0;
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     const double r = scan.ranges[i];
