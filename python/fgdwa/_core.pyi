@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -1113,15 +1113,61 @@ class Controller:
         ...
     def set_global_path(self, path: typing.Any) -> None:
         ...
+    def set_map(self, map: DistanceField) -> None:
+        """
+        Replaces the map's distance field (None for none), e.g. with ScanMap.field() after new cells.
+        """
     def step(self, state: RobotState, goal: typing.Any, scan: Scan = None, discs: collections.abc.Sequence[Disc] = []) -> PlanResult:
         """
         One cycle toward goal with this cycle's scan (or None) and the known moving discs placed now.
         """
     @property
+    def map(self) -> DistanceField:
+        ...
+    @property
     def planner(self) -> LocalPlanner:
         ...
     @property
     def report(self) -> CycleReport:
+        ...
+    @property
+    def world(self) -> FieldClearance:
+        """
+        What the planner saw last cycle: the map's field, the sensed points and the discs.
+        """
+class ScanMap:
+    """
+    A map built from lidar hits: starts empty, each hit marks its cell occupied; cells are never cleared (static worlds).
+    """
+    @typing.overload
+    def __init__(self, like: OccupancyGrid) -> None:
+        """
+        An empty map with the layout of `like`.
+        """
+    @typing.overload
+    def __init__(self, rows: typing.SupportsInt | typing.SupportsIndex, cols: typing.SupportsInt | typing.SupportsIndex, resolution: typing.SupportsFloat | typing.SupportsIndex, origin: typing.Any) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def field(self) -> DistanceField:
+        """
+        Its distance field, rebuilt on the first call after new cells.
+        """
+    def integrate(self, scan: Scan) -> int:
+        """
+        Marks the cells of the scan's hits; returns how many cells became occupied.
+        """
+    def mark(self, points: typing.Any) -> int:
+        """
+        Marks the cells holding (n, 2) points; returns how many became occupied.
+        """
+    @property
+    def grid(self) -> OccupancyGrid:
+        """
+        The map so far (a copy).
+        """
+    @property
+    def occupied_count(self) -> int:
         ...
 def angle_difference(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
@@ -1150,6 +1196,10 @@ def obstacle_density(scan: Scan, window: DetectWindowParams = ...) -> DensityRea
 def paper_fuzzy_controller(resolution: typing.SupportsInt | typing.SupportsIndex = 1001) -> MamdaniEngine:
     """
     The paper's weight controller (Section 2.2.2, Tables 3 and 4): inputs I (obstacle density, [0, 2]) and D (path deviation, [0, 5] m), outputs beta ([0, 1]) and delta ([0, 5]), S/M/L uniform triangular partitions, 9 rules.
+    """
+def path_blocked(path: GlobalPath, position: typing.Any, field: DistanceField, clearance: typing.SupportsFloat | typing.SupportsIndex) -> bool:
+    """
+    Whether the path ahead of `position` (from its nearest point on) passes closer than `clearance` (m) to an obstacle of `field`.
     """
 def planner_preset(name: str) -> PlannerPreset:
     """
