@@ -413,6 +413,9 @@ def saved_experiments(directory: Path, names: Sequence[str]) -> list:
     return out
 
 
+KEEP_MARKER = "<!-- Sections below are not written by `fgdwa experiment`, which keeps them. -->"
+
+
 def write_results(directory: Path, names: Sequence[str], command: str, path: Path,
                   surfaces: Optional[Path] = None) -> Path:
     """A results page (e.g. docs/RESULTS.md) from the experiments saved in ``directory``."""
@@ -422,5 +425,10 @@ def write_results(directory: Path, names: Sequence[str], command: str, path: Pat
     if surfaces is not None and Path(surfaces).exists():
         target = Path(os.path.relpath(Path(surfaces).resolve(), path.parent.resolve())).as_posix()
         text += f"\n## The fuzzy controller\n\n![{SURFACES_CAPTION}]({target})\n\n*{SURFACES_CAPTION}*\n"
+    # Sections written by other commands (fgdwa barn) sit below the marker and stay.
+    if path.exists():
+        old = path.read_text()
+        if KEEP_MARKER in old:
+            text = text.rstrip("\n") + "\n\n" + old[old.index(KEEP_MARKER):]
     path.write_text(text)
     return path

@@ -262,6 +262,14 @@ def test_results_page_counts_claims_read_back_from_json(tmp_path):
     page = write_results(tmp_path, ["t"], "fgdwa experiment t", tmp_path / "R.md").read_text()
     assert "Of the paper's 2 directional claims, 1 could be measured here; 1 show the same direction" in page
     assert f"1 claim(s) of no difference, 1 could be measured and {int(mileage_p >= 0.05)} hold" in page
+    # Sections below the keep marker (the BARN results) survive a rewrite; the rest is regenerated.
+    from fgdwa.report import KEEP_MARKER
+
+    (tmp_path / "R.md").write_text(page.replace("## The paper's claims", "## stale") + "\n" + KEEP_MARKER
+                                   + "\n\n## BARN\n\nkept\n")
+    again = write_results(tmp_path, ["t"], "fgdwa experiment t", tmp_path / "R.md").read_text()
+    assert "## stale" not in again and "## The paper's claims" in again
+    assert again.endswith(KEEP_MARKER + "\n\n## BARN\n\nkept\n") and again.count(KEEP_MARKER) == 1
 
 
 def test_a_single_experiment_updates_the_results_page_from_saved_runs(tmp_path):
