@@ -21,8 +21,8 @@ MAX_PANELS = 30
 def plot_failures(runs: Sequence, path, max_panels: int = MAX_PANELS) -> Path:
     """Each failed run's map (grey; with ``--map scan`` what the robot had mapped
     in blue over it), its last global path (dashed) and the executed path, ending
-    in a cross where it collided or stopped. At most ``max_panels`` runs, worst
-    planners' first; with none failed, one panel says so."""
+    in a cross where it collided or stopped. At most ``max_panels`` runs, in run
+    order; with none failed, one panel says so."""
     failed = [run for run in runs if run.outcome != "success"]
     if not failed:
         fig, ax = plt.subplots(figsize=(6, 2))
