@@ -99,24 +99,29 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   return best;
 }
 
-}  // namespace
+// The static obstacles' distance bound at a point; +inf without either field.
+double point_lower_bound(const DistanceField* field, const DistanceField* sensed, const Vec2& p) {
+  double best = std::numeric_limits<double>::infinity();
+  if (field) best = field->lower_bound(p);
+  if (sensed) best = std::min(best, sensed->lower_bound(p));
+  return best;
+}
 
-namespace {
-// Every point of the footprint lies in one of its cover discs; a polygon's
-// clearance may also sit up to half the outline tolerance under the truth.
+// Every point of the footprint lies in one of its cover discs (a circle is its
+// own); a polygon's clearance may also sit up to half the outline tolerance
+// under the truth.
 double static_lower_bound(const DistanceField* field, const DistanceField* sensed, const Footprint& footprint,
                           const Pose2& pose) {
+  if (footprint.is_circle()) return point_lower_bound(field, sensed, pose.position()) - footprint.radius();
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   double best = std::numeric_limits<double>::infinity();
   for (const Footprint::CoverDisc& d : footprint.cover()) {
     const Vec2 p(pose.x + c * d.centre.x() - s * d.centre.y(), pose.y + s * d.centre.x() + c * d.centre.y());
-    double here = std::numeric_limits<double>::infinity();
-    if (field) here = field->lower_bound(p);
-    if (sensed) here = std::min(here, sensed->lower_bound(p));
-    best = std::min(best, here - d.radius);
+    best = std::min(best, point_lower_bound(field, sensed, p) - d.radius);
   }
-  return footprint.is_circle() ? best : best - 0.5 * kOutlineTolerance;
+  return best - 0.5 * kOutlineTolerance;
 }
+
 }  // namespace
 
 double FieldClearance::clearance_lower_bound(const Footprint& footprint, const Pose2& pose, double t) const {
@@ -134,11 +139,11 @@ void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Tr
   if (!footprint.is_circle()) {
     for (std::size_t k = 0; k < n; ++k) out[k] = static_lower_bound(field_.get(), sensed_.get(), footprint, poses[k]);
   } else {
-    if (field_) {
+    // One field at a time in tight loops: this runs for every pose of every rollout.
+    if (field_)
       for (std::size_t k = 0; k < n; ++k) out[k] = field_->lower_bound(poses[k].position()) - r;
-    } else {
+    else
       std::fill(out, out + n, std::numeric_limits<double>::infinity());
-    }
     if (sensed_)
       for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], sensed_->lower_bound(poses[k].position()) - r);
   }

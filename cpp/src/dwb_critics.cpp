@@ -14,14 +14,6 @@ namespace {
 constexpr double kInscribedCost = 253.0;
 constexpr double kInflatedCost = 252.0;
 
-double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  if (length2 == 0.0) return (p - a).norm();
-  const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
-
 // The part [t0, t1] of the segment a + t (b - a), t in [0, 1], inside the box
 // [lo, hi] (Liang-Barsky); false when it misses the box.
 bool clip_to_box(const Vec2& a, const Vec2& b, const Vec2& lo, const Vec2& hi, double& t0, double& t1) {
@@ -123,7 +115,7 @@ double polyline_distance(const std::vector<Vec2>& polyline, const Vec2& p) {
   if (polyline.size() == 1) return (p - polyline.front()).norm();
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
-    best = std::min(best, segment_distance(p, polyline[i], polyline[i + 1]));
+    best = std::min(best, point_segment_distance(p, polyline[i], polyline[i + 1]));
   return best;
 }
 

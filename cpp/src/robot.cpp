@@ -33,12 +33,6 @@ Footprint Footprint::circle(double radius) {
 
 namespace {
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
 }  // namespace
 
 Footprint Footprint::polygon(std::vector<Vec2> vertices) {

@@ -28,4 +28,7 @@ double wrap_angle(double angle);
 // Smallest signed difference a - b, in (-pi, pi].
 double angle_difference(double a, double b);
 
+// Distance from p to the segment a-b (to a when the segment is a point).
+double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b);
+
 }  // namespace fgdwa
