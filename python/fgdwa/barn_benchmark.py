@@ -121,7 +121,7 @@ class BarnRun:
     cells: np.ndarray  # (rows, cols) the world's grid
     extent: tuple  # (x0, x1, y0, y1) m, the grid's
     poses: np.ndarray  # (steps + 1, 3)
-    paths: list  # scan mode: (cycle, (n, 2) points) per global plan; known: [(0, path)]
+    paths: list  # (cycle, (n, 2) points) per global path followed
     scan_map: Optional[np.ndarray] = None  # scan mode: the robot's map at the end
 
     @property
@@ -260,10 +260,6 @@ def write_barn_outputs(runs: Sequence[BarnRun], out_dir, mapping: str, meta: Opt
     return summary
 
 
-def setup_dict(setup: BarnSetup) -> dict:
-    return dataclasses.asdict(setup)
-
-
 def _csv_value(value):
     if isinstance(value, float):
         return "" if math.isnan(value) else f"{value:.6g}"
@@ -292,7 +288,7 @@ def barn_command(args) -> int:
                     scheduler=args.scheduler, workers=args.workers, progress=not args.no_progress)
     wall = time.perf_counter() - tic
     meta = {"data": str(dataset.source), "worlds": world_ids, "trials": args.trials, "seed": args.seed,
-            "setup": setup_dict(BarnSetup()), "wall_time": wall}
+            "setup": dataclasses.asdict(BarnSetup()), "wall_time": wall}
     summary = write_barn_outputs(runs, args.out, args.mapping, meta, figure=not args.no_figures)
     print(format_summary(summary, args.mapping))
     print(f"{len(runs)} runs in {wall:.1f} s; wrote {Path(args.out) / 'runs.csv'}, summary.json"

@@ -20,6 +20,7 @@ does only this.
 
 from __future__ import annotations
 
+from collections import deque
 from dataclasses import dataclass
 from typing import Optional, Sequence
 
@@ -91,11 +92,11 @@ class ScanNavigator:
         self.backing_up = 0  # cycles of backing up left
         self.scanning = True
         self.path: Optional[GlobalPath] = None
-        self.paths: list = []  # every path planned, in order: (cycle, (n, 2) points)
-        self.failed_plans = 0
+        self.paths: list = []  # every path followed, in order: (cycle, (n, 2) points)
         self.stalls = 0
         self._closed = np.zeros((layout.rows, layout.cols), dtype=np.uint8)  # given-up cells
-        self._recent: list = []  # positions of the last stall_cycles cycles
+        # Positions of the last stall_cycles + 1 cycles: the oldest is stall_cycles ago.
+        self._recent = deque(maxlen=None if stall_cycles is None else int(stall_cycles) + 1)
         self._last_plan_cycle: Optional[int] = None
         self._replan_now = False
 
@@ -111,10 +112,11 @@ class ScanNavigator:
         navigator.scanning = False
         return navigator
 
-    @property
-    def replans(self) -> int:
-        """Paths planned after the first."""
-        return max(0, len(self.paths) - 1)
+    def follow(self, path: Optional[GlobalPath], cycle: int = 0) -> None:
+        """Take ``path`` (planned elsewhere, e.g. on the known map) as the one to keep."""
+        self.path = path
+        if path is not None:
+            self.paths.append((cycle, path.points))
 
     def update(self, scan: Optional[Scan], position, cycle: int) -> ScanUpdate:
         """Integrate this cycle's scan taken at ``position`` and replan if needed."""
@@ -127,12 +129,14 @@ class ScanNavigator:
                 self._give_up_ahead(position)
                 self.backing_up = self.backup_cycles
                 self._replan_now = True
-            if self.backing_up == 0 and self._replan_now:
-                new_path = self._plan(position, cycle)
-            elif self.backing_up == 0 and self._due(cycle) and (self.path is None or (
-                    field is not None and path_blocked(self.path, position, field, self.blocked_clearance))):
+            if self.backing_up == 0 and (self._replan_now or (self._due(cycle) and self._blocked(position, field))):
                 new_path = self._plan(position, cycle)
         return ScanUpdate(new_cells, field, new_path)
+
+    def _blocked(self, position: np.ndarray, field: Optional[DistanceField]) -> bool:
+        if self.path is None:
+            return True
+        return field is not None and path_blocked(self.path, position, field, self.blocked_clearance)
 
     def backed_up(self, done: bool) -> None:
         """The loop's report after a cycle of backing up; ``done`` ends it early
@@ -144,10 +148,7 @@ class ScanNavigator:
         if self.stall_cycles is None or self.path is None:
             return False
         self._recent.append(position)
-        if len(self._recent) <= self.stall_cycles:
-            return False
-        oldest = self._recent.pop(0)
-        if np.hypot(*(position - oldest)) >= self.stall_distance:
+        if len(self._recent) < self._recent.maxlen or np.hypot(*(position - self._recent[0])) >= self.stall_distance:
             return False
         self._recent.clear()
         self.stalls += 1
@@ -182,8 +183,6 @@ class ScanNavigator:
             except FgdwaError:  # start or goal cell marked occupied: no way from here on this map
                 continue
             if plan.status == GlobalStatus.Found:
-                self.path = GlobalPath(np.asarray(plan.path, dtype=float))
-                self.paths.append((cycle, self.path.points))
+                self.follow(GlobalPath(np.asarray(plan.path, dtype=float)), cycle)
                 return self.path
-        self.failed_plans += 1
         return None

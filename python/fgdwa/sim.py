@@ -78,7 +78,7 @@ class EpisodeResult:
     last_scan: Optional[object] = None  # the last cycle's Scan, when sensing
     mapping: str = "known"  # "known": the planners had the map; "scan": they had the robot's own map
     scan_map: Optional[np.ndarray] = None  # (rows, cols) the robot's map at the end, with mapping="scan"
-    paths: list = field(default_factory=list)  # with mapping="scan": (cycle, (n, 2) points) per global plan
+    paths: list = field(default_factory=list)  # with a navigator (scan, stall_cycles): (cycle, (n, 2) points) per path followed
 
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
@@ -245,7 +245,7 @@ def run_episode(
         if stall_cycles is not None and follows_path and world.grid is not None:
             navigator = ScanNavigator.with_map(world.grid, goal_point, radii, footprint.inscribed_radius, **options)
     if navigator is not None:
-        navigator.path = path
+        navigator.follow(path)
     if path is not None:
         controller.set_global_path(path)
 

@@ -192,3 +192,25 @@ def test_stalled_robot_gives_up_the_path_ahead_and_backs_up():
     # The new path leaves the straight line where the robot gave up.
     points = replanned.points
     assert np.max(np.abs(points[:, 1] - 1.5)) > 0.1
+
+
+def test_navigator_and_episode_reject_bad_settings():
+    grid = _wall_world()
+    for options, name in ((dict(replan_interval=0), "replan_interval"), (dict(stall_cycles=0), "stall_cycles"),
+                          (dict(backup_cycles=-1), "backup_cycles"), (dict(backup_speed=float("nan")), "backup_speed"),
+                          (dict(give_up_length=-0.1), "give_up_length")):
+        with pytest.raises(FgdwaError, match=name):
+            ScanNavigator(grid, (5.5, 1.0), [0.3], 0.2, **options)
+    with pytest.raises(FgdwaError, match="inflation_radii"):
+        ScanNavigator(grid, (5.5, 1.0), [], 0.2)
+    with pytest.raises(FgdwaError, match="blocked_clearance"):
+        ScanNavigator(grid, (5.5, 1.0), [0.3], -1.0)
+    with pytest.raises(FgdwaError, match="points"):
+        fgdwa.ScanMap(grid).mark(np.zeros((3, 3)))
+    from fgdwa.sim import run_episode
+    from fgdwa.world import World
+
+    with pytest.raises(FgdwaError, match="mapping"):
+        run_episode(World(grid=grid), (0.5, 1.0, 0.0), (5.5, 1.0), mapping="lidar")
+    with pytest.raises(FgdwaError, match="needs a grid"):
+        run_episode(World(), (0.5, 1.0, 0.0), (5.5, 1.0), mapping="scan")
