@@ -193,28 +193,42 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
 }
 
 namespace {
-// One step of the motion model turns in place by omega dt, then drives straight
-// to the next pose. Whether the footprint stays clear along a piece of it,
-// given the clearances c0 and c1 at its ends: no footprint point moves more
-// than `sweep` over the piece and the clearance changes no faster than the
-// footprint moves, so a piece with c0 + c1 above its sweep is clear; others are
-// halved until they are, down to a millimetre. `pose(f)`, f in [0, 1], walks the piece.
+// Whether a move of `length` is clear given the clearances c0, c1 > 0 at its
+// ends. A footprint point whose obstacle distance is c0 and c1 at the ends of
+// a straight move stays clear if the open discs of those radii around the ends
+// cover the segment: c0 + c1 > length. A disc footprint of radius rho does
+// better: its swept capsule lies in the obstacle-free discs of radius rho + c0
+// and rho + c1 around the end centres when
+// sqrt(c0 (2 rho + c0)) + sqrt(c1 (2 rho + c1)) > length (each term is how far
+// the capsule's edge, rho from its axis, stays inside one disc). rho = 0: a point.
+bool ends_cover(double c0, double c1, double rho, double length) {
+  if (c0 + c1 > length) return true;
+  return rho > 0.0 && std::sqrt(c0 * (2.0 * rho + c0)) + std::sqrt(c1 * (2.0 * rho + c1)) > length;
+}
+
+// Whether the footprint stays clear along one piece of a step, given the
+// clearances c0 and c1 at its ends. No footprint point moves more than
+// `sweep` over the piece; `rho` is the disc radius for a disc footprint
+// driving straight, 0 otherwise (ends_cover). Pieces the ends do not cover are
+// halved until they are, down to a millimetre. `pose(f)`, f in
+// [0, 1], walks the piece.
 template <typename PoseAt>
 bool clear_along(const ClearanceSource& world, const Footprint& footprint, const PoseAt& pose, double t0, double dt,
-                 double f0, double c0, double f1, double c1, double sweep, double margin) {
+                 double f0, double c0, double f1, double c1, double sweep, double rho, double margin) {
   if (c0 <= 0.0 || c1 <= 0.0) return false;
   const double piece = (f1 - f0) * sweep;
-  if (c0 + c1 > piece) return true;
+  if (ends_cover(c0, c1, rho, piece)) return true;
   if (piece < 1e-3) return false;
   const double fm = 0.5 * (f0 + f1);
   const double cm = world.clearance(footprint, pose(fm), t0 + fm * dt) - margin;
-  return clear_along(world, footprint, pose, t0, dt, f0, c0, fm, cm, sweep, margin) &&
-         clear_along(world, footprint, pose, t0, dt, fm, cm, f1, c1, sweep, margin);
+  return clear_along(world, footprint, pose, t0, dt, f0, c0, fm, cm, sweep, rho, margin) &&
+         clear_along(world, footprint, pose, t0, dt, fm, cm, f1, c1, sweep, rho, margin);
 }
 
 // The step from `from` (clearance c0, at time t0) to `to` (clearance c1): the
 // turn in place, for a footprint that is not a circle, then the straight drive.
-// Clearances count from the safety margin.
+// Clearances count from the safety margin, so a circle covers as a disc of its
+// radius plus the margin.
 bool step_clear(const ClearanceSource& world, const Footprint& footprint, const Pose2& from, double c0, const Pose2& to,
                 double c1, double t0, double dt, double margin) {
   Pose2 turned{from.x, from.y, to.theta};
@@ -224,14 +238,15 @@ bool step_clear(const ClearanceSource& world, const Footprint& footprint, const 
     c_turned = world.clearance(footprint, turned, t0) - margin;
     const auto turning = [&](double f) { return Pose2{from.x, from.y, from.theta + f * turn}; };
     if (!clear_along(world, footprint, turning, t0, 0.0, 0.0, c0, 1.0, c_turned, footprint.radius() * std::abs(turn),
-                     margin))
+                     0.0, margin))
       return false;
   }
   const auto driving = [&](double f) {
     return Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta};
   };
   const double dx = to.x - from.x, dy = to.y - from.y;
-  return clear_along(world, footprint, driving, t0, dt, 0.0, c_turned, 1.0, c1, std::sqrt(dx * dx + dy * dy),
+  const double rho = footprint.is_circle() ? footprint.radius() + margin : 0.0;
+  return clear_along(world, footprint, driving, t0, dt, 0.0, c_turned, 1.0, c1, std::sqrt(dx * dx + dy * dy), rho,
                      margin);
 }
 }  // namespace
@@ -254,19 +269,20 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const double margin = std::clamp(clearance_now - 1e-3, 0.0, params_.safety_margin);
   const double start_clearance = clearance_now - margin;
   const double turn_reach = footprint_.is_circle() ? 0.0 : footprint_.radius();
+  // Clearances count from the margin: a circle sweeps as a disc of its radius plus the margin.
+  const double rho = footprint_.is_circle() ? footprint_.radius() + margin : 0.0;
   bounds_.resize(static_cast<std::size_t>(n_steps_));
   exact_.resize(static_cast<std::size_t>(n_steps_));
   const double cos_start = std::cos(state.pose.theta), sin_start = std::sin(state.pose.theta);
-  // Samples come v-major: the turns of the first row serve every row.
+  // Samples come v-major: the headings of the first row serve every row.
   const std::size_t n_omega = static_cast<std::size_t>(params_.window.n_omega);
-  turns_.clear();
-  for (std::size_t j = 0; j < std::min(n_omega, n); ++j) {
-    turns_.emplace_back(result_.samples[j].omega, params_.dt);
-  }
+  headings_.resize(std::min(n_omega, n));
+  for (std::size_t j = 0; j < headings_.size(); ++j)
+    headings_[j].assign(state.pose.theta, cos_start, sin_start, result_.samples[j].omega, params_.dt, n_steps_);
   for (std::size_t i = 0; i < n; ++i) {
     const Twist& cmd = result_.samples[i];
     Trajectory& poses = rollouts_[i];
-    rollout(state.pose, cos_start, sin_start, cmd.v * params_.dt, turns_[i % n_omega], n_steps_, poses);
+    rollout(state.pose, cmd.v * params_.dt, headings_[i % n_omega], poses);
     // Farthest any footprint point moves per step: the turn, then the drive.
     const double sweep_per_step = cmd.v * params_.dt + turn_reach * std::abs(cmd.omega) * params_.dt;
     // Cheap lower bounds first; exact clearances only where a bound cannot
@@ -287,12 +303,19 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       const double bound = bounds_[static_cast<std::size_t>(k)];
       const double previous_bound = k == 0 ? start_clearance : bounds_[static_cast<std::size_t>(k - 1)];
       const bool leaving_contact = k == 0 && start_clearance <= 0.0;
-      if (bound > 0.0 && (leaving_contact || (previous_bound > 0.0 && previous_bound + bound > sweep_per_step)))
+      if (bound > 0.0 &&
+          (leaving_contact || (previous_bound > 0.0 && ends_cover(previous_bound, bound, rho, sweep_per_step))))
         continue;  // clear at pose k and on the way there
       const double c = exact(k);
-      const double previous = k == 0 ? start_clearance : exact(k - 1);
+      if (c > 0.0 && !leaving_contact) {
+        // The previous pose's bound, or its clearance if known, may already settle the step.
+        const double known = k == 0 ? start_clearance : exact_[static_cast<std::size_t>(k - 1)];
+        const double previous_low = std::isnan(known) ? previous_bound : known;
+        if (previous_low > 0.0 && ends_cover(previous_low, c, rho, sweep_per_step)) continue;
+      }
       const Pose2& from = k == 0 ? state.pose : poses[static_cast<std::size_t>(k - 1)];
-      const bool clear = c > 0.0 && (leaving_contact || step_clear(world, footprint_, from, previous,
+      const bool clear = c > 0.0 && (leaving_contact || step_clear(world, footprint_, from,
+                                                                   k == 0 ? start_clearance : exact(k - 1),
                                                                    poses[static_cast<std::size_t>(k)], c,
                                                                    k * params_.dt, params_.dt, margin));
       if (!clear) {

@@ -111,32 +111,47 @@ Pose2 step(const Pose2& pose, const Twist& twist, double dt) {
   return next;
 }
 
-RolloutTurn::RolloutTurn(double omega, double dt)
-    : turn(wrap_angle(omega * dt)), cos_turn(std::cos(omega * dt)), sin_turn(std::sin(omega * dt)) {}
-
-void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out) {
-  rollout(start, std::cos(start.theta), std::sin(start.theta), twist.v * dt, RolloutTurn(twist.omega, dt), n_steps,
-          out);
+RolloutHeadings::RolloutHeadings(double start_theta, double cos_start, double sin_start, double omega, double dt,
+                                 int n_steps) {
+  assign(start_theta, cos_start, sin_start, omega, dt, n_steps);
 }
 
-void rollout(const Pose2& start, double cos_start, double sin_start, double step_length, const RolloutTurn& turn,
-             int n_steps, Trajectory& out) {
-  out.resize(static_cast<size_t>(std::max(n_steps, 0)));
+void RolloutHeadings::assign(double start_theta, double cos_start, double sin_start, double omega, double dt,
+                             int n_steps) {
+  const std::size_t n = static_cast<std::size_t>(std::max(n_steps, 0));
+  theta.resize(n);
+  cos.resize(n);
+  sin.resize(n);
   // The heading turns by the same angle every step, so its cosine and sine are
   // advanced by a rotation instead of one sin/cos pair per pose.
-  const double cos_turn = turn.cos_turn, sin_turn = turn.sin_turn, wrapped_turn = turn.turn;
-  double c = cos_start, s = sin_start;
-  double x = start.x, y = start.y, theta = wrap_angle(start.theta);
-  for (int k = 0; k < n_steps; ++k) {
+  const double cos_turn = std::cos(omega * dt), sin_turn = std::sin(omega * dt), turn = wrap_angle(omega * dt);
+  double c = cos_start, s = sin_start, heading = wrap_angle(start_theta);
+  for (std::size_t k = 0; k < n; ++k) {
     const double c_next = c * cos_turn - s * sin_turn;
     s = s * cos_turn + c * sin_turn;
     c = c_next;
-    x += step_length * c;
-    y += step_length * s;
-    theta += wrapped_turn;
-    if (theta > M_PI) theta -= 2.0 * M_PI;
-    else if (theta <= -M_PI) theta += 2.0 * M_PI;
-    out[static_cast<size_t>(k)] = Pose2{x, y, theta};
+    heading += turn;
+    if (heading > M_PI) heading -= 2.0 * M_PI;
+    else if (heading <= -M_PI) heading += 2.0 * M_PI;
+    theta[k] = heading;
+    cos[k] = c;
+    sin[k] = s;
+  }
+}
+
+void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out) {
+  rollout(start, twist.v * dt,
+          RolloutHeadings(start.theta, std::cos(start.theta), std::sin(start.theta), twist.omega, dt, n_steps), out);
+}
+
+void rollout(const Pose2& start, double step_length, const RolloutHeadings& headings, Trajectory& out) {
+  const std::size_t n = headings.theta.size();
+  out.resize(n);
+  double x = start.x, y = start.y;
+  for (std::size_t k = 0; k < n; ++k) {
+    x += step_length * headings.cos[k];
+    y += step_length * headings.sin[k];
+    out[k] = Pose2{x, y, headings.theta[k]};
   }
 }
 

@@ -231,6 +231,96 @@ TEST(LocalPlanner, AdmissibleSamplesStopBeforeContactFcl) {
   check_admissible_samples_can_stop(RobotLimits{}, Footprint::circle(0.25), true, 4, 3, WindowParams{7, 7}, 0.01);
 }
 
+// A sample's free distance is k v dt for the first step k whose motion (the
+// turn in place, then the straight drive) brings the footprint within the
+// safety margin of an obstacle, checked here by brute force every `h` metres
+// of the drives and every `h` radians of the turns. Samples whose closest
+// approach lies within `band` of the margin are left out: there the planner's
+// millimetre resolution and the sampling may rightly disagree. Long steps
+// (0.3 s) among scattered posts make contact between two clear poses common.
+struct TouchCounts {
+  int touching = 0, clear = 0, between = 0;
+};
+
+TouchCounts check_free_distance_is_first_touching_step(const Footprint& fp, unsigned seeds, double h, double band) {
+  const RobotLimits limits;
+  PlannerParams params;
+  params.dt = 0.3;
+  params.window = WindowParams{11, 11};
+  LocalPlanner planner(limits, fp, params);
+  const double dt = params.dt;
+  // Clearance beyond the safety margin.
+  const auto beyond_margin = [&](const ClearanceSource& world, const Pose2& pose) {
+    return world.clearance(fp, pose, 0.0) - params.safety_margin;
+  };
+  TouchCounts n;
+  for (unsigned seed = 1; seed <= seeds; ++seed) {
+    std::mt19937 rng(700 + seed);
+    const Vec2 start(0.0, 0.0);
+    // Scattered 2 cm posts: rollouts graze them as often as they run into them.
+    const OccupancyGrid grid =
+        test::random_rectangles(rng, 400, 400, 0.02, Vec2(-4.0, -4.0), 0.004, 1, start, fp.radius() + 0.05);
+    const FieldClearance world(std::make_shared<const DistanceField>(grid));
+    for (int trial = 0; trial < 6; ++trial) {
+      RobotState state = random_state(rng, limits, start);
+      if (trial % 2 == 0) state.twist.v = limits.v_max;  // long steps
+      if (beyond_margin(world, state.pose) <= 1e-3) continue;  // keeps the margin whole
+      const PlanResult& r = planner.plan(state, random_goal(rng), world);
+      for (std::size_t i = 0; i < r.samples.size(); ++i) {
+        const Trajectory& poses = planner.rollouts()[i];
+        int first_touch = -1;
+        bool ambiguous = false, ends_clear = false;
+        for (std::size_t k = 0; k < poses.size() && first_touch < 0; ++k) {
+          const Pose2& from = k == 0 ? state.pose : poses[k - 1];
+          const Pose2& to = poses[k];
+          double worst = beyond_margin(world, to);
+          ends_clear = worst > 0.0;
+          const double turn = angle_difference(to.theta, from.theta);
+          const int turn_pieces = fp.is_circle() ? 0 : static_cast<int>(std::ceil(std::abs(turn) / h));
+          for (int j = 1; j <= turn_pieces; ++j)
+            worst = std::min(worst, beyond_margin(world, Pose2{from.x, from.y, from.theta + turn * j / turn_pieces}));
+          const double length = std::hypot(to.x - from.x, to.y - from.y);
+          const int pieces = std::max(1, static_cast<int>(std::ceil(length / h)));
+          for (int j = 1; j < pieces; ++j) {
+            const double f = double(j) / pieces;
+            worst = std::min(
+                worst, beyond_margin(world, Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta}));
+          }
+          if (std::abs(worst) < band) ambiguous = true;
+          if (worst <= 0.0) first_touch = static_cast<int>(k);
+        }
+        if (ambiguous) continue;
+        const Twist& cmd = r.samples[i];
+        SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial << " sample " << cmd.v << ", "
+                                          << cmd.omega);
+        if (first_touch < 0) {
+          ++n.clear;
+          EXPECT_TRUE(std::isinf(r.free_distance[i])) << r.free_distance[i];
+        } else {
+          ++n.touching;
+          n.between += ends_clear;  // both ends of the touching step clear: only the sweep shows contact
+          EXPECT_NEAR(r.free_distance[i], first_touch * cmd.v * dt, 1e-12);
+        }
+      }
+    }
+  }
+  return n;
+}
+
+TEST(LocalPlanner, FreeDistanceIsTheFirstTouchingStepCircle) {
+  const TouchCounts n = check_free_distance_is_first_touching_step(Footprint::circle(0.25), 6, 0.002, 0.004);
+  EXPECT_GT(n.touching, 1000);
+  EXPECT_GT(n.clear, 50);
+  EXPECT_GT(n.between, 20);  // the sweep between poses is what decides these
+}
+
+TEST(LocalPlanner, FreeDistanceIsTheFirstTouchingStepPolygon) {
+  const TouchCounts n = check_free_distance_is_first_touching_step(
+      Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}}), 3, 0.003, 0.005);
+  EXPECT_GT(n.touching, 500);
+  EXPECT_GT(n.clear, 20);
+}
+
 // Fast, straight at a wall 0.25 m beyond the footprint: no command in the
 // window can stop in time.
 TEST(LocalPlanner, BoxedInReportsNoAdmissibleVelocityAndBrakes) {

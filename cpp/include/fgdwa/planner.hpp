@@ -134,7 +134,7 @@ class LocalPlanner {
   std::vector<std::unique_ptr<Critic>> critics_;
   std::vector<Trajectory> rollouts_;
   std::vector<double> bounds_, exact_;
-  std::vector<RolloutTurn> turns_;  // per omega of the window
+  std::vector<RolloutHeadings> headings_;  // per omega of the window
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;

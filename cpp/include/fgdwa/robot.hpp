@@ -75,17 +75,18 @@ Pose2 step(const Pose2& pose, const Twist& twist, double dt);
 void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out);
 Trajectory rollout(const Pose2& start, const Twist& twist, double dt, int n_steps);
 
-// The turn of one step, omega dt, with its cosine and sine: shared by every
-// command of a window with the same omega.
-struct RolloutTurn {
-  RolloutTurn(double omega, double dt);
-  double turn;  // rad per step, wrapped
-  double cos_turn, sin_turn;
+// The headings of a rollout, pose by pose, with their cosines and sines: they
+// depend on the start heading and omega only, so every command of a window
+// with the same omega shares them.
+struct RolloutHeadings {
+  RolloutHeadings() = default;
+  RolloutHeadings(double start_theta, double cos_start, double sin_start, double omega, double dt, int n_steps);
+  // Recomputes them in place, reusing the storage.
+  void assign(double start_theta, double cos_start, double sin_start, double omega, double dt, int n_steps);
+  std::vector<double> theta, cos, sin;  // per pose; theta wrapped to (-pi, pi]
 };
 
-// The same rollout with the trigonometry given: (cos, sin) of the start heading,
-// the step length v dt and the turn per step.
-void rollout(const Pose2& start, double cos_start, double sin_start, double step_length, const RolloutTurn& turn,
-             int n_steps, Trajectory& out);
+// The same rollout with the headings given and the step length v dt.
+void rollout(const Pose2& start, double step_length, const RolloutHeadings& headings, Trajectory& out);
 
 }  // namespace fgdwa
