@@ -194,6 +194,15 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
       candidate_start_[grid.index(r, c) + 1] = candidates_.size();
     }
 
+  cell_candidates_.resize(n_cells);
+  for (std::size_t i = 0; i < n_cells; ++i) {
+    const std::size_t begin = candidate_start_[i], end = candidate_start_[i + 1];
+    const Vec2 a = end > begin ? candidates_[begin] : Vec2(kInf, kInf);
+    const Vec2 b = end > begin + 1 ? candidates_[begin + 1] : a;
+    cell_candidates_[i] = CellCandidates{a.x(), a.y(), b.x(), b.y(), static_cast<std::uint32_t>(std::min(begin + 2, end)),
+                                         static_cast<std::uint32_t>(end)};
+  }
+
   row_first_.assign(rows, -1);
   row_last_.assign(rows, -1);
   col_first_.assign(cols, -1);
@@ -234,8 +243,9 @@ double DistanceField::distance(const Vec2& p) const {
   } else {
     // Inside the grid (its far edges included): the candidates of p's cell.
     const std::size_t cell = grid_.index(std::min(static_cast<int>(gy), rows - 1), std::min(static_cast<int>(gx), cols - 1));
-    for (std::size_t k = candidate_start_[cell]; k < candidate_start_[cell + 1]; ++k)
-      best = std::min(best, square_distance(candidates_[k]));
+    const CellCandidates& near = cell_candidates_[cell];
+    best = std::min(square_distance(Vec2(near.x0, near.y0)), square_distance(Vec2(near.x1, near.y1)));
+    for (std::size_t k = near.more_begin; k < near.more_end; ++k) best = std::min(best, square_distance(candidates_[k]));
   }
   return std::sqrt(best);
 }

@@ -203,7 +203,10 @@ namespace {
 // the capsule's edge, rho from its axis, stays inside one disc). rho = 0: a point.
 bool ends_cover(double c0, double c1, double rho, double length) {
   if (c0 + c1 > length) return true;
-  return rho > 0.0 && std::sqrt(c0 * (2.0 * rho + c0)) + std::sqrt(c1 * (2.0 * rho + c1)) > length;
+  if (rho <= 0.0) return false;
+  const double a0 = c0 * (2.0 * rho + c0), a1 = c1 * (2.0 * rho + c1);  // the terms squared
+  // (sqrt(a0) + sqrt(a1))^2 >= a0 + a1: most steps pass without a square root.
+  return a0 + a1 > length * length || std::sqrt(a0) + std::sqrt(a1) > length;
 }
 
 // Whether the footprint stays clear along one piece of a step, given the
@@ -289,7 +292,6 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     // settle contact or the minimum. The result is the same as evaluating
     // every pose exactly.
     world.clearance_lower_bounds(footprint_, poses, params_.dt, bounds_.data());
-    for (double& bound : bounds_) bound -= margin;
     std::fill(exact_.begin(), exact_.end(), std::numeric_limits<double>::quiet_NaN());
     const auto exact = [&](int k) {
       double& c = exact_[static_cast<std::size_t>(k)];
@@ -300,8 +302,9 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     double free_distance = inf;
     int last = n_steps_ - 1;  // the last pose reached: the first in contact, or the end
     for (int k = 0; k < n_steps_; ++k) {
-      const double bound = bounds_[static_cast<std::size_t>(k)];
-      const double previous_bound = k == 0 ? start_clearance : bounds_[static_cast<std::size_t>(k - 1)];
+      // Bounds and clearances count from the margin.
+      const double bound = bounds_[static_cast<std::size_t>(k)] - margin;
+      const double previous_bound = k == 0 ? start_clearance : bounds_[static_cast<std::size_t>(k - 1)] - margin;
       const bool leaving_contact = k == 0 && start_clearance <= 0.0;
       if (bound > 0.0 &&
           (leaving_contact || (previous_bound > 0.0 && ends_cover(previous_bound, bound, rho, sweep_per_step))))
@@ -328,11 +331,15 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     // The smallest clearance over poses 0..last: start from the pose with the
     // smallest bound, then visit only poses whose bound is below the best so far.
     int first_guess = 0;
-    for (int k = 1; k <= last; ++k)
-      if (bounds_[static_cast<std::size_t>(k)] < bounds_[static_cast<std::size_t>(first_guess)]) first_guess = k;
+    double lowest = bounds_[0];
+    for (int k = 1; k <= last; ++k) {
+      const double b = bounds_[static_cast<std::size_t>(k)];
+      first_guess = b < lowest ? k : first_guess;
+      lowest = std::min(b, lowest);
+    }
     double min_clearance = exact(first_guess);
     for (int k = 0; k <= last; ++k)
-      if (bounds_[static_cast<std::size_t>(k)] < min_clearance) min_clearance = std::min(min_clearance, exact(k));
+      if (bounds_[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = std::min(min_clearance, exact(k));
     result_.min_clearance[i] = min_clearance + margin;
     result_.free_distance[i] = free_distance;
     result_.reasons[i] = is_admissible(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;

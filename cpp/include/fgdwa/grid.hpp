@@ -104,6 +104,14 @@ class DistanceField {
   // (compressed rows: cell i owns candidates_[candidate_start_[i] .. candidate_start_[i + 1])).
   std::vector<std::size_t> candidate_start_;
   std::vector<Vec2> candidates_;
+  // The same, laid out for distance(): per cell its first two candidates (the
+  // first twice if it has one) beside the range of any others, so most
+  // look-ups read one record and run no loop.
+  struct CellCandidates {
+    double x0, y0, x1, y1;
+    std::uint32_t more_begin, more_end;
+  };
+  std::vector<CellCandidates> cell_candidates_;
   // Outermost occupied column of each row and row of each column, -1 for none.
   std::vector<int> row_first_, row_last_, col_first_, col_last_;
   // Per quarter cell (rows and columns of half a cell): its distance to the
