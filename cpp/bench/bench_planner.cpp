@@ -3,7 +3,7 @@
 // in seeded random rectangles, a circle footprint of 0.25 m, the robot cruising
 // at 0.6 m/s from 32 seeded starts in free space. LocalPlanner::plan is timed
 // with each clearance source: the distance field (FieldClearance) and the exact
-// FCL world (CollisionWorld).
+// FCL world (CollisionWorld); and with the field for the Jackal's rectangle.
 //
 //   build/cpp/cpp/bench/bench_planner   (median of 10 repetitions, in microseconds;
 //   the target for the field variant is 100 us)
@@ -34,9 +34,10 @@ struct Scene {
   DistanceField field{grid};
   std::vector<RobotState> states;
   std::vector<Vec2> goals;
-  LocalPlanner planner{RobotLimits{}, Footprint::circle(0.25), PlannerParams{}};  // 21 x 21, dt 0.15, 3 s
+  LocalPlanner planner;  // 21 x 21, dt 0.15, 3 s
 
-  Scene() {
+  explicit Scene(const Footprint& footprint = Footprint::circle(0.25))
+      : planner(RobotLimits{}, footprint, PlannerParams{}) {
     std::uniform_real_distribution<double> where(0.5, 9.5), jitter(-0.5, 0.5);
     while (static_cast<int>(states.size()) < kStarts) {
       const Vec2 start(where(rng), where(rng)), goal(where(rng), where(rng));
@@ -69,6 +70,14 @@ void BM_PlanFieldClearance(benchmark::State& bench) {
   plan_cycles(bench, scene, world);
 }
 
+// The same cycle for a rectangle: the Jackal's 0.42 m x 0.33 m (robot preset
+// "jackal", the BARN robot), with the default limits.
+void BM_PlanFieldClearanceJackal(benchmark::State& bench) {
+  Scene scene(Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}}));
+  const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
+  plan_cycles(bench, scene, world);
+}
+
 void BM_PlanCollisionWorld(benchmark::State& bench) {
   Scene scene;
   const CollisionWorld world(scene.grid);
@@ -89,6 +98,7 @@ void BM_BuildCollisionWorld(benchmark::State& bench) {
 // Argument: how many starts the cycles go through (1: a single start, as a
 // robot sees cycle after cycle; 32: a spread of situations).
 BENCHMARK(BM_PlanFieldClearance)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PlanFieldClearanceJackal)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanCollisionWorld)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_BuildDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_BuildCollisionWorld)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);

@@ -193,64 +193,88 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
 }
 
 namespace {
-// Whether a move of `length` is clear given the clearances c0, c1 > 0 at its
-// ends. A footprint point whose obstacle distance is c0 and c1 at the ends of
-// a straight move stays clear if the open discs of those radii around the ends
-// cover the segment: c0 + c1 > length. A disc footprint of radius rho does
-// better: its swept capsule lies in the obstacle-free discs of radius rho + c0
-// and rho + c1 around the end centres when
-// sqrt(c0 (2 rho + c0)) + sqrt(c1 (2 rho + c1)) > length (each term is how far
-// the capsule's edge, rho from its axis, stays inside one disc). rho = 0: a point.
-bool ends_cover(double c0, double c1, double rho, double length) {
-  if (c0 + c1 > length) return true;
-  if (rho <= 0.0) return false;
-  const double a0 = c0 * (2.0 * rho + c0), a1 = c1 * (2.0 * rho + c1);  // the terms squared
-  // (sqrt(a0) + sqrt(a1))^2 >= a0 + a1: most steps pass without a square root.
-  return a0 + a1 > length * length || std::sqrt(a0) + std::sqrt(a1) > length;
-}
+// How one step of a rollout moves the footprint and what its end clearances
+// alone can settle. The step turns in place by `turn` (rad), which moves no
+// footprint point farther than `turn_reach`, then drives `drive` metres
+// straight along the new heading. Clearances count from the safety margin.
+struct StepSweep {
+  double turn_reach = 0.0;  // m, 0 for a circle, whose turns move nothing
+  double drive = 0.0;       // m
+  double rho = 0.0;         // m, a circle's radius plus the margin; 0 for a polygon
+  double chord = 0.0;       // m, the polygon's Footprint::heading_chord(); 0 for a circle
 
-// Whether the footprint stays clear along one piece of a step, given the
-// clearances c0 and c1 at its ends. No footprint point moves more than
-// `sweep` over the piece; `rho` is the disc radius for a disc footprint
-// driving straight, 0 otherwise (ends_cover). Pieces the ends do not cover are
-// halved until they are, down to a millimetre. `pose(f)`, f in
-// [0, 1], walks the piece.
+  StepSweep(const Footprint& footprint, double margin, double turn, double drive_length)
+      : turn_reach(footprint.is_circle() ? 0.0 : footprint.radius() * std::abs(wrap_angle(turn))),
+        drive(drive_length),
+        rho(footprint.is_circle() ? footprint.radius() + margin : 0.0),
+        chord(footprint.is_circle() ? 0.0 : footprint.heading_chord()) {}
+
+  // Whether a straight drive of `length` between placements of clearance c0 and
+  // c1 > 0 is clear. Each footprint point's path lies in the open discs of radii
+  // c0 and c1 around its ends when c0 + c1 > length. A polygon does better: any
+  // point of its sweep lies in one of the two placements, or within
+  // length - chord of one along the heading. A disc of radius rho does better
+  // still: its swept capsule lies in the obstacle-free discs of radius rho + c0
+  // and rho + c1 around the end centres when
+  // sqrt(c0 (2 rho + c0)) + sqrt(c1 (2 rho + c1)) > length (each term is how far
+  // the capsule's edge, rho from its axis, stays inside one disc).
+  bool drive_covered(double c0, double c1, double length) const {
+    if (c0 + c1 > length - chord) return true;
+    if (rho <= 0.0) return false;
+    const double a0 = c0 * (2.0 * rho + c0), a1 = c1 * (2.0 * rho + c1);  // the terms squared
+    // (sqrt(a0) + sqrt(a1))^2 >= a0 + a1: most steps pass without a square root.
+    return a0 + a1 > length * length || std::sqrt(a0) + std::sqrt(a1) > length;
+  }
+
+  // Whether the whole step, turn and drive, is clear given the clearances c0
+  // before it and c1 after it. The turned placement's clearance is at least
+  // c0 - turn_reach and at least c1 - drive: each footprint point moves no
+  // farther than that between them.
+  bool covered(double c0, double c1) const {
+    if (c0 <= 0.0 || c1 <= 0.0) return false;
+    if (turn_reach == 0.0) return drive_covered(c0, c1, drive);
+    const double turned = std::max(c0 - turn_reach, c1 - drive);
+    return turned > 0.0 && c0 + turned > turn_reach && drive_covered(turned, c1, drive);
+  }
+};
+
+// Whether the footprint stays clear along one piece of a turn (straight =
+// false: `sweep` is the turn's reach) or of a drive (straight: `sweep` is its
+// length), given the clearances c0 and c1 at the piece's ends. Pieces the ends
+// do not settle are halved until they do, down to a millimetre. `pose(f)`,
+// f in [0, 1], walks the piece.
 template <typename PoseAt>
-bool clear_along(const ClearanceSource& world, const Footprint& footprint, const PoseAt& pose, double t0, double dt,
-                 double f0, double c0, double f1, double c1, double sweep, double rho, double margin) {
+bool clear_along(const ClearanceSource& world, const Footprint& footprint, const StepSweep& step, bool straight,
+                 const PoseAt& pose, double t0, double dt, double f0, double c0, double f1, double c1, double sweep,
+                 double margin) {
   if (c0 <= 0.0 || c1 <= 0.0) return false;
   const double piece = (f1 - f0) * sweep;
-  if (ends_cover(c0, c1, rho, piece)) return true;
+  if (straight ? step.drive_covered(c0, c1, piece) : c0 + c1 > piece) return true;
   if (piece < 1e-3) return false;
   const double fm = 0.5 * (f0 + f1);
   const double cm = world.clearance(footprint, pose(fm), t0 + fm * dt) - margin;
-  return clear_along(world, footprint, pose, t0, dt, f0, c0, fm, cm, sweep, rho, margin) &&
-         clear_along(world, footprint, pose, t0, dt, fm, cm, f1, c1, sweep, rho, margin);
+  return clear_along(world, footprint, step, straight, pose, t0, dt, f0, c0, fm, cm, sweep, margin) &&
+         clear_along(world, footprint, step, straight, pose, t0, dt, fm, cm, f1, c1, sweep, margin);
 }
 
 // The step from `from` (clearance c0, at time t0) to `to` (clearance c1): the
 // turn in place, for a footprint that is not a circle, then the straight drive.
-// Clearances count from the safety margin, so a circle covers as a disc of its
-// radius plus the margin.
-bool step_clear(const ClearanceSource& world, const Footprint& footprint, const Pose2& from, double c0, const Pose2& to,
-                double c1, double t0, double dt, double margin) {
-  Pose2 turned{from.x, from.y, to.theta};
+bool step_clear(const ClearanceSource& world, const Footprint& footprint, const StepSweep& step, const Pose2& from,
+                double c0, const Pose2& to, double c1, double t0, double dt, double margin) {
+  if (step.covered(c0, c1)) return true;
   double c_turned = c0;
   if (!footprint.is_circle()) {
     const double turn = angle_difference(to.theta, from.theta);
-    c_turned = world.clearance(footprint, turned, t0) - margin;
+    c_turned = world.clearance(footprint, Pose2{from.x, from.y, to.theta}, t0) - margin;
     const auto turning = [&](double f) { return Pose2{from.x, from.y, from.theta + f * turn}; };
-    if (!clear_along(world, footprint, turning, t0, 0.0, 0.0, c0, 1.0, c_turned, footprint.radius() * std::abs(turn),
-                     0.0, margin))
+    if (!clear_along(world, footprint, step, false, turning, t0, 0.0, 0.0, c0, 1.0, c_turned, step.turn_reach, margin))
       return false;
   }
   const auto driving = [&](double f) {
     return Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta};
   };
-  const double dx = to.x - from.x, dy = to.y - from.y;
-  const double rho = footprint.is_circle() ? footprint.radius() + margin : 0.0;
-  return clear_along(world, footprint, driving, t0, dt, 0.0, c_turned, 1.0, c1, std::sqrt(dx * dx + dy * dy), rho,
-                     margin);
+  return clear_along(world, footprint, step, true, driving, t0, dt, 0.0, c_turned, 1.0, c1,
+                     std::hypot(to.x - from.x, to.y - from.y), margin);
 }
 }  // namespace
 
@@ -271,9 +295,6 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const double clearance_now = world.clearance(footprint_, state.pose, 0.0);
   const double margin = std::clamp(clearance_now - 1e-3, 0.0, params_.safety_margin);
   const double start_clearance = clearance_now - margin;
-  const double turn_reach = footprint_.is_circle() ? 0.0 : footprint_.radius();
-  // Clearances count from the margin: a circle sweeps as a disc of its radius plus the margin.
-  const double rho = footprint_.is_circle() ? footprint_.radius() + margin : 0.0;
   bounds_.resize(static_cast<std::size_t>(n_steps_));
   exact_.resize(static_cast<std::size_t>(n_steps_));
   const double cos_start = std::cos(state.pose.theta), sin_start = std::sin(state.pose.theta);
@@ -286,8 +307,8 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     const Twist& cmd = result_.samples[i];
     Trajectory& poses = rollouts_[i];
     rollout(state.pose, cmd.v * params_.dt, headings_[i % n_omega], poses);
-    // Farthest any footprint point moves per step: the turn, then the drive.
-    const double sweep_per_step = cmd.v * params_.dt + turn_reach * std::abs(cmd.omega) * params_.dt;
+    // Every step of the rollout turns and drives alike.
+    const StepSweep step(footprint_, margin, cmd.omega * params_.dt, cmd.v * params_.dt);
     // Cheap lower bounds first; exact clearances only where a bound cannot
     // settle contact or the minimum. The result is the same as evaluating
     // every pose exactly.
@@ -306,18 +327,17 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       const double bound = bounds_[static_cast<std::size_t>(k)] - margin;
       const double previous_bound = k == 0 ? start_clearance : bounds_[static_cast<std::size_t>(k - 1)] - margin;
       const bool leaving_contact = k == 0 && start_clearance <= 0.0;
-      if (bound > 0.0 &&
-          (leaving_contact || (previous_bound > 0.0 && ends_cover(previous_bound, bound, rho, sweep_per_step))))
+      if (bound > 0.0 && (leaving_contact || step.covered(previous_bound, bound)))
         continue;  // clear at pose k and on the way there
       const double c = exact(k);
       if (c > 0.0 && !leaving_contact) {
         // The previous pose's bound, or its clearance if known, may already settle the step.
         const double known = k == 0 ? start_clearance : exact_[static_cast<std::size_t>(k - 1)];
         const double previous_low = std::isnan(known) ? previous_bound : known;
-        if (previous_low > 0.0 && ends_cover(previous_low, c, rho, sweep_per_step)) continue;
+        if (step.covered(previous_low, c)) continue;
       }
       const Pose2& from = k == 0 ? state.pose : poses[static_cast<std::size_t>(k - 1)];
-      const bool clear = c > 0.0 && (leaving_contact || step_clear(world, footprint_, from,
+      const bool clear = c > 0.0 && (leaving_contact || step_clear(world, footprint_, step, from,
                                                                    k == 0 ? start_clearance : exact(k - 1),
                                                                    poses[static_cast<std::size_t>(k)], c,
                                                                    k * params_.dt, params_.dt, margin));

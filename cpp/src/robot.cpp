@@ -65,15 +65,24 @@ Footprint Footprint::polygon(std::vector<Vec2> vertices) {
   Vec2 lo = fp.vertices_[0], hi = fp.vertices_[0];
   for (const Vec2& v : fp.vertices_) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   const Vec2 size = hi - lo;
-  const bool long_x = size.x() >= size.y();
-  const double long_side = long_x ? size.x() : size.y(), short_side = long_x ? size.y() : size.x();
-  const int pieces = std::max(1, static_cast<int>(std::ceil(long_side / short_side - 1e-9)));
-  const double piece = long_side / pieces;
-  for (int k = 0; k < pieces; ++k) {
-    const double along = (k + 0.5) * piece;
-    const Vec2 centre = long_x ? Vec2(lo.x() + along, 0.5 * (lo.y() + hi.y())) : Vec2(0.5 * (lo.x() + hi.x()), lo.y() + along);
-    fp.cover_.push_back({centre, 0.5 * std::hypot(piece, short_side)});
-  }
+  // A convex shape's chords along x are concave in y: the shortest lie at its
+  // lowest and highest y.
+  const auto chord_at = [&](double y) {
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0;
+    for (const Vec2& v : fp.vertices_)
+      if (std::abs(v.y() - y) <= 1e-12 * std::max(1.0, size.y())) x0 = std::min(x0, v.x()), x1 = std::max(x1, v.x());
+    return x1 - x0;
+  };
+  fp.heading_chord_ = std::min(chord_at(lo.y()), chord_at(hi.y()));
+  // Pieces of at most half the short side: a disc's reach beyond the outline,
+  // which is what its bound gives away, shrinks with the piece.
+  const double side = 0.5 * std::min(size.x(), size.y());
+  const int nx = std::max(1, static_cast<int>(std::ceil(size.x() / side - 1e-9)));
+  const int ny = std::max(1, static_cast<int>(std::ceil(size.y() / side - 1e-9)));
+  const double px = size.x() / nx, py = size.y() / ny;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      fp.cover_.push_back({lo + Vec2((i + 0.5) * px, (j + 0.5) * py), 0.5 * std::hypot(px, py)});
   return fp;
 }
 
@@ -140,8 +149,9 @@ void RolloutHeadings::assign(double start_theta, double cos_start, double sin_st
 }
 
 void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out) {
-  rollout(start, twist.v * dt,
-          RolloutHeadings(start.theta, std::cos(start.theta), std::sin(start.theta), twist.omega, dt, n_steps), out);
+  thread_local RolloutHeadings headings;  // storage reused by a control loop's calls
+  headings.assign(start.theta, std::cos(start.theta), std::sin(start.theta), twist.omega, dt, n_steps);
+  rollout(start, twist.v * dt, headings, out);
 }
 
 void rollout(const Pose2& start, double step_length, const RolloutHeadings& headings, Trajectory& out) {

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdint>
 #include <memory>
 #include <random>
+#include <vector>
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/collision.hpp"
@@ -242,17 +244,57 @@ struct TouchCounts {
   int touching = 0, clear = 0, between = 0;
 };
 
+// One plan from `state`: every sample's free distance against the brute-force sweep.
+void expect_free_distances_match_sweeps(LocalPlanner& planner, const ClearanceSource& world, const RobotState& state,
+                                        const Vec2& goal, double h, double band, TouchCounts& n) {
+  const Footprint& fp = planner.footprint();
+  const double dt = planner.params().dt, margin = planner.params().safety_margin;
+  // Clearance beyond the safety margin.
+  const auto beyond_margin = [&](const Pose2& pose) { return world.clearance(fp, pose, 0.0) - margin; };
+  ASSERT_GT(beyond_margin(state.pose), 1e-3);  // keeps the margin whole
+  const PlanResult& r = planner.plan(state, goal, world);
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    const Trajectory& poses = planner.rollouts()[i];
+    int first_touch = -1;
+    bool ambiguous = false, ends_clear = false;
+    for (std::size_t k = 0; k < poses.size() && first_touch < 0; ++k) {
+      const Pose2& from = k == 0 ? state.pose : poses[k - 1];
+      const Pose2& to = poses[k];
+      double worst = beyond_margin(to);
+      ends_clear = worst > 0.0;
+      const double turn = angle_difference(to.theta, from.theta);
+      const int turn_pieces = fp.is_circle() ? 0 : static_cast<int>(std::ceil(std::abs(turn) / h));
+      for (int j = 1; j <= turn_pieces; ++j)
+        worst = std::min(worst, beyond_margin(Pose2{from.x, from.y, from.theta + turn * j / turn_pieces}));
+      const double length = std::hypot(to.x - from.x, to.y - from.y);
+      const int pieces = std::max(1, static_cast<int>(std::ceil(length / h)));
+      for (int j = 1; j < pieces; ++j) {
+        const double f = double(j) / pieces;
+        worst = std::min(worst, beyond_margin(Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta}));
+      }
+      if (std::abs(worst) < band) ambiguous = true;
+      if (worst <= 0.0) first_touch = static_cast<int>(k);
+    }
+    if (ambiguous) continue;
+    const Twist& cmd = r.samples[i];
+    SCOPED_TRACE(::testing::Message() << "sample " << cmd.v << ", " << cmd.omega);
+    if (first_touch < 0) {
+      ++n.clear;
+      EXPECT_TRUE(std::isinf(r.free_distance[i])) << r.free_distance[i];
+    } else {
+      ++n.touching;
+      n.between += ends_clear;  // the step's end placement clear: only its sweep shows contact
+      EXPECT_NEAR(r.free_distance[i], first_touch * cmd.v * dt, 1e-12);
+    }
+  }
+}
+
 TouchCounts check_free_distance_is_first_touching_step(const Footprint& fp, unsigned seeds, double h, double band) {
   const RobotLimits limits;
   PlannerParams params;
   params.dt = 0.3;
   params.window = WindowParams{11, 11};
   LocalPlanner planner(limits, fp, params);
-  const double dt = params.dt;
-  // Clearance beyond the safety margin.
-  const auto beyond_margin = [&](const ClearanceSource& world, const Pose2& pose) {
-    return world.clearance(fp, pose, 0.0) - params.safety_margin;
-  };
   TouchCounts n;
   for (unsigned seed = 1; seed <= seeds; ++seed) {
     std::mt19937 rng(700 + seed);
@@ -263,45 +305,12 @@ TouchCounts check_free_distance_is_first_touching_step(const Footprint& fp, unsi
     const FieldClearance world(std::make_shared<const DistanceField>(grid));
     for (int trial = 0; trial < 6; ++trial) {
       RobotState state = random_state(rng, limits, start);
-      if (trial % 2 == 0) state.twist.v = limits.v_max;  // long steps
-      if (beyond_margin(world, state.pose) <= 1e-3) continue;  // keeps the margin whole
-      const PlanResult& r = planner.plan(state, random_goal(rng), world);
-      for (std::size_t i = 0; i < r.samples.size(); ++i) {
-        const Trajectory& poses = planner.rollouts()[i];
-        int first_touch = -1;
-        bool ambiguous = false, ends_clear = false;
-        for (std::size_t k = 0; k < poses.size() && first_touch < 0; ++k) {
-          const Pose2& from = k == 0 ? state.pose : poses[k - 1];
-          const Pose2& to = poses[k];
-          double worst = beyond_margin(world, to);
-          ends_clear = worst > 0.0;
-          const double turn = angle_difference(to.theta, from.theta);
-          const int turn_pieces = fp.is_circle() ? 0 : static_cast<int>(std::ceil(std::abs(turn) / h));
-          for (int j = 1; j <= turn_pieces; ++j)
-            worst = std::min(worst, beyond_margin(world, Pose2{from.x, from.y, from.theta + turn * j / turn_pieces}));
-          const double length = std::hypot(to.x - from.x, to.y - from.y);
-          const int pieces = std::max(1, static_cast<int>(std::ceil(length / h)));
-          for (int j = 1; j < pieces; ++j) {
-            const double f = double(j) / pieces;
-            worst = std::min(
-                worst, beyond_margin(world, Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta}));
-          }
-          if (std::abs(worst) < band) ambiguous = true;
-          if (worst <= 0.0) first_touch = static_cast<int>(k);
-        }
-        if (ambiguous) continue;
-        const Twist& cmd = r.samples[i];
-        SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial << " sample " << cmd.v << ", "
-                                          << cmd.omega);
-        if (first_touch < 0) {
-          ++n.clear;
-          EXPECT_TRUE(std::isinf(r.free_distance[i])) << r.free_distance[i];
-        } else {
-          ++n.touching;
-          n.between += ends_clear;  // both ends of the touching step clear: only the sweep shows contact
-          EXPECT_NEAR(r.free_distance[i], first_touch * cmd.v * dt, 1e-12);
-        }
-      }
+      if (trial % 3 == 0) state.twist.v = limits.v_max;  // long drives
+      if (trial % 3 == 1) state.twist.v = 0.0;           // turns in place among the samples
+      const Vec2 goal = random_goal(rng);
+      if (world.clearance(fp, state.pose, 0.0) - params.safety_margin <= 1e-3) continue;  // keeps the margin whole
+      SCOPED_TRACE(::testing::Message() << "seed " << seed << " trial " << trial);
+      expect_free_distances_match_sweeps(planner, world, state, goal, h, band, n);
     }
   }
   return n;
@@ -315,10 +324,48 @@ TEST(LocalPlanner, FreeDistanceIsTheFirstTouchingStepCircle) {
 }
 
 TEST(LocalPlanner, FreeDistanceIsTheFirstTouchingStepPolygon) {
-  const TouchCounts n = check_free_distance_is_first_touching_step(
-      Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}}), 3, 0.003, 0.005);
-  EXPECT_GT(n.touching, 500);
-  EXPECT_GT(n.clear, 20);
+  // Longer than any drive: every drive between two clear placements is clear.
+  const TouchCounts rectangle = check_free_distance_is_first_touching_step(
+      Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}}), 2, 0.003, 0.005);
+  EXPECT_GT(rectangle.touching, 300);
+  // A 0.1 m top edge, shorter than the fast drives: their sweeps decide.
+  const TouchCounts trapezoid = check_free_distance_is_first_touching_step(
+      Footprint::polygon({{-0.2, -0.15}, {0.2, -0.15}, {0.05, 0.15}, {-0.05, 0.15}}), 2, 0.003, 0.005);
+  EXPECT_GT(trapezoid.touching, 300);
+  EXPECT_GT(trapezoid.between, 5);
+}
+
+// A kite turning in place sweeps its nose along an arc of the circumscribed
+// circle. A post on that arc, 70 % of a step's turn ahead of the nose, is
+// clear of the start placement by more than half the nose's travel and clear
+// of the turned one, and the nose hits it late in the turn.
+TEST(LocalPlanner, FreeDistanceCountsContactMidTurn) {
+  RobotLimits limits;
+  limits.omega_max = 3.0;
+  limits.acc_omega = 4.0;
+  PlannerParams params;
+  params.dt = 0.3;
+  params.sim_time = 1.2;
+  params.window = WindowParams{5, 11};
+  const Footprint fp = Footprint::polygon({{0.4, 0.0}, {0.0, 0.1}, {-0.1, 0.0}, {0.0, -0.1}});
+  LocalPlanner planner(limits, fp, params);
+  const double turn = 2.0 * params.dt;  // 2 rad/s for one step
+  const Vec2 post = (fp.radius() - 0.005) * Vec2(std::cos(0.7 * turn), std::sin(0.7 * turn));
+  const double resolution = 0.005;
+  const Vec2 origin(-0.5, -0.5);
+  std::vector<std::uint8_t> cells(200 * 200, 0);
+  cells[static_cast<std::size_t>(std::floor((post.y() - origin.y()) / resolution)) * 200 +
+        static_cast<std::size_t>(std::floor((post.x() - origin.x()) / resolution))] = 1;
+  const FieldClearance world(
+      std::make_shared<const DistanceField>(OccupancyGrid(200, 200, resolution, origin, std::move(cells))));
+  const double margin = params.safety_margin;
+  ASSERT_GT(world.clearance(fp, Pose2{}, 0.0) - margin, 0.5 * fp.radius() * turn);
+  ASSERT_GT(world.clearance(fp, Pose2{0.0, 0.0, turn}, 0.0) - margin, 0.01);
+  ASSERT_LE(world.clearance(fp, Pose2{0.0, 0.0, 0.7 * turn}, 0.0) - margin, -0.01);
+  TouchCounts n;
+  expect_free_distances_match_sweeps(planner, world, RobotState{Pose2{}, Twist{0.5, 2.0}}, Vec2(3.0, 0.0), 0.001,
+                                     0.002, n);
+  EXPECT_GT(n.between, 5);
 }
 
 // Fast, straight at a wall 0.25 m beyond the footprint: no command in the

@@ -117,6 +117,47 @@ TEST(Footprint, SignedDistanceOfCircleAndPolygon) {
   EXPECT_TRUE(rect.contains(up, {0.05, 0.25}));
 }
 
+// Every point of the footprint lies in one of its cover discs, and no disc
+// reaches farther past the outline than half its piece's diagonal.
+TEST(Footprint, CoverDiscsCoverTheFootprint) {
+  std::mt19937 rng(5);
+  for (const Footprint& fp : {Footprint::circle(0.3),
+                              Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}}),
+                              Footprint::polygon({{0.4, 0.0}, {0.0, 0.1}, {-0.1, 0.0}, {0.0, -0.1}}),
+                              Footprint::polygon({{-0.2, -0.15}, {0.2, -0.15}, {0.05, 0.15}, {-0.05, 0.15}})}) {
+    std::uniform_real_distribution<double> u(-fp.radius(), fp.radius());
+    int inside = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+      const Vec2 p(u(rng), u(rng));
+      if (!fp.contains(Pose2{}, p)) continue;
+      ++inside;
+      bool covered = false;
+      for (const Footprint::CoverDisc& d : fp.cover()) covered = covered || (p - d.centre).norm() <= d.radius;
+      ASSERT_TRUE(covered) << p.transpose();
+    }
+    EXPECT_GT(inside, 1000);
+    for (const Footprint::CoverDisc& d : fp.cover()) EXPECT_LE(d.radius, fp.radius() + 1e-12);
+  }
+  // The Jackal's 0.42 m x 0.33 m: pieces of at most half the short side.
+  const Footprint jackal = Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}});
+  EXPECT_EQ(jackal.cover().size(), 6u);
+  for (const Footprint::CoverDisc& d : jackal.cover()) EXPECT_NEAR(d.radius, 0.5 * std::hypot(0.14, 0.165), 1e-12);
+}
+
+TEST(Footprint, HeadingChordIsTheShortestChordAlongTheHeading) {
+  EXPECT_EQ(Footprint::circle(0.3).heading_chord(), 0.0);
+  EXPECT_NEAR(Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}}).heading_chord(),
+              0.42, 1e-12);
+  // Narrowest at the top edge.
+  EXPECT_NEAR(Footprint::polygon({{-0.2, -0.15}, {0.2, -0.15}, {0.05, 0.15}, {-0.05, 0.15}}).heading_chord(), 0.1,
+              1e-12);
+  // A vertex alone at the top.
+  EXPECT_EQ(Footprint::polygon({{0.4, 0.0}, {0.0, 0.1}, {-0.1, 0.0}, {0.0, -0.1}}).heading_chord(), 0.0);
+  // Turned a quarter: the long sides run across the heading.
+  EXPECT_NEAR(Footprint::polygon({{0.165, 0.21}, {-0.165, 0.21}, {-0.165, -0.21}, {0.165, -0.21}}).heading_chord(),
+              0.33, 1e-12);
+}
+
 // step() turns first, then moves along the new heading.
 TEST(Step, TurnsThenMovesAlongTheNewHeading) {
   const Pose2 start{1.0, 2.0, 0.3};

@@ -42,9 +42,15 @@ class Footprint {
   // Counter-clockwise vertices in the robot frame; empty for a circle.
   const std::vector<Vec2>& vertices() const { return vertices_; }
 
+  // The footprint's shortest chord along the heading (the robot's x axis) over
+  // the heights it spans: a polygon's edge length at its lowest and highest y
+  // (0 where a vertex sits alone there), 0 for a circle. A straight drive no
+  // longer than it sweeps nothing outside the start and end placements.
+  double heading_chord() const { return heading_chord_; }
+
   // Discs (robot frame: centre, radius) whose union covers the footprint: the
-  // circle itself, or a polygon's bounding box cut across its long side into
-  // near-square pieces. Distance bounds from them are tighter than from the
+  // circle itself, or a polygon's bounding box cut into pieces of at most half
+  // its short side. Distance bounds from them are tighter than from the
   // circumscribed circle for an elongated robot.
   struct CoverDisc {
     Vec2 centre;
@@ -62,6 +68,7 @@ class Footprint {
   Footprint() = default;
   double radius_ = 0.0;
   double inscribed_radius_ = 0.0;
+  double heading_chord_ = 0.0;
   std::vector<Vec2> vertices_;
   std::vector<CoverDisc> cover_;
 };
