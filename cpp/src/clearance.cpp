@@ -30,60 +30,96 @@ namespace {
 // m: how finely a polygon's outline is resolved where an obstacle is near it.
 constexpr double kOutlineTolerance = 0.005;
 
+// Lowers `best` to the smallest distance along the outline piece from a to b
+// (at distances da and db), within half of kOutlineTolerance below. The field
+// is 1-Lipschitz, so the piece of length L holds no point nearer than
+// (da + db - L) / 2: pieces whose bound could still lower `best` are halved
+// down to kOutlineTolerance, where the bound itself is taken.
+void refine_piece(const DistanceField& field, const Vec2& a, double da, const Vec2& b, double db, double& best) {
+  const double length = (b - a).norm();
+  const double bound = 0.5 * (da + db - length);
+  if (bound >= best) return;
+  if (length <= kOutlineTolerance) {
+    best = bound;
+    return;
+  }
+  const Vec2 mid = 0.5 * (a + b);
+  const double dm = field.distance(mid);
+  best = std::min(best, dm);
+  refine_piece(field, mid, dm, b, db, best);
+  refine_piece(field, a, da, mid, dm, best);
+}
+
 double field_clearance(const DistanceField* field, const Footprint& footprint, const Pose2& pose) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!field || !field->has_obstacles()) return kInf;
-  const double centre = field->distance(pose.position());
-  if (footprint.is_circle()) return centre - footprint.radius();
+  if (footprint.is_circle()) return field->distance(pose.position()) - footprint.radius();
 
-  // Polygon: the distance from its outline, never above the true one. The
-  // outline is sampled at half-cell spacing; the field is 1-Lipschitz, so a
-  // piece of length L whose ends lie at da and db holds no point nearer than
-  // (da + db - L) / 2. Pieces whose bound could still lower the result are
-  // halved down to kOutlineTolerance, where the bound itself is taken.
+  // Polygon: the distance from its outline, never above the true one and at
+  // most half of kOutlineTolerance below it. The outline is sampled at
+  // half-cell spacing. Exact distances are asked where the table's lower
+  // bounds leave it open: first at the sample of lowest bound, then at every
+  // sample whose bound is below the best so far, then at the ends of the pieces
+  // between samples whose bound could still be below it, which refine_piece
+  // halves as far as needed.
   const double res = field->grid().resolution();
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   const auto world = [&](const Vec2& q) { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); };
   const auto& vertices = footprint.vertices();
-  double best = kInf;
-  struct Piece {
-    Vec2 a, b;
-    double da, db;
+  struct Sample {
+    Vec2 point;
+    double low;    // the table's lower bound
+    double exact;  // NaN until asked
   };
-  // Reused across calls: this runs thousands of times per control cycle.
-  thread_local std::vector<Piece> pending;
-  pending.clear();
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
+  const auto edge_pieces = [&](std::size_t i) {
+    const double length = (vertices[(i + 1) % vertices.size()] - vertices[i]).norm();
+    return std::max(1, static_cast<int>(std::ceil(length / (0.5 * res))));
+  };
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < vertices.size(); ++i) n += static_cast<std::size_t>(edge_pieces(i));
+  // On the stack for the usual footprint; this runs thousands of times per control cycle.
+  constexpr std::size_t kOnStack = 96;
+  Sample on_stack[kOnStack];
+  std::vector<Sample> spilled;
+  Sample* samples = on_stack;
+  if (n > kOnStack) {
+    spilled.resize(n);
+    samples = spilled.data();
+  }
+  std::size_t lowest = 0;
+  for (std::size_t i = 0, j = 0; i < vertices.size(); ++i) {
     const Vec2 a = world(vertices[i]), b = world(vertices[(i + 1) % vertices.size()]);
-    const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * res))));
-    Vec2 p = a;
-    double dp = field->distance(p);
-    for (int k = 1; k <= pieces; ++k) {
+    const int pieces = edge_pieces(i);
+    for (int k = 0; k < pieces; ++k, ++j) {
       const Vec2 q = a + (b - a) * (double(k) / pieces);
-      const double dq = field->distance(q);
-      pending.push_back({p, q, dp, dq});
-      best = std::min(best, dp);
-      p = q;
-      dp = dq;
+      samples[j] = Sample{q, field->lower_bound(q), std::numeric_limits<double>::quiet_NaN()};
+      if (samples[j].low < samples[lowest].low) lowest = j;
     }
   }
-  while (!pending.empty()) {
-    const Piece piece = pending.back();
-    pending.pop_back();
-    const double length = (piece.b - piece.a).norm();
-    const double bound = 0.5 * (piece.da + piece.db - length);
-    if (bound >= best) continue;
-    if (length <= kOutlineTolerance) {
-      best = bound;
+  const auto exact = [&](Sample& sample) {
+    if (std::isnan(sample.exact)) sample.exact = field->distance(sample.point);
+    return sample.exact;
+  };
+  double best = exact(samples[lowest]);
+  for (std::size_t j = 0; j < n; ++j)
+    if (samples[j].low < best) best = std::min(best, exact(samples[j]));
+  for (std::size_t j = 0; j < n; ++j) {
+    Sample& from = samples[j];
+    Sample& to = samples[(j + 1) % n];
+    const double length = (to.point - from.point).norm();
+    const auto known = [](const Sample& sample) { return std::isnan(sample.exact) ? sample.low : sample.exact; };
+    if (0.5 * (known(from) + known(to) - length) >= best) continue;
+    const double along = field->segment_distance(from.point, to.point);
+    if (!std::isnan(along)) {
+      best = std::min(best, along);
       continue;
     }
-    const Vec2 mid = 0.5 * (piece.a + piece.b);
-    const double dm = field->distance(mid);
-    best = std::min(best, dm);
-    pending.push_back({piece.a, mid, piece.da, dm});
-    pending.push_back({mid, piece.b, dm, piece.db});
+    best = std::min({best, exact(from), exact(to)});
+    refine_piece(*field, from.point, from.exact, to.point, to.exact, best);
   }
-  if (best <= 0.0 || centre >= footprint.radius()) return best;
+  if (best <= 0.0 || field->lower_bound(pose.position()) >= footprint.radius() ||
+      field->distance(pose.position()) >= footprint.radius())
+    return best;
   // An obstacle cell can sit wholly inside a footprint wider than a cell.
   const OccupancyGrid& grid = field->grid();
   const double r = footprint.radius();

@@ -144,8 +144,19 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   // close to it: each cell keeps the distinct nearest obstacles of the cells
   // within two of it, usually one to three.
   candidate_start_.assign(n_cells + 1, 0);
-  quarter_lower_bound_.assign(4 * n_cells, kInf);
-  inverse_half_resolution_ = 2.0 / grid.resolution();
+  // Pieces of about kBoundPiece metres, at least 2 x 2 per cell, and no more
+  // than kMaxBoundPieces in all.
+  constexpr double kBoundPiece = 0.025;
+  constexpr double kMaxBoundPieces = 4e6;
+  subdivisions_ = std::max(2, static_cast<int>(std::ceil(grid.resolution() / kBoundPiece - 1e-9)));
+  subdivisions_ = std::max(2, std::min(subdivisions_, static_cast<int>(std::sqrt(kMaxBoundPieces / n_cells))));
+  const int sub = subdivisions_;
+  inverse_resolution_ = 1.0 / grid.resolution();
+  inverse_piece_ = sub / grid.resolution();
+  bound_cols_ = static_cast<double>(sub * cols);
+  bound_rows_ = static_cast<double>(sub * rows);
+  bound_stride_ = static_cast<std::size_t>(sub * cols);
+  piece_lower_bound_.assign(n_cells * sub * sub, std::numeric_limits<float>::infinity());
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       const std::size_t first = candidates_.size();
@@ -172,24 +183,30 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
       const auto beyond = [&](const Vec2& o) {
         const double dx = std::max(std::abs(centre.x() - o.x()) - res, 0.0);
         const double dy = std::max(std::abs(centre.y() - o.y()) - res, 0.0);
-        return std::hypot(dx, dy) > reach + 1e-9 * res;
+        const double limit = reach + 1e-9 * res;
+        return dx * dx + dy * dy > limit * limit;
       };
       candidates_.erase(std::remove_if(candidates_.begin() + static_cast<std::ptrdiff_t>(first), candidates_.end(), beyond),
                         candidates_.end());
       // The candidates hold the nearest obstacle of every point of the cell, so
-      // the nearest of them to a quarter of the cell bounds that quarter.
-      for (int qr = 0; qr < 2; ++qr)
-        for (int qc = 0; qc < 2; ++qc) {
-          const Vec2 quarter = centre + Vec2((qc - 0.5) * 0.5 * res, (qr - 0.5) * 0.5 * res);
-          double bound = kInf;
+      // the nearest of them to a piece of the cell bounds that piece.
+      const double piece = res / sub;
+      for (int pr = 0; pr < sub; ++pr)
+        for (int pc = 0; pc < sub; ++pc) {
+          const Vec2 middle = centre + Vec2((pc + 0.5) * piece - 0.5 * res, (pr + 0.5) * piece - 0.5 * res);
+          double nearest = kInf;  // squared
           for (std::size_t k = first; k < candidates_.size(); ++k) {
-            // Square of half-size res / 2 against a quarter of half-size res / 4.
-            const double dx = std::max(std::abs(quarter.x() - candidates_[k].x()) - 0.75 * res, 0.0);
-            const double dy = std::max(std::abs(quarter.y() - candidates_[k].y()) - 0.75 * res, 0.0);
-            bound = std::min(bound, std::hypot(dx, dy));
+            // An obstacle square of half-size res / 2 against a piece of half-size piece / 2.
+            const double dx = std::max(std::abs(middle.x() - candidates_[k].x()) - 0.5 * (res + piece), 0.0);
+            const double dy = std::max(std::abs(middle.y() - candidates_[k].y()) - 0.5 * (res + piece), 0.0);
+            nearest = std::min(nearest, dx * dx + dy * dy);
           }
-          quarter_lower_bound_[static_cast<std::size_t>(2 * r + qr) * (2 * cols) + static_cast<std::size_t>(2 * c + qc)] =
-              bound;
+          const double bound = std::sqrt(nearest);
+          // Rounded down: the bound must stay a bound in single precision.
+          float stored = static_cast<float>(bound);
+          if (static_cast<double>(stored) > bound) stored = std::nextafter(stored, -std::numeric_limits<float>::infinity());
+          piece_lower_bound_[static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c + pc)] =
+              stored;
         }
       candidate_start_[grid.index(r, c) + 1] = candidates_.size();
     }
@@ -217,12 +234,76 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
       }
 }
 
+namespace {
+// Squared distance from the segment a + t d (t in [0, 1]) to the square of
+// half-size h centred on the origin: 0 where they meet; otherwise the nearer
+// of the segment's ends to the square and the square's corners to the segment
+// (two disjoint convex shapes come nearest at a vertex of one of them).
+double segment_square_distance2(const Vec2& a, const Vec2& d, double h) {
+  double t0 = 0.0, t1 = 1.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double p = d[axis], lo = -h - a[axis], hi = h - a[axis];
+    if (p == 0.0) {
+      if (lo > 0.0 || hi < 0.0) t0 = 2.0;  // parallel and outside
+    } else {
+      const double ta = lo / p, tb = hi / p;
+      t0 = std::max(t0, std::min(ta, tb));
+      t1 = std::min(t1, std::max(ta, tb));
+    }
+  }
+  if (t0 <= t1) return 0.0;
+  const auto to_square = [h](const Vec2& q) {
+    const double dx = std::max(std::abs(q.x()) - h, 0.0), dy = std::max(std::abs(q.y()) - h, 0.0);
+    return dx * dx + dy * dy;
+  };
+  double best = std::min(to_square(a), to_square(a + d));
+  const double length2 = d.squaredNorm();
+  if (length2 > 0.0)
+    for (const double cx : {-h, h})
+      for (const double cy : {-h, h}) {
+        const Vec2 corner(cx, cy);
+        const double t = std::clamp((corner - a).dot(d) / length2, 0.0, 1.0);
+        best = std::min(best, (a + t * d - corner).squaredNorm());
+      }
+  return best;
+}
+}  // namespace
+
+double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
+  if (!has_obstacles_) return kInf;
+  const double ax = (a.x() - grid_.origin().x()) * inverse_resolution_, ay = (a.y() - grid_.origin().y()) * inverse_resolution_;
+  const double bx = (b.x() - grid_.origin().x()) * inverse_resolution_, by = (b.y() - grid_.origin().y()) * inverse_resolution_;
+  const double x0 = std::min(ax, bx), x1 = std::max(ax, bx), y0 = std::min(ay, by), y1 = std::max(ay, by);
+  if (!(x0 >= 0.0 && y0 >= 0.0 && x1 < grid_.cols() && y1 < grid_.rows()))
+    return std::numeric_limits<double>::quiet_NaN();
+  const double half = 0.5 * grid_.resolution();
+  const Vec2 d = b - a;
+  const double length2 = d.squaredNorm();
+  double best = kInf;  // squared
+  // A square no nearer than `best` by its centre's distance less its half
+  // diagonal is skipped.
+  const auto consider = [&](const Vec2& centre) {
+    const Vec2 from_a = centre - a;
+    const double t = length2 > 0.0 ? std::clamp(from_a.dot(d) / length2, 0.0, 1.0) : 0.0;
+    const double reach = std::max((from_a - t * d).norm() - M_SQRT2 * half, 0.0);
+    if (reach * reach < best) best = std::min(best, segment_square_distance2(-from_a, d, half));
+  };
+  for (int r = static_cast<int>(y0); r <= static_cast<int>(y1); ++r)
+    for (int c = static_cast<int>(x0); c <= static_cast<int>(x1); ++c) {
+      const CellCandidates& near = cell_candidates_[grid_.index(r, c)];
+      consider(Vec2(near.x0, near.y0));
+      if (near.x1 != near.x0 || near.y1 != near.y0) consider(Vec2(near.x1, near.y1));
+      for (std::size_t k = near.more_begin; k < near.more_end; ++k) consider(candidates_[k]);
+    }
+  return std::sqrt(best);
+}
+
 double DistanceField::distance(const Vec2& p) const {
   if (!has_obstacles_) return kInf;
   const double half = 0.5 * grid_.resolution();
   const int rows = grid_.rows(), cols = grid_.cols();
-  const double gx = (p.x() - grid_.origin().x()) * inverse_half_resolution_ * 0.5;
-  const double gy = (p.y() - grid_.origin().y()) * inverse_half_resolution_ * 0.5;
+  const double gx = (p.x() - grid_.origin().x()) * inverse_resolution_;
+  const double gy = (p.y() - grid_.origin().y()) * inverse_resolution_;
   const auto square_distance = [&](const Vec2& o) {
     const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
     const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);

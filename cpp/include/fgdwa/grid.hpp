@@ -86,16 +86,22 @@ class DistanceField {
   const std::vector<double>& cell_distances() const { return distances_; }
   bool has_obstacles() const { return has_obstacles_; }
   double distance(const Vec2& p) const;
+  // The distance from the segment ab to the nearest obstacle square, exactly,
+  // from the candidates of the cells its bounding box covers (meant for
+  // segments of about a cell); NaN when that box leaves the grid.
+  double segment_distance(const Vec2& a, const Vec2& b) const;
   // A value never above distance(p), from one table look-up: the distance
-  // between the quarter of p's cell that holds p and the nearest obstacle
-  // square (0 outside the grid).
+  // between the piece of p's cell that holds p and the nearest obstacle square
+  // (0 outside the grid). Cells are cut into bound_subdivisions() x
+  // bound_subdivisions() pieces of about 2.5 cm, at least 2 x 2.
   double lower_bound(const Vec2& p) const {
     if (!has_obstacles_) return std::numeric_limits<double>::infinity();
-    const double gx = (p.x() - grid_.origin().x()) * inverse_half_resolution_;
-    const double gy = (p.y() - grid_.origin().y()) * inverse_half_resolution_;
-    if (!(gx >= 0.0 && gy >= 0.0 && gx < 2 * grid_.cols() && gy < 2 * grid_.rows())) return 0.0;
-    return quarter_lower_bound_[static_cast<std::size_t>(gy) * (2 * grid_.cols()) + static_cast<std::size_t>(gx)];
+    const double gx = (p.x() - grid_.origin().x()) * inverse_piece_;
+    const double gy = (p.y() - grid_.origin().y()) * inverse_piece_;
+    if (!(gx >= 0.0 && gy >= 0.0 && gx < bound_cols_ && gy < bound_rows_)) return 0.0;
+    return piece_lower_bound_[static_cast<std::size_t>(gy) * bound_stride_ + static_cast<std::size_t>(gx)];
   }
+  int bound_subdivisions() const { return subdivisions_; }
 
  private:
   OccupancyGrid grid_;
@@ -114,10 +120,14 @@ class DistanceField {
   std::vector<CellCandidates> cell_candidates_;
   // Outermost occupied column of each row and row of each column, -1 for none.
   std::vector<int> row_first_, row_last_, col_first_, col_last_;
-  // Per quarter cell (rows and columns of half a cell): its distance to the
-  // nearest obstacle square, row-major over 2 rows x 2 cols.
-  std::vector<double> quarter_lower_bound_;
-  double inverse_half_resolution_ = 1.0;
+  // Per piece of a cell (subdivisions_ x subdivisions_ per cell): its distance
+  // to the nearest obstacle square, rounded down to a float, row-major.
+  std::vector<float> piece_lower_bound_;
+  int subdivisions_ = 2;
+  double inverse_resolution_ = 1.0;      // cells per metre
+  double inverse_piece_ = 1.0;           // pieces per metre
+  double bound_cols_ = 0.0, bound_rows_ = 0.0;  // pieces across and down the grid
+  std::size_t bound_stride_ = 0;
   bool has_obstacles_ = false;
 };
 
