@@ -641,10 +641,41 @@ TEST(DistanceField, LowerBoundNeverExceedsTheDistance) {
   const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.2);
   const DistanceField field(grid);
   std::uniform_real_distribution<double> x(-2.0, 8.0), y(-0.5, 7.5);
+  EXPECT_EQ(field.bound_subdivisions(), 4);  // 2.5 cm pieces of 0.1 m cells
+  const double piece_diagonal = std::sqrt(2.0) * 0.1 / 4;
   for (int i = 0; i < 20000; ++i) {
     const Vec2 p(x(rng), y(rng));
-    ASSERT_LE(field.lower_bound(p), field.distance(p) + 1e-12);
+    const double bound = field.lower_bound(p), d = field.distance(p);
+    ASSERT_LE(bound, d + 1e-12);
+    const bool inside = p.x() > -1.0 && p.x() < 7.0 && p.y() > 0.5 && p.y() < 6.5;
+    if (inside) ASSERT_GE(bound, d - piece_diagonal - 1e-6);  // no looser than its piece
   }
+}
+
+// A segment's distance is exact: no sample along it is nearer, and the
+// nearest of fine samples is within half their spacing of it.
+TEST(DistanceField, SegmentDistanceIsTheNearestPointOfTheSegment) {
+  std::mt19937 rng(9);
+  const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.2);
+  const DistanceField field(grid);
+  std::uniform_real_distribution<double> x(-0.8, 6.8), y(0.7, 6.3), step(-0.1, 0.1);
+  int touching = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec2 a(x(rng), y(rng)), b = a + Vec2(step(rng), step(rng));
+    const double d = field.segment_distance(a, b);
+    double sampled = kInf;
+    const int n = 200;
+    for (int k = 0; k <= n; ++k) sampled = std::min(sampled, field.distance(a + (b - a) * (double(k) / n)));
+    SCOPED_TRACE(::testing::Message() << "a " << a.transpose() << " b " << b.transpose());
+    ASSERT_LE(d, sampled + 1e-12);
+    ASSERT_GE(d, sampled - 0.5 * (b - a).norm() / n - 1e-12);
+    touching += d == 0.0;
+  }
+  EXPECT_GT(touching, 100);
+  // Leaving the grid: not answered; no obstacles: infinitely far.
+  EXPECT_TRUE(std::isnan(field.segment_distance(Vec2(-1.05, 1.0), Vec2(-0.95, 1.0))));
+  const DistanceField empty(OccupancyGrid(10, 10, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(100, 0)));
+  EXPECT_TRUE(std::isinf(empty.segment_distance(Vec2(0.2, 0.2), Vec2(0.3, 0.3))));
 }
 
 }  // namespace
