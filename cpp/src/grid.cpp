@@ -130,14 +130,14 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
     for (int c = 0; c < cols; ++c) nearest_col[grid.index(r, c)] = arg[c];
   }
   distances_.resize(n_cells);
-  std::vector<Vec2> nearest(n_cells);
+  std::vector<long> nearest(n_cells);  // grid index of each cell's nearest obstacle cell, -1 for none
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       const std::size_t i = grid.index(r, c);
       const bool far = squared[i] >= 0.5 * kFar;
       distances_[i] = far ? kInf : std::sqrt(squared[i]) * grid.resolution();
       const int col = nearest_col[i];
-      nearest[i] = far ? Vec2(kInf, kInf) : grid.cell_center(nearest_row[grid.index(r, col)], col);
+      nearest[i] = far ? -1 : static_cast<long>(grid.index(nearest_row[grid.index(r, col)], col));
     }
 
   // The obstacle square nearest to a point is the one nearest to a cell centre
@@ -157,18 +157,20 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   bound_rows_ = static_cast<double>(sub * rows);
   bound_stride_ = static_cast<std::size_t>(sub * cols);
   piece_lower_bound_.assign(n_cells * sub * sub, std::numeric_limits<float>::infinity());
+  std::vector<double> nearest_piece(static_cast<std::size_t>(sub * sub)), gap_x(sub), gap_y(sub);  // squared
+  std::vector<long> found;  // a cell's distinct candidates, as grid indices
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       const std::size_t first = candidates_.size();
+      found.clear();
       for (int dr = -2; dr <= 2; ++dr)
         for (int dc = -2; dc <= 2; ++dc) {
           const int rr = std::clamp(r + dr, 0, rows - 1), cc = std::clamp(c + dc, 0, cols - 1);
-          const Vec2& o = nearest[grid.index(rr, cc)];
-          if (!std::isfinite(o.x())) continue;
-          if (std::find(candidates_.begin() + static_cast<std::ptrdiff_t>(first), candidates_.end(), o) ==
-              candidates_.end())
-            candidates_.push_back(o);
+          const long o = nearest[grid.index(rr, cc)];
+          if (o >= 0 && std::find(found.begin(), found.end(), o) == found.end()) found.push_back(o);
         }
+      for (const long o : found)
+        candidates_.push_back(grid.cell_center(static_cast<int>(o / cols), static_cast<int>(o % cols)));
       // Drop the candidates that cannot be nearest anywhere in the cell: their
       // square is farther from the whole cell than some other candidate's square
       // is from the cell's farthest corner. Clustered maps leave a dozen
@@ -189,19 +191,27 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
       candidates_.erase(std::remove_if(candidates_.begin() + static_cast<std::ptrdiff_t>(first), candidates_.end(), beyond),
                         candidates_.end());
       // The candidates hold the nearest obstacle of every point of the cell, so
-      // the nearest of them to a piece of the cell bounds that piece.
-      const double piece = res / sub;
+      // the nearest of them to a piece of the cell bounds that piece: an
+      // obstacle square of half-size res / 2 against a piece of half-size
+      // piece / 2. Its gaps along x and y depend on the piece's column and row
+      // alone, so they are squared once per candidate.
+      const double piece = res / sub, reach_apart = 0.5 * (res + piece);
+      std::fill(nearest_piece.begin(), nearest_piece.end(), kInf);
+      for (std::size_t k = first; k < candidates_.size(); ++k) {
+        for (int j = 0; j < sub; ++j) {
+          const double offset = (j + 0.5) * piece - 0.5 * res;
+          const double gx = std::max(std::abs(centre.x() + offset - candidates_[k].x()) - reach_apart, 0.0);
+          const double gy = std::max(std::abs(centre.y() + offset - candidates_[k].y()) - reach_apart, 0.0);
+          gap_x[j] = gx * gx;
+          gap_y[j] = gy * gy;
+        }
+        for (int pr = 0; pr < sub; ++pr)
+          for (int pc = 0; pc < sub; ++pc)
+            nearest_piece[pr * sub + pc] = std::min(nearest_piece[pr * sub + pc], gap_x[pc] + gap_y[pr]);
+      }
       for (int pr = 0; pr < sub; ++pr)
         for (int pc = 0; pc < sub; ++pc) {
-          const Vec2 middle = centre + Vec2((pc + 0.5) * piece - 0.5 * res, (pr + 0.5) * piece - 0.5 * res);
-          double nearest = kInf;  // squared
-          for (std::size_t k = first; k < candidates_.size(); ++k) {
-            // An obstacle square of half-size res / 2 against a piece of half-size piece / 2.
-            const double dx = std::max(std::abs(middle.x() - candidates_[k].x()) - 0.5 * (res + piece), 0.0);
-            const double dy = std::max(std::abs(middle.y() - candidates_[k].y()) - 0.5 * (res + piece), 0.0);
-            nearest = std::min(nearest, dx * dx + dy * dy);
-          }
-          const double bound = std::sqrt(nearest);
+          const double bound = std::sqrt(nearest_piece[pr * sub + pc]);
           // Rounded down: the bound must stay a bound in single precision.
           float stored = static_cast<float>(bound);
           if (static_cast<double>(stored) > bound) stored = std::nextafter(stored, -std::numeric_limits<float>::infinity());
