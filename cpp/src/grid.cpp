@@ -211,12 +211,11 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
       }
       for (int pr = 0; pr < sub; ++pr)
         for (int pc = 0; pc < sub; ++pc) {
-          const double bound = std::sqrt(nearest_piece[pr * sub + pc]);
-          // Rounded down: the bound must stay a bound in single precision.
-          float stored = static_cast<float>(bound);
-          if (static_cast<double>(stored) > bound) stored = std::nextafter(stored, -std::numeric_limits<float>::infinity());
+          // Lowered by 2^-22 before rounding to single precision (relative
+          // error at most 2^-24), so the stored value stays below the bound.
+          const double bound = std::sqrt(nearest_piece[pr * sub + pc]) * (1.0 - 0x1p-22);
           piece_lower_bound_[static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c + pc)] =
-              stored;
+              static_cast<float>(bound);
         }
       candidate_start_[grid.index(r, c) + 1] = candidates_.size();
     }
