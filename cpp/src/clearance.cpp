@@ -176,12 +176,16 @@ void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Tr
     for (std::size_t k = 0; k < n; ++k) out[k] = static_lower_bound(field_.get(), sensed_.get(), footprint, poses[k]);
   } else {
     // One field at a time in tight loops: this runs for every pose of every rollout.
-    if (field_)
-      for (std::size_t k = 0; k < n; ++k) out[k] = field_->lower_bound(poses[k].position()) - r;
-    else
+    if (field_) {
+      const DistanceField::LowerBounds bound = field_->lower_bounds();
+      for (std::size_t k = 0; k < n; ++k) out[k] = bound(poses[k].x, poses[k].y) - r;
+    } else {
       std::fill(out, out + n, std::numeric_limits<double>::infinity());
-    if (sensed_)
-      for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], sensed_->lower_bound(poses[k].position()) - r);
+    }
+    if (sensed_) {
+      const DistanceField::LowerBounds bound = sensed_->lower_bounds();
+      for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], bound(poses[k].x, poses[k].y) - r);
+    }
   }
   for (const Disc& disc : discs_)
     for (std::size_t k = 0; k < n; ++k)

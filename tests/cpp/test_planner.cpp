@@ -648,7 +648,9 @@ TEST(DistanceField, LowerBoundNeverExceedsTheDistance) {
     const double bound = field.lower_bound(p), d = field.distance(p);
     ASSERT_LE(bound, d + 1e-12);
     const bool inside = p.x() > -1.0 && p.x() < 7.0 && p.y() > 0.5 && p.y() < 6.5;
-    if (inside) ASSERT_GE(bound, d - piece_diagonal - 1e-6);  // no looser than its piece
+    if (inside) {
+      ASSERT_GE(bound, d - piece_diagonal - 1e-6);  // no looser than its piece
+    }
   }
 }
 

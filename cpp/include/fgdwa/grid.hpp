@@ -94,12 +94,30 @@ class DistanceField {
   // between the piece of p's cell that holds p and the nearest obstacle square
   // (0 outside the grid). Cells are cut into bound_subdivisions() x
   // bound_subdivisions() pieces of about 2.5 cm, at least 2 x 2.
-  double lower_bound(const Vec2& p) const {
-    if (!has_obstacles_) return std::numeric_limits<double>::infinity();
-    const double gx = (p.x() - grid_.origin().x()) * inverse_piece_;
-    const double gy = (p.y() - grid_.origin().y()) * inverse_piece_;
-    if (!(gx >= 0.0 && gy >= 0.0 && gx < bound_cols_ && gy < bound_rows_)) return 0.0;
-    return piece_lower_bound_[static_cast<std::size_t>(gy) * bound_stride_ + static_cast<std::size_t>(gx)];
+  double lower_bound(const Vec2& p) const { return lower_bounds()(p.x(), p.y()); }
+
+  // The table behind lower_bound(), copied out so that a loop over many points
+  // keeps it in registers. Valid while the field lives.
+  struct LowerBounds {
+    const float* pieces;  // null: no obstacles
+    double origin_x, origin_y, inverse_piece;
+    double cols, rows;  // pieces across and down the grid
+    std::ptrdiff_t stride;
+    double operator()(double x, double y) const {
+      if (!pieces) return std::numeric_limits<double>::infinity();
+      const double gx = (x - origin_x) * inverse_piece, gy = (y - origin_y) * inverse_piece;
+      if (!(gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows)) return 0.0;
+      return pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
+    }
+  };
+  LowerBounds lower_bounds() const {
+    return LowerBounds{has_obstacles_ ? piece_lower_bound_.data() : nullptr,
+                       grid_.origin().x(),
+                       grid_.origin().y(),
+                       inverse_piece_,
+                       bound_cols_,
+                       bound_rows_,
+                       static_cast<std::ptrdiff_t>(bound_stride_)};
   }
   int bound_subdivisions() const { return subdivisions_; }
 
