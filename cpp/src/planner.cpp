@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "step_sweep.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -192,93 +193,6 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   return result_;
 }
 
-namespace {
-// How one step of a rollout moves the footprint and what its end clearances
-// alone can settle. The step turns in place by `turn` (rad), which moves no
-// footprint point farther than `turn_reach`, then drives `drive` metres
-// straight along the new heading. Clearances count from the safety margin.
-struct StepSweep {
-  double turn_reach = 0.0;  // m, 0 for a circle, whose turns move nothing
-  double drive = 0.0;       // m
-  double rho = 0.0;         // m, a circle's radius plus the margin; 0 for a polygon
-  double chord = 0.0;       // m, the polygon's Footprint::heading_chord(); 0 for a circle
-
-  StepSweep(const Footprint& footprint, double margin, double turn, double drive_length)
-      : turn_reach(footprint.is_circle() ? 0.0 : footprint.radius() * std::abs(wrap_angle(turn))),
-        drive(drive_length),
-        rho(footprint.is_circle() ? footprint.radius() + margin : 0.0),
-        chord(footprint.is_circle() ? 0.0 : footprint.heading_chord()) {}
-
-  // Whether a straight drive of `length` between placements of clearance c0 and
-  // c1 > 0 is clear. Each footprint point's path lies in the open discs of radii
-  // c0 and c1 around its ends when c0 + c1 > length. A polygon does better: any
-  // point of its sweep lies in one of the two placements, or within
-  // length - chord of one along the heading. A disc of radius rho does better
-  // still: its swept capsule lies in the obstacle-free discs of radius rho + c0
-  // and rho + c1 around the end centres when
-  // sqrt(c0 (2 rho + c0)) + sqrt(c1 (2 rho + c1)) > length (each term is how far
-  // the capsule's edge, rho from its axis, stays inside one disc).
-  bool drive_covered(double c0, double c1, double length) const {
-    if (c0 + c1 > length - chord) return true;
-    if (rho <= 0.0) return false;
-    const double a0 = c0 * (2.0 * rho + c0), a1 = c1 * (2.0 * rho + c1);  // the terms squared
-    // (sqrt(a0) + sqrt(a1))^2 >= a0 + a1: most steps pass without a square root.
-    return a0 + a1 > length * length || std::sqrt(a0) + std::sqrt(a1) > length;
-  }
-
-  // Whether the whole step, turn and drive, is clear given the clearances c0
-  // before it and c1 after it. The turned placement's clearance is at least
-  // c0 - turn_reach and at least c1 - drive: each footprint point moves no
-  // farther than that between them.
-  bool covered(double c0, double c1) const {
-    if (c0 <= 0.0 || c1 <= 0.0) return false;
-    if (turn_reach == 0.0) return drive_covered(c0, c1, drive);
-    const double turned = std::max(c0 - turn_reach, c1 - drive);
-    return turned > 0.0 && c0 + turned > turn_reach && drive_covered(turned, c1, drive);
-  }
-};
-
-// Whether the footprint stays clear along one piece of a turn (straight =
-// false: `sweep` is the turn's reach) or of a drive (straight: `sweep` is its
-// length), given the clearances c0 and c1 at the piece's ends. Pieces the ends
-// do not settle are halved until they do, down to a millimetre. `pose(f)`,
-// f in [0, 1], walks the piece.
-template <typename PoseAt>
-bool clear_along(const ClearanceSource& world, const Footprint& footprint, const StepSweep& step, bool straight,
-                 const PoseAt& pose, double t0, double dt, double f0, double c0, double f1, double c1, double sweep,
-                 double margin) {
-  if (c0 <= 0.0 || c1 <= 0.0) return false;
-  const double piece = (f1 - f0) * sweep;
-  if (straight ? step.drive_covered(c0, c1, piece) : c0 + c1 > piece) return true;
-  if (piece < 1e-3) return false;
-  const double fm = 0.5 * (f0 + f1);
-  const double cm = world.clearance(footprint, pose(fm), t0 + fm * dt) - margin;
-  return clear_along(world, footprint, step, straight, pose, t0, dt, f0, c0, fm, cm, sweep, margin) &&
-         clear_along(world, footprint, step, straight, pose, t0, dt, fm, cm, f1, c1, sweep, margin);
-}
-
-// The step from `from` (clearance c0, at time t0) to `to` (clearance c1): the
-// turn in place, for a footprint that is not a circle, then the straight drive.
-bool step_clear(const ClearanceSource& world, const Footprint& footprint, const StepSweep& step, const Pose2& from,
-                double c0, const Pose2& to, double c1, double t0, double dt, double margin) {
-  if (step.covered(c0, c1)) return true;
-  double c_turned = c0;
-  if (!footprint.is_circle()) {
-    const double turn = angle_difference(to.theta, from.theta);
-    c_turned = world.clearance(footprint, Pose2{from.x, from.y, to.theta}, t0) - margin;
-    const auto turning = [&](double f) { return Pose2{from.x, from.y, from.theta + f * turn}; };
-    if (!clear_along(world, footprint, step, false, turning, t0, 0.0, 0.0, c0, 1.0, c_turned, step.turn_reach, margin))
-      return false;
-  }
-  const auto driving = [&](double f) {
-    return Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta};
-  };
-  return clear_along(world, footprint, step, true, driving, t0, dt, 0.0, c_turned, 1.0, c1,
-                     std::hypot(to.x - from.x, to.y - from.y), margin);
-}
-}  // namespace
-
-
 void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSource& world) {
   const std::size_t n = result_.samples.size();
   rollouts_.resize(n);
@@ -308,7 +222,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     Trajectory& poses = rollouts_[i];
     rollout(state.pose, cmd.v * params_.dt, headings_[i % n_omega], poses);
     // Every step of the rollout turns and drives alike.
-    const StepSweep step(footprint_, margin, cmd.omega * params_.dt, cmd.v * params_.dt);
+    const detail::StepSweep step(footprint_, margin, cmd.omega * params_.dt, cmd.v * params_.dt);
     // Cheap lower bounds first; exact clearances only where a bound cannot
     // settle contact or the minimum. The result is the same as evaluating
     // every pose exactly.
@@ -337,7 +251,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
         if (step.covered(previous_low, c)) continue;
       }
       const Pose2& from = k == 0 ? state.pose : poses[static_cast<std::size_t>(k - 1)];
-      const bool clear = c > 0.0 && (leaving_contact || step_clear(world, footprint_, step, from,
+      const bool clear = c > 0.0 && (leaving_contact || detail::step_clear(world, footprint_, step, from,
                                                                    k == 0 ? start_clearance : exact(k - 1),
                                                                    poses[static_cast<std::size_t>(k)], c,
                                                                    k * params_.dt, params_.dt, margin));

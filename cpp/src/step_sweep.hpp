@@ -1,0 +1,65 @@
+#pragma once
+// Whether one step of a rollout (a turn in place, then a straight drive) keeps
+// the footprint clear: first from the clearances at its ends alone, then by
+// halving the pieces they cannot vouch for.
+#include <algorithm>
+#include <cmath>
+
+#include "fgdwa/clearance.hpp"
+#include "fgdwa/geometry.hpp"
+#include "fgdwa/robot.hpp"
+
+namespace fgdwa::detail {
+
+// How one step of a rollout moves the footprint and what its end clearances
+// alone can settle. The step turns in place by `turn` (rad), which moves no
+// footprint point farther than `turn_reach`, then drives `drive` metres
+// straight along the new heading. Clearances count from the safety margin.
+struct StepSweep {
+  double turn_reach = 0.0;  // m, 0 for a circle, whose turns move nothing
+  double drive = 0.0;       // m
+  double rho = 0.0;         // m, a circle's radius plus the margin; 0 for a polygon
+  double chord = 0.0;       // m, the polygon's Footprint::heading_chord(); 0 for a circle
+
+  StepSweep(const Footprint& footprint, double margin, double turn, double drive_length)
+      : turn_reach(footprint.is_circle() ? 0.0 : footprint.radius() * std::abs(wrap_angle(turn))),
+        drive(drive_length),
+        rho(footprint.is_circle() ? footprint.radius() + margin : 0.0),
+        chord(footprint.is_circle() ? 0.0 : footprint.heading_chord()) {}
+
+  // Whether a straight drive of `length` between placements of clearance c0 and
+  // c1 > 0 is clear. Each footprint point's path lies in the open discs of radii
+  // c0 and c1 around its ends when c0 + c1 > length. A polygon does better: any
+  // point of its sweep lies in one of the two placements, or within
+  // length - chord of one along the heading. A disc of radius rho does better
+  // still: its swept capsule lies in the obstacle-free discs of radius rho + c0
+  // and rho + c1 around the end centres when
+  // sqrt(c0 (2 rho + c0)) + sqrt(c1 (2 rho + c1)) > length (each term is how far
+  // the capsule's edge, rho from its axis, stays inside one disc).
+  bool drive_covered(double c0, double c1, double length) const {
+    if (c0 + c1 > length - chord) return true;
+    if (rho <= 0.0) return false;
+    const double a0 = c0 * (2.0 * rho + c0), a1 = c1 * (2.0 * rho + c1);  // the terms squared
+    // (sqrt(a0) + sqrt(a1))^2 >= a0 + a1: most steps pass without a square root.
+    return a0 + a1 > length * length || std::sqrt(a0) + std::sqrt(a1) > length;
+  }
+
+  // Whether the whole step, turn and drive, is clear given the clearances c0
+  // before it and c1 after it. The turned placement's clearance is at least
+  // c0 - turn_reach and at least c1 - drive: each footprint point moves no
+  // farther than that between them.
+  bool covered(double c0, double c1) const {
+    if (c0 <= 0.0 || c1 <= 0.0) return false;
+    if (turn_reach == 0.0) return drive_covered(c0, c1, drive);
+    const double turned = std::max(c0 - turn_reach, c1 - drive);
+    return turned > 0.0 && c0 + turned > turn_reach && drive_covered(turned, c1, drive);
+  }
+};
+
+// Whether the footprint is clear along the step from `from` (clearance c0, at
+// time t0) to `to` (clearance c1), checked against `world` where the end
+// clearances do not settle it. Clearances count from `margin`.
+bool step_clear(const ClearanceSource& world, const Footprint& footprint, const StepSweep& step, const Pose2& from,
+                double c0, const Pose2& to, double c1, double t0, double dt, double margin);
+
+}  // namespace fgdwa::detail
