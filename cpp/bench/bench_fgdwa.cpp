@@ -56,7 +56,7 @@
 // Cross-check: BM_Similarity replays the similarity critic directly (prepare,
 // then score on each recorded admissible rollout) outside the planner.
 //
-//   build/cpp/cpp/bench/bench_fgdwa      (about 25 s; the target for BM_Cycle is a median <= 0.5 ms)
+//   build/cmake/cpp/bench/bench_fgdwa      (about 25 s; the target for BM_Cycle is a median <= 0.5 ms)
 //
 // A summary table follows the benchmarks. ("Library was built as DEBUG" in the
 // output is about Debian's libbenchmark itself; fgdwa builds as Release.)

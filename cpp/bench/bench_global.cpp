@@ -22,8 +22,8 @@
 //     printed in the header; the same seed gives the same path only for the
 //     same number of iterations.
 //
-//   build/cpp/cpp/bench/bench_global                  (all, about 25 s)
-//   build/cpp/cpp/bench/bench_global --benchmark_filter=AStar
+//   build/cmake/cpp/bench/bench_global                  (all, about 25 s)
+//   build/cmake/cpp/bench/bench_global --benchmark_filter=AStar
 //
 // Before the benchmarks the map and A*'s path are printed, after them a
 // summary of the OMPL runs. ("Library was built as DEBUG" in the output is

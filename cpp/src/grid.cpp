@@ -102,7 +102,18 @@ void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vec
 }
 }  // namespace
 
-DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
+DistanceField::DistanceField(const OccupancyGrid& grid) : DistanceField(grid, nullptr) {}
+
+DistanceField::DistanceField(const OccupancyGrid& grid, const DistanceField& previous)
+    : DistanceField(grid, &previous) {}
+
+DistanceField::DistanceField(const OccupancyGrid& grid, const DistanceField* previous) : grid_(grid) {
+  if (previous) {
+    const OccupancyGrid& before = previous->grid();
+    if (before.rows() != grid.rows() || before.cols() != grid.cols() || before.resolution() != grid.resolution() ||
+        before.origin() != grid.origin())
+      throw Error("DistanceField: the previous field's grid has another layout (rows, cols, resolution or origin)");
+  }
   const int rows = grid.rows(), cols = grid.cols();
   const std::size_t n_cells = static_cast<std::size_t>(rows) * cols;
   std::vector<double> squared(n_cells);
@@ -130,7 +141,8 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
     for (int c = 0; c < cols; ++c) nearest_col[grid.index(r, c)] = arg[c];
   }
   distances_.resize(n_cells);
-  std::vector<long> nearest(n_cells);  // grid index of each cell's nearest obstacle cell, -1 for none
+  std::vector<long>& nearest = nearest_;
+  nearest.resize(n_cells);
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       const std::size_t i = grid.index(r, c);
@@ -139,6 +151,25 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
       const int col = nearest_col[i];
       nearest[i] = far ? -1 : static_cast<long>(grid.index(nearest_row[grid.index(r, col)], col));
     }
+
+  // A cell's candidates and piece bounds depend only on the nearest obstacles
+  // of the cells within two of it: where none of those changed, the previous
+  // field's are taken as they are.
+  std::vector<std::uint8_t> reuse(n_cells, 0);
+  if (previous) {
+    std::vector<std::uint8_t> changed(n_cells), near_change(n_cells, 0);
+    for (std::size_t i = 0; i < n_cells; ++i) changed[i] = nearest[i] != previous->nearest_[i];
+    for (int r = 0; r < rows; ++r)  // within two columns
+      for (int c = 0; c < cols; ++c)
+        for (int cc = std::max(0, c - 2); cc <= std::min(cols - 1, c + 2); ++cc)
+          near_change[grid.index(r, c)] |= changed[grid.index(r, cc)];
+    for (int r = 0; r < rows; ++r)  // then within two rows
+      for (int c = 0; c < cols; ++c) {
+        bool any = false;
+        for (int rr = std::max(0, r - 2); rr <= std::min(rows - 1, r + 2); ++rr) any = any || near_change[grid.index(rr, c)];
+        reuse[grid.index(r, c)] = !any;
+      }
+  }
 
   // The obstacle square nearest to a point is the one nearest to a cell centre
   // close to it: each cell keeps the distinct nearest obstacles of the cells
@@ -162,6 +193,19 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   for (int r = 0; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
       const std::size_t first = candidates_.size();
+      if (reuse[grid.index(r, c)]) {
+        const std::size_t i = grid.index(r, c);
+        candidates_.insert(candidates_.end(),
+                           previous->candidates_.begin() + static_cast<std::ptrdiff_t>(previous->candidate_start_[i]),
+                           previous->candidates_.begin() + static_cast<std::ptrdiff_t>(previous->candidate_start_[i + 1]));
+        for (int pr = 0; pr < sub; ++pr) {
+          const std::size_t at = static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c);
+          std::copy_n(previous->piece_lower_bound_.begin() + static_cast<std::ptrdiff_t>(at), sub,
+                      piece_lower_bound_.begin() + static_cast<std::ptrdiff_t>(at));
+        }
+        candidate_start_[i + 1] = candidates_.size();
+        continue;
+      }
       found.clear();
       for (int dr = -2; dr <= 2; ++dr)
         for (int dc = -2; dc <= 2; ++dc) {

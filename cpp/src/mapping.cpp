@@ -56,7 +56,8 @@ std::size_t ScanMap::commit(std::size_t added) {
 
 std::shared_ptr<const DistanceField> ScanMap::field() {
   if (stale_ || !field_) {
-    field_ = std::make_shared<const DistanceField>(grid_);
+    // Only the neighbourhoods of the new cells are recomputed.
+    field_ = field_ ? std::make_shared<const DistanceField>(grid_, *field_) : std::make_shared<const DistanceField>(grid_);
     stale_ = false;
   }
   return field_;

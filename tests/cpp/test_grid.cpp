@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "fgdwa/grid.hpp"
 #include "test_support.hpp"
@@ -116,6 +119,37 @@ TEST(DistanceField, SingleObstacleHandCase) {
   // Beyond the grid, straight out from the obstacle: the exact distance is 4.5 m.
   EXPECT_NEAR(field.distance(Vec2(7.5, 2.5)), 4.5, 1.0);
   EXPECT_NEAR(field.distance(Vec2(-4.0, -4.0)), std::hypot(6.0, 6.0), 1.0);
+}
+
+// A field updated from an earlier one answers exactly as one built afresh,
+// whether the map gained a few cells (a robot's scan map), many, or lost some.
+TEST(DistanceField, UpdatedFromAnEarlierFieldEqualsAFreshOne) {
+  std::mt19937 rng(21);
+  OccupancyGrid grid = test::random_rectangles(rng, 50, 70, 0.15, Vec2(-1.0, 2.0), 0.1);
+  std::vector<std::uint8_t> cells = grid.cells();
+  std::uniform_int_distribution<std::size_t> cell(0, cells.size() - 1);
+  std::uniform_real_distribution<double> x(-2.0, 10.0), y(1.0, 10.5), step(-0.3, 0.3);
+  auto previous = std::make_shared<const DistanceField>(grid);
+  const std::vector<std::pair<int, int>> rounds = {{3, 0}, {1, 0}, {40, 0}, {0, 25}, {400, 0}};  // cells added, removed
+  for (const auto& [added, removed] : rounds) {
+    for (int k = 0; k < added; ++k) cells[cell(rng)] = 1;
+    for (int k = 0; k < removed; ++k) cells[cell(rng)] = 0;
+    grid = OccupancyGrid(50, 70, 0.15, Vec2(-1.0, 2.0), cells);
+    const DistanceField fresh(grid);
+    const auto updated = std::make_shared<const DistanceField>(grid, *previous);
+    ASSERT_EQ(updated->cell_distances(), fresh.cell_distances());
+    for (int i = 0; i < 30000; ++i) {
+      const Vec2 p(x(rng), y(rng)), q = p + Vec2(step(rng), step(rng));
+      ASSERT_EQ(updated->distance(p), fresh.distance(p)) << p.transpose();
+      ASSERT_EQ(updated->lower_bound(p), fresh.lower_bound(p)) << p.transpose();
+      const double a = updated->segment_distance(p, q), b = fresh.segment_distance(p, q);
+      ASSERT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << p.transpose();
+    }
+    previous = updated;
+  }
+  // Another layout cannot serve.
+  const OccupancyGrid other(50, 71, 0.15, Vec2(-1.0, 2.0), std::vector<std::uint8_t>(50 * 71, 0));
+  expect_error_naming([&] { DistanceField(other, *previous); }, "layout");
 }
 
 }  // namespace

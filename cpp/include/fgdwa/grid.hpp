@@ -80,6 +80,11 @@ class TerrainGrid {
 class DistanceField {
  public:
   explicit DistanceField(const OccupancyGrid& grid);
+  // The same field as DistanceField(grid), built faster from the field of an
+  // earlier grid with the same layout (a map that gained or lost a few
+  // obstacles): where the nearest obstacles around a cell did not change, its
+  // look-up data is copied. Throws fgdwa::Error if the layouts differ.
+  DistanceField(const OccupancyGrid& grid, const DistanceField& previous);
 
   const OccupancyGrid& grid() const { return grid_; }
   double cell_distance(int row, int col) const { return distances_[grid_.index(row, col)]; }
@@ -122,8 +127,11 @@ class DistanceField {
   int bound_subdivisions() const { return subdivisions_; }
 
  private:
+  DistanceField(const OccupancyGrid& grid, const DistanceField* previous);
+
   OccupancyGrid grid_;
   std::vector<double> distances_;
+  std::vector<long> nearest_;  // grid index of each cell's nearest obstacle cell, -1 for none
   // Per cell, the centres of the obstacles that can be nearest to a point in it
   // (compressed rows: cell i owns candidates_[candidate_start_[i] .. candidate_start_[i + 1])).
   std::vector<std::size_t> candidate_start_;
