@@ -115,9 +115,13 @@ void init_grid(py::module_& m) {
   py::class_<DistanceField, std::shared_ptr<DistanceField>>(
       m, "DistanceField",
       "Exact Euclidean distance transform of a grid. `cells` holds centre-to-centre distances in metres "
-      "(scipy's distance_transform_edt(cells == 0) * resolution); `distance(points)` estimates the distance "
-      "to the nearest obstacle cell's edge, within one cell of the exact value.")
-      .def(py::init<const OccupancyGrid&>(), py::arg("grid"))
+      "(scipy's distance_transform_edt(cells == 0) * resolution); `distance(points)` is the exact distance "
+      "to the nearest obstacle cell's edge. Given `previous`, the field of an earlier grid with the same "
+      "layout, only the cells near changed obstacles are recomputed (same result, faster).")
+      .def(py::init([](const OccupancyGrid& grid, std::shared_ptr<const DistanceField> previous) {
+             return previous ? std::make_shared<DistanceField>(grid, *previous) : std::make_shared<DistanceField>(grid);
+           }),
+           py::arg("grid"), py::arg("previous") = nullptr)
       .def_property_readonly("grid", &DistanceField::grid)
       .def_property_readonly("cells",
                              [](const DistanceField& f) {

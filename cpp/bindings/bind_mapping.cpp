@@ -25,7 +25,8 @@ void init_mapping(py::module_& m) {
           "mark", [](ScanMap& map, py::handle points) { return map.mark(to_points(points, "points")); },
           py::arg("points"), "Marks the cells holding (n, 2) points; returns how many became occupied.")
       .def_property_readonly("grid", &ScanMap::grid, py::return_value_policy::copy, "The map so far (a copy).")
-      .def("field", &ScanMap::field, "Its distance field, rebuilt on the first call after new cells.")
+      .def("field", &ScanMap::field,
+           "Its distance field, brought up to date (around the new cells only) on the first call after new cells.")
       .def_property_readonly("occupied_count", &ScanMap::occupied_count)
       .def("__repr__", [](const ScanMap& map) {
         std::ostringstream s;

@@ -225,9 +225,9 @@ class TerrainGrid:
         ...
 class DistanceField:
     """
-    Exact Euclidean distance transform of a grid. `cells` holds centre-to-centre distances in metres (scipy's distance_transform_edt(cells == 0) * resolution); `distance(points)` estimates the distance to the nearest obstacle cell's edge, within one cell of the exact value.
+    Exact Euclidean distance transform of a grid. `cells` holds centre-to-centre distances in metres (scipy's distance_transform_edt(cells == 0) * resolution); `distance(points)` is the exact distance to the nearest obstacle cell's edge. Given `previous`, the field of an earlier grid with the same layout, only the cells near changed obstacles are recomputed (same result, faster).
     """
-    def __init__(self, grid: OccupancyGrid) -> None:
+    def __init__(self, grid: OccupancyGrid, previous: DistanceField = None) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -1151,7 +1151,7 @@ class ScanMap:
         ...
     def field(self) -> DistanceField:
         """
-        Its distance field, rebuilt on the first call after new cells.
+        Its distance field, brought up to date (around the new cells only) on the first call after new cells.
         """
     def integrate(self, scan: Scan) -> int:
         """

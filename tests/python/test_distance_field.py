@@ -49,3 +49,19 @@ def test_inside_an_obstacle_is_zero():
     field = fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.5))
     assert field.distance(np.array([[3.25, 2.25]]))[0] == 0.0
     assert field.distance(np.array([[4.0, 2.25]]))[0] == pytest.approx(0.5)
+
+
+def test_update_from_a_previous_field_matches_a_fresh_build(rng):
+    cells = random_block_grid(rng)
+    before = fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.1))
+    added = cells.copy()
+    added[rng.integers(0, cells.shape[0], 12), rng.integers(0, cells.shape[1], 12)] = 1
+    grid = fgdwa.OccupancyGrid(added, 0.1)
+    updated = fgdwa.DistanceField(grid, previous=before)
+    fresh = fgdwa.DistanceField(grid)
+    points = np.column_stack([rng.uniform(-1.0, 9.0, 4000), rng.uniform(-1.0, 7.0, 4000)])
+    np.testing.assert_array_equal(updated.distance(points), fresh.distance(points))
+    np.testing.assert_array_equal(updated.cells, fresh.cells)
+    other = fgdwa.OccupancyGrid(np.zeros((5, 5), np.uint8), 0.1)
+    with pytest.raises(fgdwa.FgdwaError, match="layout"):
+        fgdwa.DistanceField(other, previous=before)

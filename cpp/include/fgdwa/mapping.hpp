@@ -5,7 +5,7 @@
 // far, including those now behind it or hidden by nearer ones.
 //
 // Lifecycle: construct with the layout of the map to build; integrate() every
-// scan; field() when the planners need distances (rebuilt only after new cells).
+// scan; field() when the planners need distances (updated around new cells only).
 // Cells are never cleared: the map suits static worlds.
 
 #include <cstddef>
@@ -34,7 +34,8 @@ class ScanMap {
 
   // The map so far.
   const OccupancyGrid& grid() const { return grid_; }
-  // Its distance field, rebuilt on the first call after new cells.
+  // Its distance field, brought up to date on the first call after new cells
+  // (only the cells near them are recomputed).
   std::shared_ptr<const DistanceField> field();
   // Cells marked since construction.
   std::size_t occupied_count() const { return occupied_; }
