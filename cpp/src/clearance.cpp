@@ -143,12 +143,10 @@ double point_lower_bound(const DistanceField* field, const DistanceField* sensed
   return best;
 }
 
-// Every point of the footprint lies in one of its cover discs (a circle is its
-// own); a polygon's clearance may also sit up to half the outline tolerance
-// under the truth.
-double static_lower_bound(const DistanceField* field, const DistanceField* sensed, const Footprint& footprint,
-                          const Pose2& pose) {
-  if (footprint.is_circle()) return point_lower_bound(field, sensed, pose.position()) - footprint.radius();
+// A polygon's: every point of it lies in one of its cover discs, and its
+// clearance may sit up to half the outline tolerance under the truth.
+double polygon_lower_bound(const DistanceField* field, const DistanceField* sensed, const Footprint& footprint,
+                           const Pose2& pose) {
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   double best = std::numeric_limits<double>::infinity();
   for (const Footprint::CoverDisc& d : footprint.cover()) {
@@ -160,20 +158,12 @@ double static_lower_bound(const DistanceField* field, const DistanceField* sense
 
 }  // namespace
 
-double FieldClearance::clearance_lower_bound(const Footprint& footprint, const Pose2& pose, double t) const {
-  const Vec2 p = pose.position();
-  double best = static_lower_bound(field_.get(), sensed_.get(), footprint, pose);
-  for (const Disc& disc : discs_)
-    best = std::min(best, (disc.center_at(t) - p).norm() - disc.radius - footprint.radius());
-  return best;
-}
-
 void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
                                             double* out) const {
   const double r = footprint.radius();
   const std::size_t n = poses.size();
   if (!footprint.is_circle()) {
-    for (std::size_t k = 0; k < n; ++k) out[k] = static_lower_bound(field_.get(), sensed_.get(), footprint, poses[k]);
+    for (std::size_t k = 0; k < n; ++k) out[k] = polygon_lower_bound(field_.get(), sensed_.get(), footprint, poses[k]);
   } else {
     // One field at a time in tight loops: this runs for every pose of every rollout.
     if (field_) {

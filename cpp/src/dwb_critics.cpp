@@ -14,30 +14,6 @@ namespace {
 constexpr double kInscribedCost = 253.0;
 constexpr double kInflatedCost = 252.0;
 
-// The part [t0, t1] of the segment a + t (b - a), t in [0, 1], inside the box
-// [lo, hi] (Liang-Barsky); false when it misses the box.
-bool clip_to_box(const Vec2& a, const Vec2& b, const Vec2& lo, const Vec2& hi, double& t0, double& t1) {
-  t0 = 0.0;
-  t1 = 1.0;
-  const Vec2 d = b - a;
-  for (int axis = 0; axis < 2; ++axis) {
-    const double p[2] = {-d[axis], d[axis]};
-    const double q[2] = {a[axis] - lo[axis], hi[axis] - a[axis]};
-    for (int side = 0; side < 2; ++side) {
-      if (p[side] == 0.0) {
-        if (q[side] < 0.0) return false;  // parallel to this edge and outside it
-        continue;
-      }
-      const double r = q[side] / p[side];
-      if (p[side] < 0.0)
-        t0 = std::max(t0, r);
-      else
-        t1 = std::min(t1, r);
-    }
-  }
-  return t0 <= t1;
-}
-
 void push_distinct(std::vector<Vec2>& points, const Vec2& p) {
   if (points.empty() || (points.back() - p).squaredNorm() > 0.0) points.push_back(p);
 }
@@ -94,7 +70,7 @@ void dwb_local_path(const GlobalPath& path, const Vec2& robot, double half_exten
   for (std::size_t i = projection.segment; i < path.segment_count(); ++i) {
     const Vec2& to = points[i + 1];
     double t0, t1;
-    if (clip_to_box(from, to, lo, hi, t0, t1)) {
+    if (clip_segment_to_box(from, to, lo, hi, t0, t1)) {
       if (!inside) push_distinct(out.points, from + t0 * (to - from));
       inside = true;
       push_distinct(out.points, from + t1 * (to - from));

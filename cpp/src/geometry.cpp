@@ -16,12 +16,4 @@ double wrap_angle(double angle) {
 
 double angle_difference(double a, double b) { return wrap_angle(a - b); }
 
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  if (length2 == 0.0) return (p - a).norm();
-  const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
-
 }  // namespace fgdwa

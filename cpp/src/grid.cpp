@@ -293,18 +293,8 @@ namespace {
 // of the segment's ends to the square and the square's corners to the segment
 // (two disjoint convex shapes come nearest at a vertex of one of them).
 double segment_square_distance2(const Vec2& a, const Vec2& d, double h) {
-  double t0 = 0.0, t1 = 1.0;
-  for (int axis = 0; axis < 2; ++axis) {
-    const double p = d[axis], lo = -h - a[axis], hi = h - a[axis];
-    if (p == 0.0) {
-      if (lo > 0.0 || hi < 0.0) t0 = 2.0;  // parallel and outside
-    } else {
-      const double ta = lo / p, tb = hi / p;
-      t0 = std::max(t0, std::min(ta, tb));
-      t1 = std::min(t1, std::max(ta, tb));
-    }
-  }
-  if (t0 <= t1) return 0.0;
+  double t0, t1;
+  if (clip_segment_to_box(a, a + d, Vec2(-h, -h), Vec2(h, h), t0, t1)) return 0.0;
   const auto to_square = [h](const Vec2& q) {
     const double dx = std::max(std::abs(q.x()) - h, 0.0), dy = std::max(std::abs(q.y()) - h, 0.0);
     return dx * dx + dy * dy;
@@ -331,15 +321,12 @@ double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
     return std::numeric_limits<double>::quiet_NaN();
   const double half = 0.5 * grid_.resolution();
   const Vec2 d = b - a;
-  const double length2 = d.squaredNorm();
   double best = kInf;  // squared
   // A square no nearer than `best` by its centre's distance less its half
   // diagonal is skipped.
   const auto consider = [&](const Vec2& centre) {
-    const Vec2 from_a = centre - a;
-    const double t = length2 > 0.0 ? std::clamp(from_a.dot(d) / length2, 0.0, 1.0) : 0.0;
-    const double reach = std::max((from_a - t * d).norm() - M_SQRT2 * half, 0.0);
-    if (reach * reach < best) best = std::min(best, segment_square_distance2(-from_a, d, half));
+    const double reach = std::max(point_segment_distance(centre, a, b) - M_SQRT2 * half, 0.0);
+    if (reach * reach < best) best = std::min(best, segment_square_distance2(a - centre, d, half));
   };
   for (int r = static_cast<int>(y0); r <= static_cast<int>(y1); ++r)
     for (int c = static_cast<int>(x0); c <= static_cast<int>(x1); ++c) {

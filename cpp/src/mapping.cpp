@@ -55,8 +55,8 @@ std::size_t ScanMap::commit(std::size_t added) {
 }
 
 std::shared_ptr<const DistanceField> ScanMap::field() {
-  if (stale_ || !field_) {
-    // Only the neighbourhoods of the new cells are recomputed.
+  if (stale_) {
+    // After the first build, only the neighbourhoods of the new cells are recomputed.
     field_ = field_ ? std::make_shared<const DistanceField>(grid_, *field_) : std::make_shared<const DistanceField>(grid_);
     stale_ = false;
   }

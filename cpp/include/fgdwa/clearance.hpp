@@ -2,6 +2,7 @@
 // Where a rollout's clearance comes from. The planner asks one ClearanceSource
 // per pose of every rollout; `FieldClearance` (distance field plus analytic
 // discs) is the fast path, `CollisionWorld` (FCL, collision.hpp) the exact one.
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -26,17 +27,13 @@ class ClearanceSource {
   // Distance from the footprint placed at `pose` to the nearest obstacle, with
   // moving obstacles predicted `t` seconds ahead; <= 0 means contact.
   virtual double clearance(const Footprint& footprint, const Pose2& pose, double t) const = 0;
-  // A cheap value never above clearance(); the planner asks for the exact one
-  // only where the bound cannot settle what it needs. -inf: no bound.
-  virtual double clearance_lower_bound(const Footprint& footprint, const Pose2& pose, double t) const {
-    (void)footprint, (void)pose, (void)t;
-    return -std::numeric_limits<double>::infinity();
-  }
-  // clearance_lower_bound of every pose of a rollout, pose k predicted (k + 1) dt ahead.
+  // For every pose of a rollout (pose k predicted (k + 1) dt ahead), a cheap
+  // value never above clearance(); the planner asks for the exact one only
+  // where the bound cannot settle what it needs. -inf: no bound.
   virtual void clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
                                       double* out) const {
-    for (std::size_t k = 0; k < poses.size(); ++k)
-      out[k] = clearance_lower_bound(footprint, poses[k], static_cast<double>(k + 1) * dt);
+    (void)footprint, (void)dt;
+    std::fill(out, out + poses.size(), -std::numeric_limits<double>::infinity());
   }
 };
 
@@ -56,7 +53,6 @@ class FieldClearance : public ClearanceSource {
   const std::shared_ptr<const DistanceField>& sensed() const { return sensed_; }
 
   double clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
-  double clearance_lower_bound(const Footprint& footprint, const Pose2& pose, double t) const override;
   void clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
                               double* out) const override;
 

@@ -1,6 +1,7 @@
 #pragma once
 // Plain value types of the plane: poses, velocity commands, trajectories.
 #include <Eigen/Core>
+#include <algorithm>
 #include <vector>
 
 namespace fgdwa {
@@ -28,7 +29,39 @@ double wrap_angle(double angle);
 // Smallest signed difference a - b, in (-pi, pi].
 double angle_difference(double a, double b);
 
+// Inline: both run in the clearance queries' inner loops.
 // Distance from p to the segment a-b (to a when the segment is a point).
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b);
+inline double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  if (length2 == 0.0) return (p - a).norm();
+  const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+// The part [t0, t1] of the segment a + t (b - a), t in [0, 1], inside the box
+// [lo, hi] (Liang-Barsky); false when it misses the box.
+inline bool clip_segment_to_box(const Vec2& a, const Vec2& b, const Vec2& lo, const Vec2& hi, double& t0, double& t1) {
+  t0 = 0.0;
+  t1 = 1.0;
+  const Vec2 d = b - a;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double p[2] = {-d[axis], d[axis]};
+    const double q[2] = {a[axis] - lo[axis], hi[axis] - a[axis]};
+    for (int side = 0; side < 2; ++side) {
+      if (p[side] == 0.0) {
+        if (q[side] < 0.0) return false;  // parallel to this edge and outside it
+        continue;
+      }
+      const double r = q[side] / p[side];
+      if (p[side] < 0.0)
+        t0 = std::max(t0, r);
+      else
+        t1 = std::min(t1, r);
+    }
+  }
+  return t0 <= t1;
+}
+
 
 }  // namespace fgdwa
