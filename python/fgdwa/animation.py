@@ -27,10 +27,8 @@ from matplotlib.patches import Circle, Wedge  # noqa: E402
 
 from fgdwa._core import DistanceField, LaserScanner, Pose2, dynamic_window, rollout, sample_window  # noqa: E402
 from fgdwa.plotting import draw_world  # noqa: E402
-from fgdwa.scenario import Scenario, params_with, resolve_planner, trial_variation  # noqa: E402
-from fgdwa.sim import EpisodeResult  # noqa: E402
-
-SCAN_SEED_STRIDE = 1_000_003  # run_episode's per-cycle lidar seed: seed * stride + cycle
+from fgdwa.scenario import Scenario, scenario_params, trial_variation  # noqa: E402
+from fgdwa.sim import SCAN_SEED_STRIDE, EpisodeResult  # noqa: E402
 
 
 def frame_indices(steps: int, max_frames: int = 150) -> np.ndarray:
@@ -46,12 +44,11 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
     """Animate ``result``, the run of ``planner`` on ``scenario`` with ``seed``, into a GIF at ``path``.
 
     ``fan`` = (velocities, turn rates) of the rollout grid drawn each frame."""
-    preset = resolve_planner(scenario, planner)
-    params = params_with(preset.params, **scenario.overrides) if scenario.overrides else preset.params
+    _, params = scenario_params(scenario, planner)
     _, world, lidar = trial_variation(scenario, seed)
     true_grid = world.true_grid()
     scanner = LaserScanner(lidar, DistanceField(true_grid)) if true_grid is not None else None
-    n_steps = max(1, int(round(params.sim_time / params.dt)))
+    n_steps = params.n_steps
     limits = scenario.limits
     radius = scenario.footprint.radius
     window = scenario.window

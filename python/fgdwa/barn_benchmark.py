@@ -30,6 +30,7 @@ from fgdwa._core import FgdwaError, LidarParams, OccupancyGrid, RobotLimits, pla
 from fgdwa.datasets.barn import BarnDataset, barn_score
 from fgdwa.experiments import run_tasks
 from fgdwa.mapping import check_mapping
+from fgdwa.report import json_safe
 from fgdwa.scenario import params_with
 from fgdwa.sim import run_episode
 from fgdwa.world import World
@@ -251,7 +252,7 @@ def write_barn_outputs(runs: Sequence[BarnRun], out_dir, mapping: str, meta: Opt
         for run in runs:
             writer.writerow({k: _csv_value(run.row[k]) for k in RUN_FIELDS})
     summary = summarize(runs)
-    document = {"mapping": mapping, **(meta or {}), "planners": _json_safe(summary)}
+    document = {"mapping": mapping, **(meta or {}), "planners": json_safe(summary)}
     (out / "summary.json").write_text(json.dumps(document, indent=2) + "\n")
     if figure:
         from fgdwa.barn_figures import plot_failures
@@ -263,14 +264,6 @@ def write_barn_outputs(runs: Sequence[BarnRun], out_dir, mapping: str, meta: Opt
 def _csv_value(value):
     if isinstance(value, float):
         return "" if math.isnan(value) else f"{value:.6g}"
-    return value
-
-
-def _json_safe(value):
-    if isinstance(value, dict):
-        return {k: _json_safe(v) for k, v in value.items()}
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
     return value
 
 

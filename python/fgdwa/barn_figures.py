@@ -64,8 +64,7 @@ def _draw_run(ax, run) -> None:
     occupied = np.argwhere(cells != 0)
     resolution = (extent[1] - extent[0]) / cells.shape[1]
     ys = np.concatenate([extent[2] + (occupied[:, 0] + 0.5) * resolution, poses[:, 1]])
-    xs = np.concatenate([poses[:, 0], [extent[0], extent[1]]])
-    ax.set_xlim(max(extent[0], xs.min() - 0.5), extent[1])
+    ax.set_xlim(extent[0], extent[1])
     ax.set_ylim(ys.min() - 0.3, ys.max() + 0.3)
     ax.set_aspect("equal")
     ax.set_title(f"world {row['world']} {row['planner']}: {row['outcome']} ({row['time']:.0f} s)", fontsize=8)

@@ -432,8 +432,6 @@ def judge_claims(claims: Iterable[Claim], comparisons: Sequence[dict], finishing
             row.update(effect_pct=ours.get("effect_pct", float("nan")), p=ours.get("fisher_p", float("nan")),
                        test="Fisher exact", ours=f"{_fmt(ours.get('rate_proposed'), 0)} % vs "
                                                   f"{_fmt(ours.get('rate_other'), 0)} %")
-            if ours and ours["rate_proposed"] == ours["rate_other"]:
-                row["effect_pct"] = 0.0
         else:
             digits = 1 if claim.metric == "steps" else 3
             found = [c for c in comparisons if c["metric"] == claim.metric and c["other"] == claim.other]

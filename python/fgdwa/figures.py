@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import textwrap
 from pathlib import Path
-from typing import Optional
 
 import matplotlib
 
@@ -17,6 +16,7 @@ from matplotlib.transforms import blended_transform_factory  # noqa: E402
 from fgdwa.experiments import METRIC_BY_KEY, ExperimentResult, TrialRecord, planner_label, resolve_scenario  # noqa: E402
 from fgdwa.plotting import draw_world, save_figure  # noqa: E402
 from fgdwa.report import fmt_p  # noqa: E402
+from fgdwa.stats import finite  # noqa: E402
 
 DPI = 100
 COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown")
@@ -27,15 +27,15 @@ def _save(fig, path: Path) -> Path:
     return save_figure(fig, path, dpi=DPI, bbox_inches="tight")
 
 
-def danger_points_of(result: ExperimentResult, scenario, global_path: np.ndarray) -> np.ndarray:
+def danger_points_of(scenario, global_path: np.ndarray) -> np.ndarray:
     """The global path's danger points (SPEC 9), as the episodes compute them."""
     from fgdwa._core import DistanceField
-    from fgdwa.metrics import danger_points
+    from fgdwa.metrics import DANGER_MARGIN, danger_points
 
     grid = scenario.world.true_grid()
     if grid is None or global_path is None:
         return np.zeros((0, 2))
-    return danger_points(global_path, DistanceField(grid), scenario.footprint.radius + 0.3)
+    return danger_points(global_path, DistanceField(grid), scenario.footprint.radius + DANGER_MARGIN)
 
 
 def paths_figure(result: ExperimentResult, path: Path, trial: int = 0, scenario=None) -> Path:
@@ -58,7 +58,7 @@ def paths_figure(result: ExperimentResult, path: Path, trial: int = 0, scenario=
         if reference.key_nodes is not None:
             ax.plot(*reference.key_nodes.T, "+", color="tab:blue", markersize=11, markeredgewidth=2,
                     label="key nodes")
-        danger = danger_points_of(result, scenario, reference.global_path)
+        danger = danger_points_of(scenario, reference.global_path)
         if len(danger):
             ax.scatter(*danger.T, s=160, facecolors="none", edgecolors="gold", linewidths=1.8, label="danger points")
     for k, planner in enumerate(result.spec.planners):
@@ -94,7 +94,7 @@ def boxplot_figure(result: ExperimentResult, path: Path, metrics=BOX_METRICS) ->
     fig, axes = plt.subplots(1, len(metrics), figsize=(4.3 * len(metrics), 4.8))
     axes = np.atleast_1d(axes)
     for ax, key in zip(axes, metrics):
-        data = [np.asarray([v for v in result.values(p, key) if np.isfinite(v)]) for p in planners]
+        data = [finite(result.values(p, key)) for p in planners]
         positions = np.arange(1, len(planners) + 1)
         filled = [(pos, d) for pos, d in zip(positions, data) if len(d)]
         if filled:

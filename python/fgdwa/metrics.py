@@ -6,6 +6,8 @@ import numpy as np
 
 from fgdwa._core import DistanceField
 
+DANGER_MARGIN = 0.3  # m beyond the footprint's radius: the default danger clearance (SPEC 9)
+
 
 def danger_points(path: np.ndarray, static: DistanceField, danger_clearance: float, spacing: float = 1.0,
                   step: float = 0.05) -> np.ndarray:

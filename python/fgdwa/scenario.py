@@ -89,6 +89,14 @@ def resolve_planner(scenario: Scenario, planner=None) -> PlannerPreset:
     return planner_preset(planner or scenario.planner)
 
 
+def scenario_params(scenario: Scenario, planner=None) -> tuple:
+    """(preset, planner parameters) of ``planner`` on ``scenario``: the preset's
+    parameters with the scenario's overrides."""
+    preset = resolve_planner(scenario, planner)
+    params = params_with(preset.params, **scenario.overrides) if scenario.overrides else preset.params
+    return preset, params
+
+
 def trial_variation(scenario: Scenario, seed: int) -> tuple:
     """(start pose, world, lidar) of one trial: the seed's draws applied to the scenario."""
     rng = np.random.default_rng(int(seed))
@@ -122,8 +130,7 @@ def run_scenario(scenario: Scenario, planner=None, seed: int = 0, **kwargs) -> E
     map and moving ones reach it only that way); a fuzzy preset also reads its
     weights from the scan. Keyword arguments go to ``run_episode``.
     """
-    preset = resolve_planner(scenario, planner)
-    params = params_with(preset.params, **scenario.overrides) if scenario.overrides else preset.params
+    preset, params = scenario_params(scenario, planner)
     start, world, lidar = trial_variation(scenario, seed)
     options = dict(global_method=scenario.global_method, global_options=dict(scenario.global_options),
                    max_steps=scenario.max_steps, goal_tolerance=scenario.goal_tolerance, window=scenario.window)

@@ -430,7 +430,7 @@ class _Reader:
             image = np.asarray(matplotlib.image.imread(path), dtype=float)
         except Exception as error:  # matplotlib/PIL raise many kinds for a bad file
             self.fail(key, value, f"cannot read the image ({error})")
-        if image.dtype.kind in "iu" or image.max(initial=0) > 1.0:
+        if image.max(initial=0) > 1.0:
             image = image / 255.0
         if image.ndim == 2:
             luminance, alpha = image, None

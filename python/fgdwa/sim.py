@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from typing import Optional, Sequence
+from typing import Optional
 
 import numpy as np
 
@@ -17,7 +17,6 @@ from fgdwa._core import (
     CollisionWorld,
     Controller,
     DetectWindowParams,
-    Disc,
     DistanceField,
     FgdwaError,
     Footprint,
@@ -25,25 +24,24 @@ from fgdwa._core import (
     GlobalStatus,
     LaserScanner,
     LidarParams,
-    OccupancyGrid,
     PlannerPreset,
     PlannerParams,
     PlanResult,
     Pose2,
     RobotLimits,
     RobotState,
-    Status,
     Twist,
     planner_preset,
     step,
 )
 from fgdwa.global_planning import plan_global
 from fgdwa.mapping import ScanNavigator, check_mapping
-from fgdwa.metrics import danger_point_clearance, danger_points, smoothness
+from fgdwa.metrics import DANGER_MARGIN, danger_point_clearance, danger_points, smoothness
 from fgdwa.world import MovingObstacle, World  # noqa: F401  (World is part of this module's API)
 
 OUTCOMES = ("success", "collision", "fall", "timeout")
 GLOBAL_PATH_MARGIN = 0.3  # m kept beyond the footprint's radius by the global path where the map allows
+SCAN_SEED_STRIDE = 1_000_003  # the lidar's seed in cycle k of a run with `seed`: seed * stride + k
 
 
 @dataclass
@@ -220,11 +218,13 @@ def run_episode(
     truth = CollisionWorld(true_grid, world.discs_at(0.0))
     if truth.in_collision(footprint, start_pose, 0.0):
         raise FgdwaError(f"start = {tuple(start_pose)}: the robot's footprint there overlaps an obstacle")
-    map_field = DistanceField(world.grid) if world.grid is not None and not scanning else None
-    scanner = None
-    if lidar is not None:
-        true_field = DistanceField(true_grid) if true_grid is not None else None
-        scanner = LaserScanner(lidar, true_field)
+    # One field of what really stands there, for the lidar and the danger-point metric; the
+    # planner's map is the same field unless the world hides obstacles from it.
+    true_field = DistanceField(true_grid) if true_grid is not None else None
+    map_field = None
+    if world.grid is not None and not scanning:
+        map_field = true_field if world.hidden is None else DistanceField(world.grid)
+    scanner = LaserScanner(lidar, true_field) if lidar is not None else None
     controller = Controller(limits, footprint, params, map_field, weight_policy, window)
     planner = controller.planner
     navigator = None
@@ -270,7 +270,7 @@ def run_episode(
         tic = time.perf_counter()
         discs_now = world.discs_at(t)
         if scanner is not None:
-            scan = scanner.scan(state.pose, discs_now, 0.0, seed=int(seed) * 1_000_003 + k)
+            scan = scanner.scan(state.pose, discs_now, 0.0, seed=int(seed) * SCAN_SEED_STRIDE + k)
         if navigator is not None:
             update = navigator.update(scan, position, k)
             if update.new_cells:
@@ -325,10 +325,9 @@ def run_episode(
     deviations = deviations[np.isfinite(deviations)]
     danger = float("nan")
     if path is not None and true_grid is not None:
-        static = DistanceField(true_grid)
-        threshold = footprint.radius + 0.3 if danger_clearance is None else float(danger_clearance)
-        points = danger_points(path.points, static, threshold)
-        danger = danger_point_clearance(poses_arr[:, :2], points, static)
+        threshold = footprint.radius + DANGER_MARGIN if danger_clearance is None else float(danger_clearance)
+        points = danger_points(path.points, true_field, threshold)
+        danger = danger_point_clearance(poses_arr[:, :2], points, true_field)
     finite = clear_arr[np.isfinite(clear_arr)]
     steps = len(commands)
     return EpisodeResult(
