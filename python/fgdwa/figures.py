@@ -50,8 +50,7 @@ def paths_figure(result: ExperimentResult, path: Path, trial: int = 0, scenario=
     draw_world(ax, world, 0.0)
     for mover in world.movers:
         if mover.waypoints is not None:
-            route = mover._route()
-            ax.plot(*route.T, ":", color="tab:purple", linewidth=0.8)
+            ax.plot(*mover.route.T, ":", color="tab:purple", linewidth=0.8)
     reference = next((r for r in result.records if r.global_path is not None and r.trial == trial), None)
     if reference is not None:
         ax.plot(*reference.global_path.T, "--", color="tab:red", linewidth=1.2, label="global path")

@@ -105,7 +105,7 @@ def trial_variation(scenario: Scenario, seed: int) -> tuple:
         [rng.normal(0, v.start_xy_std), rng.normal(0, v.start_xy_std), rng.normal(0, v.start_theta_std)])
     world = scenario.world
     if v.mover_phase and world.movers:
-        movers = [dataclasses.replace(m, phase=m.phase + float(rng.uniform(0.0, _period(m))))
+        movers = [dataclasses.replace(m, phase=m.phase + float(rng.uniform(0.0, m.period)))
                   for m in world.movers]
         world = dataclasses.replace(world, movers=tuple(movers))
     lidar = scenario.lidar
@@ -113,14 +113,6 @@ def trial_variation(scenario: Scenario, seed: int) -> tuple:
         lidar = LidarParams(fov_deg=lidar.fov_deg, beams=lidar.beams, max_range=lidar.max_range,
                             noise_std=v.lidar_noise_std)
     return start, world, lidar
-
-
-def _period(mover) -> float:
-    """Time (s) for a mover to come back to where it was: its route over its speed."""
-    if mover.waypoints is None or mover.speed <= 0:
-        return 0.0
-    legs = np.diff(mover._route(), axis=0)
-    return float(np.hypot(legs[:, 0], legs[:, 1]).sum() / mover.speed)
 
 
 def run_scenario(scenario: Scenario, planner=None, seed: int = 0, **kwargs) -> EpisodeResult:

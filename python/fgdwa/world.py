@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Optional, Sequence
 
 import numpy as np
@@ -57,37 +58,53 @@ class MovingObstacle:
             if velocity.shape != (2,) or not np.all(np.isfinite(velocity)):
                 raise FgdwaError(f"moving obstacle velocity = {self.velocity!r}: expected (vx, vy)")
 
-    def _route(self) -> np.ndarray:
+    @cached_property
+    def route(self) -> np.ndarray:
+        """The waypoints in travel order: closed for a loop, there and back for
+        back_and_forth; None without waypoints. Computed once."""
         points = self.waypoints
+        if points is None:
+            return None
         if self.mode == "loop":
             return np.vstack([points, points[:1]])
         if self.mode == "back_and_forth":
             return np.vstack([points, points[-2::-1]])
         return points
 
+    @cached_property
+    def _legs(self) -> tuple:
+        """(leg vectors, leg lengths, cumulative lengths) of the route."""
+        legs = np.diff(self.route, axis=0)
+        lengths = np.hypot(legs[:, 0], legs[:, 1])
+        return legs, lengths, np.cumsum(lengths)
+
+    @property
+    def period(self) -> float:
+        """Time (s) to come back to where it was: one pass of the route at its speed; 0 without waypoints."""
+        if self.waypoints is None or self.speed <= 0:
+            return 0.0
+        return float(self._legs[2][-1] / self.speed)
+
     def state_at(self, t: float) -> tuple:
         """(position, velocity) at time ``t`` (s) of the episode."""
         clock = max(0.0, t + self.phase - self.start_delay)
+        moving = t + self.phase >= self.start_delay
         if self.waypoints is None:
             start, velocity = np.asarray(self.start, float), np.asarray(self.velocity, float)
-            moving = t + self.phase >= self.start_delay
             return start + clock * velocity, velocity if moving else np.zeros(2)
-        route = self._route()
-        legs = np.diff(route, axis=0)
-        lengths = np.hypot(legs[:, 0], legs[:, 1])
-        total = lengths.sum()
+        route = self.route
+        legs, lengths, ends = self._legs
+        total = ends[-1]
         travelled = clock * self.speed
         if total <= 0:
             return route[0].copy(), np.zeros(2)
         if self.mode == "once" and travelled >= total:
             return route[-1].copy(), np.zeros(2)
         travelled %= total
-        ends = np.cumsum(lengths)
         i = int(np.searchsorted(ends, travelled, side="right"))
         i = min(i, len(legs) - 1)
         into = travelled - (ends[i] - lengths[i])
         direction = legs[i] / lengths[i] if lengths[i] > 0 else np.zeros(2)
-        moving = t + self.phase >= self.start_delay
         return route[i] + into * direction, direction * self.speed if moving else np.zeros(2)
 
     def disc_at(self, t: float) -> Disc:
