@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import dataclasses
 from pathlib import Path
-from typing import Optional
 
 import matplotlib
 
@@ -98,11 +97,11 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
         sector.set_center((x, y))
         sector.set_theta1(np.degrees(theta) - window.half_angle_deg)
         sector.set_theta2(np.degrees(theta) + window.half_angle_deg)
-        sector.set_radius(window.radius)
-        for patch, disc in zip(discs, world.discs_at(t)):
+        discs_now = world.discs_at(t)
+        for patch, disc in zip(discs, discs_now):
             patch.center = tuple(disc.center)
         if scanner is not None:
-            scan = scanner.scan(Pose2(x, y, theta), world.discs_at(t), 0.0, seed=int(seed) * SCAN_SEED_STRIDE + k)
+            scan = scanner.scan(Pose2(x, y, theta), discs_now, 0.0, seed=int(seed) * SCAN_SEED_STRIDE + k)
             points = scan.hit_points
             hits.set_offsets(points if len(points) else np.zeros((0, 2)))
         current = tuple(commands[k - 1]) if k > 0 else (0.0, 0.0)
@@ -116,12 +115,9 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
             fan_lines.set_segments([])
             chosen.set_data([], [])
         text = f"t = {t:5.2f} s  step {k}/{steps}"
-        if k < len(result.beta) and np.isfinite(result.beta[k]):
-            text += f"  beta {result.beta[k]:.2f}"
-        if k < len(result.delta) and np.isfinite(result.delta[k]):
-            text += f"  delta {result.delta[k]:.2f}"
-        if k < len(result.density) and np.isfinite(result.density[k]):
-            text += f"  I {result.density[k]:.2f}"
+        for name, values in (("beta", result.beta), ("delta", result.delta), ("I", result.density)):
+            if k < len(values) and np.isfinite(values[k]):
+                text += f"  {name} {values[k]:.2f}"
         if k == steps:
             text += f"  {result.outcome}"
         label.set_text(text)
@@ -137,21 +133,3 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
             writer.grab_frame()
     plt.close(fig)
     return path
-
-
-def read_gif_frames(path) -> int:
-    """Number of frames of a GIF (Pillow), to check one was written whole."""
-    from PIL import Image
-
-    with Image.open(path) as image:
-        return int(getattr(image, "n_frames", 1))
-
-
-def scenario_gif(scenario: Scenario, path, planner=None, seed: int = 0, result: Optional[EpisodeResult] = None,
-                 **kwargs) -> Path:
-    """Run (unless ``result`` is given) and animate one trial."""
-    if result is None:
-        from fgdwa.scenario import run_scenario
-
-        result = run_scenario(scenario, planner, seed)
-    return write_gif(result, scenario, path, planner=planner, seed=seed, **kwargs)

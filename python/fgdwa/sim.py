@@ -117,6 +117,15 @@ def path_length(points: np.ndarray) -> float:
     return float(np.sum(np.hypot(*np.diff(points[:, :2], axis=0).T)))
 
 
+def _along_step(before, after, spacing: float):
+    """(f, x, y) every ``spacing`` metres along the straight part of a step, f in (0, 1]."""
+    x0, y0, x1, y1 = before[0], before[1], after[0], after[1]
+    pieces = max(1, int(np.ceil(np.hypot(x1 - x0, y1 - y0) / spacing)))
+    for i in range(1, pieces + 1):
+        f = i / pieces
+        yield f, x0 + f * (x1 - x0), y0 + f * (y1 - y0)
+
+
 def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, after, t: float, dt: float,
                          spacing: float = 0.05) -> bool:
     """Whether the footprint touches an obstacle anywhere along one step.
@@ -125,14 +134,8 @@ def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, af
     positions in between lie on the segment from ``before`` to ``after``; they
     are checked every ``spacing`` metres, the discs moving with them.
     """
-    x0, y0 = before[0], before[1]
-    x1, y1, theta = after[0], after[1], after[2]
-    pieces = max(1, int(np.ceil(np.hypot(x1 - x0, y1 - y0) / spacing)))
-    for i in range(1, pieces + 1):
-        f = i / pieces
-        if truth.in_collision(footprint, (x0 + f * (x1 - x0), y0 + f * (y1 - y0), theta), t + f * dt):
-            return True
-    return False
+    return any(truth.in_collision(footprint, (x, y, after[2]), t + f * dt)
+               for f, x, y in _along_step(before, after, spacing))
 
 
 def run_episode(
@@ -378,12 +381,7 @@ def _backup_command(pose, speed: float, dt: float, footprint: Footprint, seen, m
 
 def _falls(world: World, before, after, spacing: float = 0.05) -> bool:
     """Whether the robot's centre enters grade-4 terrain during a step."""
-    pieces = max(1, int(np.ceil(np.hypot(after[0] - before[0], after[1] - before[1]) / spacing)))
-    for i in range(1, pieces + 1):
-        f = i / pieces
-        if world.grade_at((before[0] + f * (after[0] - before[0]), before[1] + f * (after[1] - before[1]))) >= 4:
-            return True
-    return False
+    return any(world.grade_at((x, y)) >= 4 for _, x, y in _along_step(before, after, spacing))
 
 
 def _global_path(world: World, start, goal, footprint: Footprint, params: PlannerParams, given, method: str,
