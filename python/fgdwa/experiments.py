@@ -28,11 +28,11 @@ import numpy as np
 
 from fgdwa import stats
 from fgdwa._core import FgdwaError
+from fgdwa.report import SIGNIFICANCE, finishing_rate
 from fgdwa.scenario import Scenario, run_scenario
 
 EXECUTORS = ("local", "dask", "serial")
 DEFAULT_WORKERS = 2
-SIGNIFICANCE = 0.05
 
 
 @dataclass(frozen=True)
@@ -359,7 +359,7 @@ class ExperimentResult:
         sp, n_p = self.finishing(self.spec.proposed)
         for other in self.spec.others:
             so, n_o = self.finishing(other)
-            rate_p, rate_o = _rate(sp, n_p), _rate(so, n_o)
+            rate_p, rate_o = finishing_rate(sp, n_p), finishing_rate(so, n_o)
             out.append({"metric": FINISHING, "proposed": self.spec.proposed, "other": other,
                         "rate_proposed": rate_p, "rate_other": rate_o,
                         "effect_pct": stats.effect_percent(rate_p, rate_o),
@@ -408,10 +408,6 @@ class ExperimentResult:
             "claims": judge_claims(self.spec.claims, comparisons, finishing),
             "cycle_time_ms": self.cycle_time_stats(),
         }
-
-
-def _rate(successes: int, runs: int) -> float:
-    return 100.0 * successes / runs if runs else float("nan")
 
 
 def _cycle_stats(times: np.ndarray) -> dict:

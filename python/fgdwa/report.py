@@ -14,6 +14,13 @@ import os
 from pathlib import Path
 from typing import Optional, Sequence
 
+SIGNIFICANCE = 0.05  # two-sided p below which an effect counts as significant
+
+
+def finishing_rate(successes: int, runs: int) -> float:
+    """Successes in % of the runs; NaN without runs."""
+    return 100.0 * successes / runs if runs else float("nan")
+
 EXCLUSION_NOTE = ("Runs that did not reach the goal (collision, fall or timeout) count in the finishing rate "
                   "only: their running time, steps, mileage and clearances are left out of the means, the "
                   "tests and the box plots, as the paper leaves out GDWA's unfinished runs (Tables 15-18). "
@@ -147,7 +154,7 @@ def finishing_table(d: dict) -> Table:
     rates = []
     for p in planners:
         f = d["finishing"][p]
-        rates.append(f"{fmt(100.0 * f['successes'] / f['runs'] if f['runs'] else float('nan'), 0)} "
+        rates.append(f"{fmt(finishing_rate(f['successes'], f['runs']), 0)} "
                      f"({f['successes']}/{f['runs']})")
     effect, fisher = ["Effect (%)"], ["Fisher p"]
     for p in planners:
@@ -181,7 +188,7 @@ def comparison_table(d: dict) -> Table:
 
 
 def _significant(p) -> bool:
-    return isinstance(p, float) and math.isfinite(p) and p < 0.05
+    return isinstance(p, float) and math.isfinite(p) and p < SIGNIFICANCE
 
 
 def claim_p(c: dict) -> str:
@@ -288,7 +295,7 @@ def write_csvs(d: dict, directory: Path) -> list:
     for p in d["planners"]:
         f = d["finishing"][p]
         summary_rows.append(dict(planner=p, metric="finishing_rate", n=f["runs"],
-                                 mean=100.0 * f["successes"] / f["runs"] if f["runs"] else float("nan")))
+                                 mean=finishing_rate(f["successes"], f["runs"])))
         for key in metric_keys:
             summary_rows.append(dict(planner=p, metric=key, **d["summary"][p][key]))
     summary = _write_csv(directory / f"{name}_summary.csv",

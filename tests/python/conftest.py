@@ -1,7 +1,35 @@
+import os
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 import fgdwa
+from fgdwa.datasets import load_barn
+
+DEFAULT_BARN_DIR = Path("/work/shared/benchmarks/barn")
+
+
+def barn_locations():
+    """(barn.npz, the directory of the challenge's original files, where they were looked for):
+    FGDWA_BARN_DATA (barn.npz or its directory), else the shared benchmark directory."""
+    env = os.environ.get("FGDWA_BARN_DATA")
+    base = Path(env) if env else DEFAULT_BARN_DIR
+    npz = base if base.suffix == ".npz" else base / "barn.npz"
+    return npz, npz.parent / "worlds", ("FGDWA_BARN_DATA" if env else "the default location")
+
+
+@pytest.fixture(scope="session")
+def barn_file():
+    npz, _, where = barn_locations()
+    if not npz.is_file():
+        pytest.skip(f"BARN data not found: no {npz} ({where}); set FGDWA_BARN_DATA to barn.npz or its directory")
+    return npz
+
+
+@pytest.fixture(scope="session")
+def barn(barn_file):
+    return load_barn(barn_file)
 
 
 @pytest.fixture

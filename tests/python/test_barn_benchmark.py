@@ -1,14 +1,12 @@
 """The BARN benchmark runner: episodes on BARN worlds with the map known or
 built from scans, the per-planner summary, the command and its files.
 
-Reads the shared barn.npz (or FGDWA_BARN_DATA) like test_barn_data.py; skips
+Reads the shared barn.npz (or FGDWA_BARN_DATA) through conftest's fixtures; skips
 without it.
 """
 
 import csv
 import json
-import os
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -26,28 +24,10 @@ from fgdwa.barn_benchmark import (
     run_barn_task,
     summarize,
 )
-from fgdwa.datasets import load_barn
 from fgdwa.mapping import ScanNavigator
 
-DEFAULT_BARN = Path("/work/shared/benchmarks/barn/barn.npz")
 # Worlds of the challenge's local test set, from open to tight fields.
 FIVE_WORLDS = [0, 60, 120, 210, 288]
-
-
-@pytest.fixture(scope="module")
-def barn_file():
-    env = os.environ.get("FGDWA_BARN_DATA")
-    path = Path(env) if env else DEFAULT_BARN
-    if path.is_dir():
-        path = path / "barn.npz"
-    if not path.is_file():
-        pytest.skip(f"BARN data not found at {path}; set FGDWA_BARN_DATA")
-    return path
-
-
-@pytest.fixture(scope="module")
-def barn(barn_file):
-    return load_barn(barn_file)
 
 
 @pytest.mark.parametrize("mapping", ["known", "scan"])

@@ -7,15 +7,14 @@ neither is there.
 """
 
 import argparse
-import os
 import re
 import shutil
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import fgdwa
+from conftest import barn_locations
 from fgdwa import FgdwaError
 from fgdwa.datasets import (
     BarnDataset,
@@ -29,28 +28,7 @@ from fgdwa.datasets import (
     register_barn_commands,
 )
 
-DEFAULT_BARN_DIR = Path("/work/shared/benchmarks/barn")
 CONVERTED_WORLDS = (0, 150, 299)  # the worlds whose original files are in worlds/
-
-
-def _barn_locations():
-    env = os.environ.get("FGDWA_BARN_DATA")
-    base = Path(env) if env else DEFAULT_BARN_DIR
-    npz = base if base.suffix == ".npz" else base / "barn.npz"
-    return npz, npz.parent / "worlds", ("FGDWA_BARN_DATA" if env else "the default location")
-
-
-@pytest.fixture(scope="module")
-def barn_file():
-    npz, _, where = _barn_locations()
-    if not npz.is_file():
-        pytest.skip(f"BARN data not found: no {npz} ({where}); set FGDWA_BARN_DATA to barn.npz or its directory")
-    return npz
-
-
-@pytest.fixture(scope="module")
-def barn(barn_file):
-    return load_barn(barn_file)
 
 
 @pytest.fixture(scope="module")
@@ -61,7 +39,7 @@ def raw(barn_file):
 
 @pytest.fixture(scope="module")
 def world_dir():
-    _, worlds, where = _barn_locations()
+    _, worlds, where = barn_locations()
     needed = [worlds / f"{kind}_{i}.{ext}" for i in CONVERTED_WORLDS for kind, ext in (("world", "world"), ("path", "npy"))]
     missing = [p.name for p in needed if not p.is_file()]
     if missing:
