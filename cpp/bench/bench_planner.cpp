@@ -19,6 +19,7 @@
 #include "fgdwa/collision.hpp"
 #include "fgdwa/grid.hpp"
 #include "fgdwa/planner.hpp"
+#include "fgdwa/presets.hpp"
 #include "bench_maps.hpp"
 
 namespace {
@@ -74,7 +75,7 @@ void BM_PlanFieldClearance(benchmark::State& bench) {
 // The same cycle for a rectangle: the Jackal's 0.42 m x 0.33 m (robot preset
 // "jackal", the BARN robot), with the default limits.
 void BM_PlanFieldClearanceJackal(benchmark::State& bench) {
-  Scene scene(Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}}));
+  Scene scene(robot_preset("jackal").footprint);
   const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
   plan_cycles(bench, scene, world);
 }

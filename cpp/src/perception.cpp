@@ -41,18 +41,10 @@ double LaserScanner::cast_grid(const Vec2& origin, const Vec2& dir) const {
   const double res = grid.resolution();
   // Obstacles lie only inside the grid: clip the ray to its rectangle.
   const Vec2 lo = grid.origin(), hi = lo + Vec2(grid.cols() * res, grid.rows() * res);
-  double t = 0.0, range = params_.max_range;
-  for (int axis = 0; axis < 2; ++axis) {
-    if (dir[axis] == 0.0) {
-      if (origin[axis] < lo[axis] || origin[axis] > hi[axis]) return kInf;
-      continue;
-    }
-    double t0 = (lo[axis] - origin[axis]) / dir[axis], t1 = (hi[axis] - origin[axis]) / dir[axis];
-    if (t0 > t1) std::swap(t0, t1);
-    t = std::max(t, t0);
-    range = std::min(range, t1);
-  }
-  if (t > range) return kInf;
+  double enter = 0.0, leave = 1.0;
+  if (!clip_segment_to_box(origin, origin + params_.max_range * dir, lo, hi, enter, leave)) return kInf;
+  double t = enter * params_.max_range;
+  const double range = leave * params_.max_range;
   // Far from obstacles, jump by a lower bound of the clearance: nothing lies closer.
   while (t < range) {
     const double d = world_->lower_bound(origin + t * dir);
