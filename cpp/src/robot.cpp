@@ -120,11 +120,6 @@ Pose2 step(const Pose2& pose, const Twist& twist, double dt) {
   return next;
 }
 
-RolloutHeadings::RolloutHeadings(double start_theta, double cos_start, double sin_start, double omega, double dt,
-                                 int n_steps) {
-  assign(start_theta, cos_start, sin_start, omega, dt, n_steps);
-}
-
 void RolloutHeadings::assign(double start_theta, double cos_start, double sin_start, double omega, double dt,
                              int n_steps) {
   const std::size_t n = static_cast<std::size_t>(std::max(n_steps, 0));

@@ -86,9 +86,7 @@ Trajectory rollout(const Pose2& start, const Twist& twist, double dt, int n_step
 // depend on the start heading and omega only, so every command of a window
 // with the same omega shares them.
 struct RolloutHeadings {
-  RolloutHeadings() = default;
-  RolloutHeadings(double start_theta, double cos_start, double sin_start, double omega, double dt, int n_steps);
-  // Recomputes them in place, reusing the storage.
+  // Computes them in place, reusing the storage.
   void assign(double start_theta, double cos_start, double sin_start, double omega, double dt, int n_steps);
   std::vector<double> theta, cos, sin;  // per pose; theta wrapped to (-pi, pi]
 };
