@@ -69,7 +69,8 @@ void init_planner(py::module_& m) {
       .value("GoalReached", Status::GoalReached);
   py::enum_<RejectReason>(m, "RejectReason", "Why a sampled command was rejected.")
       .value("None_", RejectReason::None)
-      .value("Collision", RejectReason::Collision);
+      .value("Collision", RejectReason::Collision)
+      .value("Terrain", RejectReason::Terrain);
 
   py::class_<PlannerParams>(m, "PlannerParams", "Parameters of the local planner (SI units).")
       .def(py::init([](double dt, double sim_time, int n_v, int n_omega, const std::string& normalization,
@@ -206,6 +207,8 @@ void init_planner(py::module_& m) {
         return py::cast(*p.global_path());
       })
       .def_property_readonly("key_nodes", &LocalPlanner::key_nodes, "Indices of the key nodes in the global path's points.")
+      .def_property_readonly("needs_path", &LocalPlanner::needs_path,
+                             "Whether a cycle needs a global path: the key-node heading or a critic reads it.")
       .def("set_weight", &LocalPlanner::set_weight, py::arg("critic"), py::arg("weight"))
       .def("weight", &LocalPlanner::weight, py::arg("critic"))
       .def_property_readonly("limits", &LocalPlanner::limits)

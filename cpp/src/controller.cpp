@@ -1,6 +1,7 @@
 #include "fgdwa/controller.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "fgdwa/error.hpp"
@@ -28,6 +29,8 @@ void Controller::set_map(std::shared_ptr<const DistanceField> map) {
 
 const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,
                                    const std::vector<Disc>& discs) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
   report_ = CycleReport{};
   world_.set_discs(discs);
   if (scan) {
@@ -57,7 +60,11 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
   }
   if (has_clearance_) report_.beta = planner_.weight("clearance");
   if (has_similarity_) report_.delta = planner_.weight("similarity");
-  return planner_.plan(state, goal, world_);
+  const Clock::time_point planning = Clock::now();
+  report_.perception_time = std::chrono::duration<double>(planning - start).count();
+  const PlanResult& result = planner_.plan(state, goal, world_);
+  report_.plan_time = std::chrono::duration<double>(Clock::now() - planning).count();
+  return result;
 }
 
 }  // namespace fgdwa

@@ -30,6 +30,7 @@ const char* to_string(RejectReason reason) {
   switch (reason) {
     case RejectReason::None: return "None";
     case RejectReason::Collision: return "Collision";
+    case RejectReason::Terrain: return "Terrain";
   }
   return "?";
 }
@@ -49,6 +50,14 @@ const char* to_string(BrakingModel braking) {
     case BrakingModel::Discrete: return "discrete";
   }
   return "?";
+}
+
+void validate_passing_factors(const PassingFactors& factors) {
+  for (std::size_t g = 0; g < factors.size(); ++g) {
+    const std::string field = "passing_factors[" + std::to_string(g) + "]";
+    detail::require_non_negative(field, factors[g]);
+    if (factors[g] > 1.0) throw Error(detail::describe(field, factors[g], "must be <= 1"));
+  }
 }
 
 int PlannerParams::n_steps() const { return static_cast<int>(std::lround(sim_time / dt)); }
@@ -107,9 +116,44 @@ void LocalPlanner::set_global_path(const GlobalPath& path) {
   tracker_ = std::make_unique<KeyNodeTracker>(*path_, params_.key_nodes);
 }
 
+bool LocalPlanner::needs_path() const {
+  return params_.heading_target == HeadingTarget::KeyNodes ||
+         std::any_of(critics_.begin(), critics_.end(), [](const auto& c) { return c->needs_path(); });
+}
+
 void LocalPlanner::clear_global_path() {
   tracker_.reset();
   path_.reset();
+}
+
+void LocalPlanner::set_terrain(std::shared_ptr<const TerrainGrid> terrain, const PassingFactors& factors) {
+  validate_passing_factors(factors);
+  passing_factors_ = factors;
+  terrain_ = std::move(terrain);
+  impassable_.reset();
+  if (!terrain_) return;
+  std::vector<std::uint8_t> cells(terrain_->grades().size());
+  for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = terrain_->grades()[i] >= TerrainGrid::kMaxGrade;
+  impassable_ = std::make_unique<FieldClearance>(std::make_shared<DistanceField>(
+      OccupancyGrid(terrain_->rows(), terrain_->cols(), terrain_->resolution(), terrain_->origin(), std::move(cells))));
+}
+
+int LocalPlanner::first_terrain_contact(const RobotState& state, const Trajectory& poses) const {
+  // A footprint already over grade-4 cells may still leave: only its centre is held to them then.
+  if (impassable_->clearance(footprint_, state.pose, 0.0) <= 0.0) {
+    for (std::size_t k = 0; k < poses.size(); ++k)
+      if (terrain_->grade_at(poses[k].position()) >= TerrainGrid::kMaxGrade) return static_cast<int>(k);
+    return n_steps_;
+  }
+  const DistanceField::LowerBounds bound = impassable_->field()->lower_bounds();
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    const Pose2& pose = poses[k];
+    // Poses lie at most v_max dt apart, well inside the footprint's reach, so
+    // the footprint at the poses covers the centre's way between them.
+    if (bound(pose.x, pose.y) > footprint_.radius()) continue;
+    if (impassable_->clearance(footprint_, pose, 0.0) <= 0.0) return static_cast<int>(k);
+  }
+  return n_steps_;
 }
 
 const std::vector<std::size_t>& LocalPlanner::key_nodes() const {
@@ -168,7 +212,14 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
     return result_;
   }
 
-  sample_window(dynamic_window(limits_, state.twist, params_.dt), state.twist, params_.window, result_.samples);
+  VelocityWindow window = dynamic_window(limits_, state.twist, params_.dt);
+  if (terrain_) {
+    // The slope under the robot holds it to a fraction of v_max, whatever it was doing.
+    const double cap = passing_factors_[static_cast<std::size_t>(terrain_->grade_at(state.pose.position()))] * limits_.v_max;
+    window.v_hi = std::min(window.v_hi, cap);
+    window.v_lo = std::min(window.v_lo, window.v_hi);
+  }
+  sample_window(window, state.twist, params_.window, result_.samples);
   evaluate_rollouts(state, world);
 
   CriticContext context;
@@ -276,7 +327,13 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       if (bounds_[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = std::min(min_clearance, exact(k));
     result_.min_clearance[i] = min_clearance + margin;
     result_.free_distance[i] = free_distance;
-    result_.reasons[i] = is_admissible(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;
+    RejectReason reason = is_admissible(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;
+    if (reason == RejectReason::None && impassable_) {
+      const int k = first_terrain_contact(state, poses);
+      if (k < n_steps_ && !is_admissible(cmd, k * cmd.v * params_.dt, limits_, params_.dt, params_.braking))
+        reason = RejectReason::Terrain;
+    }
+    result_.reasons[i] = reason;
     ++result_.reject_counts[static_cast<std::size_t>(result_.reasons[i])];
   }
 }

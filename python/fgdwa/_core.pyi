@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -661,9 +661,12 @@ class RejectReason:
       None_
     
       Collision
+    
+      Terrain
     """
     Collision: typing.ClassVar[RejectReason]
     None_: typing.ClassVar[RejectReason]
+    Terrain: typing.ClassVar[RejectReason]
     __members__: typing.ClassVar[dict[str, RejectReason]]
     @typing.overload
     def __eq__(self, other: RejectReason) -> bool:
@@ -857,6 +860,11 @@ class LocalPlanner:
     @property
     def limits(self) -> RobotLimits:
         ...
+    @property
+    def needs_path(self) -> bool:
+        """
+        Whether a cycle needs a global path: the key-node heading or a critic reads it.
+        """
     @property
     def params(self) -> PlannerParams:
         ...
@@ -1168,6 +1176,320 @@ class ScanMap:
         """
     @property
     def occupied_count(self) -> int:
+        ...
+class NavigatorMode:
+    """
+    What the navigator is doing this cycle.
+    
+    Members:
+    
+      Following
+    
+      Replanning
+    
+      BackingUp
+    
+      Rotating
+    
+      Waiting
+    
+      GoalReached
+    
+      Failed
+    """
+    BackingUp: typing.ClassVar[NavigatorMode]
+    Failed: typing.ClassVar[NavigatorMode]
+    Following: typing.ClassVar[NavigatorMode]
+    GoalReached: typing.ClassVar[NavigatorMode]
+    Replanning: typing.ClassVar[NavigatorMode]
+    Rotating: typing.ClassVar[NavigatorMode]
+    Waiting: typing.ClassVar[NavigatorMode]
+    __members__: typing.ClassVar[dict[str, NavigatorMode]]
+    @typing.overload
+    def __eq__(self, other: NavigatorMode) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: NavigatorMode) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class FailureReason:
+    """
+    Why the navigator gave up.
+    
+    Members:
+    
+      None_
+    
+      NoGlobalPath
+    
+      RecoveriesExhausted
+    """
+    NoGlobalPath: typing.ClassVar[FailureReason]
+    None_: typing.ClassVar[FailureReason]
+    RecoveriesExhausted: typing.ClassVar[FailureReason]
+    __members__: typing.ClassVar[dict[str, FailureReason]]
+    @typing.overload
+    def __eq__(self, other: FailureReason) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: FailureReason) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class NavigatorParams:
+    """
+    Replanning and recovery settings of a Navigator (SPEC 13).
+    """
+    def __init__(self, path_margin: typing.SupportsFloat | typing.SupportsIndex = 0.3, replan_period: typing.SupportsFloat | typing.SupportsIndex = 0.5, stall_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, stall_distance: typing.SupportsFloat | typing.SupportsIndex = 0.1, give_up_length: typing.SupportsFloat | typing.SupportsIndex = 0.6, keep_clear: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_distance: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, rotate_limit_deg: typing.SupportsFloat | typing.SupportsIndex = 360.0, wait_time: typing.SupportsFloat | typing.SupportsIndex = 2.0, wait_radius: typing.SupportsFloat | typing.SupportsIndex = 1.5, max_recoveries: typing.SupportsInt | typing.SupportsIndex = 6, progress_reset: typing.SupportsFloat | typing.SupportsIndex = 1.0, record_top_k: typing.SupportsInt | typing.SupportsIndex = 5) -> None:
+        """
+        path_margin: m kept beyond the footprint's radius by the global path where the map allows; replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance (m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after a stall, except within keep_clear (m) of the robot and the goal; backup_distance (m) at backup_speed (m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; record_top_k: best rollouts kept in each CycleRecord.
+        """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def backup_distance(self) -> float:
+        ...
+    @property
+    def backup_speed(self) -> float:
+        ...
+    @property
+    def give_up_length(self) -> float:
+        ...
+    @property
+    def keep_clear(self) -> float:
+        ...
+    @property
+    def max_recoveries(self) -> int:
+        ...
+    @property
+    def path_margin(self) -> float:
+        ...
+    @property
+    def progress_reset(self) -> float:
+        ...
+    @property
+    def record_top_k(self) -> int:
+        ...
+    @property
+    def replan_period(self) -> float:
+        ...
+    @property
+    def rotate_limit_deg(self) -> float:
+        ...
+    @property
+    def stall_distance(self) -> float:
+        ...
+    @property
+    def stall_time(self) -> float:
+        ...
+    @property
+    def wait_radius(self) -> float:
+        ...
+    @property
+    def wait_time(self) -> float:
+        ...
+class ScoredRollout:
+    """
+    A rollout the planner scored: its sample, command, total, poses.
+    """
+    @property
+    def command(self) -> Twist:
+        ...
+    @property
+    def poses(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def sample(self) -> int:
+        ...
+    @property
+    def total(self) -> float:
+        ...
+class CycleRecord:
+    """
+    Everything one Navigator cycle decided.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def best(self) -> list[ScoredRollout]:
+        ...
+    @property
+    def beta(self) -> float:
+        ...
+    @property
+    def chosen(self) -> int:
+        ...
+    @property
+    def chosen_rollout(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def command(self) -> Twist:
+        ...
+    @property
+    def delta(self) -> float:
+        ...
+    @property
+    def density(self) -> float:
+        ...
+    @property
+    def deviation(self) -> float:
+        ...
+    @property
+    def failure(self) -> FailureReason:
+        ...
+    @property
+    def key_node(self) -> int:
+        ...
+    @property
+    def mode(self) -> NavigatorMode:
+        ...
+    @property
+    def new_cells(self) -> int:
+        ...
+    @property
+    def path_points(self) -> typing.Any:
+        """
+        (n, 2) points of the global path followed, None without one.
+        """
+    @property
+    def path_version(self) -> int:
+        ...
+    @property
+    def planned(self) -> bool:
+        """
+        Whether the local planner ran this cycle.
+        """
+    @property
+    def recoveries(self) -> int:
+        ...
+    @property
+    def reject_counts(self) -> dict:
+        ...
+    @property
+    def state(self) -> RobotState:
+        ...
+    @property
+    def status(self) -> Status:
+        ...
+    @property
+    def target(self) -> tuple[float, float]:
+        ...
+    @property
+    def time(self) -> float:
+        ...
+    @property
+    def times(self) -> dict:
+        """
+        Wall-clock seconds per stage: map, global, perception, plan.
+        """
+class Navigator:
+    """
+    The robot side of the control cycle: map, global path, controller and recovery in one object.
+    """
+    def __init__(self, limits: RobotLimits, footprint: Footprint, params: PlannerParams, map: OccupancyGrid, mapping: str = 'known', lidar: LidarParams = ..., policy: WeightPolicy = None, navigator: NavigatorParams = ..., terrain: TerrainGrid | None = None, passing_factors: typing.Any = [1.0, 0.8, 0.6, 0.4, 0.0], window: DetectWindowParams = ...) -> None:
+        """
+        map: the known map (mapping='known') or the layout of the map to build from scans (mapping='scan'); lidar: the robot's scanner (scans are checked against it); policy: a WeightPolicy or None; terrain: a TerrainGrid on the map's layout; passing_factors: v_max scale of grades 0-4.
+        """
+    def __repr__(self) -> str:
+        ...
+    def set_global_path(self, path: typing.Any) -> None:
+        """
+        Follow this path (GlobalPath or (n, 2) points) instead of planning one; after set_goal().
+        """
+    def set_goal(self, goal: typing.Any) -> None:
+        ...
+    def step(self, state: RobotState, scan: Scan, time: typing.SupportsFloat | typing.SupportsIndex, discs: collections.abc.Sequence[Disc] = []) -> CycleRecord:
+        """
+        One cycle from `state` with this cycle's scan (or None) at `time` (s); `discs`: known moving obstacles placed now. The record stays valid until the next step().
+        """
+    @property
+    def controller(self) -> Controller:
+        ...
+    @property
+    def map(self) -> OccupancyGrid:
+        """
+        The navigator's map now (a copy).
+        """
+    @property
+    def mapping(self) -> str:
+        ...
+    @property
+    def mode_counts(self) -> dict:
+        """
+        Cycles spent in each mode so far.
+        """
+    @property
+    def params(self) -> NavigatorParams:
+        ...
+    @property
+    def path(self) -> typing.Any:
+        ...
+    @property
+    def path_version(self) -> int:
+        ...
+    @property
+    def plan_result(self) -> PlanResult:
+        """
+        The local planner's last result, every sample included.
+        """
+    @property
+    def planner(self) -> LocalPlanner:
+        ...
+    @property
+    def record(self) -> CycleRecord:
         ...
 def angle_difference(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """

@@ -26,7 +26,8 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from fgdwa._core import FgdwaError, LidarParams, OccupancyGrid, RobotLimits, planner_preset, preset_names, robot_preset
+from fgdwa._core import (FgdwaError, LidarParams, NavigatorParams, OccupancyGrid, RobotLimits, planner_preset, preset_names,
+                         robot_preset)
 from fgdwa.datasets.barn import BarnDataset, barn_score
 from fgdwa.experiments import run_tasks
 from fgdwa.mapping import check_mapping
@@ -66,17 +67,17 @@ class BarnSetup:
     lidar_beams: int = 541
     lidar_range: float = 10.0  # m
     noise_std: float = 0.0  # m
-    replan_interval: int = 5  # cycles between global replans at most (scan mode)
-    stall_cycles: int = 30  # cycles without 0.1 m of progress before a recovery
+    replan_period: float = 0.5  # s between replans of a blocked path at most
+    stall_time: float = 3.0  # s without 0.1 m of progress before a recovery
 
     def __post_init__(self):
-        for name in ("v_max", "dt", "sim_time", "lidar_range"):
+        for name in ("v_max", "dt", "sim_time", "lidar_range", "replan_period", "stall_time"):
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
                 raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be a finite number > 0")
         if not (math.isfinite(self.noise_std) and self.noise_std >= 0):
             raise FgdwaError(f"BarnSetup.noise_std = {self.noise_std!r}: must be >= 0 (m)")
-        for name in ("lidar_beams", "replan_interval", "stall_cycles"):
+        for name in ("lidar_beams",):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
                 raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be an integer >= 1")
@@ -87,6 +88,9 @@ class BarnSetup:
             raise FgdwaError(f"BarnSetup.v_max = {self.v_max}: above the Jackal's {jackal.v_max} m/s")
         return RobotLimits(v_min=jackal.v_min, v_max=self.v_max, omega_max=jackal.omega_max, acc_v=jackal.acc_v,
                            acc_omega=jackal.acc_omega)
+
+    def navigator(self) -> NavigatorParams:
+        return NavigatorParams(replan_period=self.replan_period, stall_time=self.stall_time)
 
     def lidar(self) -> LidarParams:
         return LidarParams(fov_deg=270.0, beams=self.lidar_beams, max_range=self.lidar_range,
@@ -178,7 +182,7 @@ def run_barn_task(task: BarnTask) -> BarnRun:
     result = run_episode(world, task.start, task.goal, limits=setup.limits(), footprint=robot.footprint,
                          params=params, max_steps=max_steps, goal_tolerance=task.goal_radius, lidar=setup.lidar(),
                          weight_policy=preset.weight_policy(), seed=task.seed, mapping=task.mapping,
-                         replan_interval=setup.replan_interval, stall_cycles=setup.stall_cycles)
+                         navigator=setup.navigator())
     wall = time.perf_counter() - tic
     # The challenge knows three outcomes; running out of steps is its timeout.
     outcome = result.outcome if result.outcome in OUTCOMES else "timeout"

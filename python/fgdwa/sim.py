@@ -15,7 +15,6 @@ import numpy as np
 
 from fgdwa._core import (
     CollisionWorld,
-    Controller,
     DetectWindowParams,
     DistanceField,
     FgdwaError,
@@ -24,10 +23,13 @@ from fgdwa._core import (
     GlobalStatus,
     LaserScanner,
     LidarParams,
+    Navigator,
+    NavigatorMode,
+    NavigatorParams,
+    OccupancyGrid,
     PlannerPreset,
     PlannerParams,
     PlanResult,
-    Pose2,
     RobotLimits,
     RobotState,
     Twist,
@@ -35,12 +37,12 @@ from fgdwa._core import (
     step,
 )
 from fgdwa.global_planning import plan_global
-from fgdwa.mapping import ScanNavigator, check_mapping
+from fgdwa.mapping import check_mapping
 from fgdwa.metrics import DANGER_MARGIN, danger_point_clearance, danger_points, smoothness
 from fgdwa.world import MovingObstacle, World  # noqa: F401  (World is part of this module's API)
 
-OUTCOMES = ("success", "collision", "fall", "timeout")
-GLOBAL_PATH_MARGIN = 0.3  # m kept beyond the footprint's radius by the global path where the map allows
+OUTCOMES = ("success", "collision", "fall", "failed", "timeout")
+MODE_NAMES = frozenset(NavigatorMode.__members__)
 SCAN_SEED_STRIDE = 1_000_003  # the lidar's seed in cycle k of a run with `seed`: seed * stride + k
 
 
@@ -62,7 +64,8 @@ class EpisodeResult:
     mean_deviation: float = float("nan")  # m, from the global path
     max_deviation: float = float("nan")  # m
     smoothness: float = 0.0  # rad/s, sum of |change of omega| between cycles
-    statuses: list = field(default_factory=list)
+    statuses: list = field(default_factory=list)  # per cycle: the planner's status, or the navigator's mode when it did not plan
+    modes: list = field(default_factory=list)  # per cycle: the navigator's mode (NavigatorMode names)
     cycle_times: np.ndarray = field(default_factory=lambda: np.zeros(0))  # s, per cycle
     last_plan: Optional[PlanResult] = None
     last_rollouts: Optional[np.ndarray] = None  # (samples, n_steps, 3)
@@ -76,7 +79,7 @@ class EpisodeResult:
     last_scan: Optional[object] = None  # the last cycle's Scan, when sensing
     mapping: str = "known"  # "known": the planners had the map; "scan": they had the robot's own map
     scan_map: Optional[np.ndarray] = None  # (rows, cols) the robot's map at the end, with mapping="scan"
-    paths: list = field(default_factory=list)  # with a navigator (scan, stall_cycles): (cycle, (n, 2) points) per path followed
+    paths: list = field(default_factory=list)  # (cycle, (n, 2) points) per global path followed, in order
 
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
@@ -156,52 +159,49 @@ def run_episode(
     seed: int = 0,
     danger_clearance: Optional[float] = None,
     mapping: str = "known",
-    replan_interval: int = 5,
-    stall_cycles: Optional[int] = None,
+    navigator: Optional[NavigatorParams] = None,
 ) -> EpisodeResult:
     """Drive from ``start`` (x, y, theta, at rest) to ``goal`` (x, y).
 
-    Every cycle the planner picks a command from the current state, the robot
-    moves one ``dt`` with it, and the discs move too. The episode ends on
-    success (within ``goal_tolerance`` of the goal, default the planner's),
-    collision (exact footprint contact anywhere along a step), or ``max_steps``
-    cycles (timeout).
+    The robot side is one :class:`fgdwa.Navigator` (map, global path, local
+    planner, recovery; ``navigator`` its NavigatorParams); this function is the
+    world: every cycle it scans the true world, steps the navigator, moves the
+    robot by the command and the discs by ``dt``, and referees. The episode
+    ends on success (within ``goal_tolerance`` of the goal, default the
+    planner's), collision (exact footprint contact anywhere along a step, the
+    turn included), a fall (the centre entering grade-4 terrain), the
+    navigator giving up ("failed"), or ``max_steps`` cycles (timeout).
 
-    With ``params.heading_target == "key_nodes"`` the planner follows a global
-    path: ``global_path`` ((n, 2) points) when given, else one planned once on
-    the map by ``plan_global(method=global_method, **global_options)``, with
-    obstacles inflated by the footprint's radius plus GLOBAL_PATH_MARGIN (or the
-    radius alone where the margin closes every way) unless the options say otherwise.
+    A path-following planner (``heading_target == "key_nodes"`` or a critic
+    that reads the path) follows ``global_path`` ((n, 2) points) when given, a
+    path planned once by ``plan_global(method=global_method, **global_options)``
+    when those are not A* with its defaults, else the navigator's own A* path
+    (obstacles inflated by the footprint's radius plus NavigatorParams.path_margin,
+    then the radius, then the inscribed radius); the navigator replans on its
+    map when the path ahead is blocked or after a stall.
 
     With ``lidar`` the robot scans the true world every cycle (noise drawn from
     ``seed``): hits the map does not explain become obstacles for the local
     planner, and the obstacle density I of the detect window (``window``) is
-    recorded with the path deviation D. A ``weight_policy`` (anything with
-    a ``WeightPolicy``: ``FuzzyWeights``, ``FixedWeights`` or a Python subclass) then sets the
+    recorded with the path deviation D. A ``weight_policy`` (``FuzzyWeights``,
+    ``FixedWeights`` or a Python subclass of ``WeightPolicy``) then sets the
     clearance weight beta and, when the planner has one, the similarity weight
     delta each cycle.
 
-    Terrain (``world.terrain``) caps the executed speed at the passing factor of
-    the grade under the robot times ``limits.v_max``; entering grade 4 ends the
-    episode as a fall. Danger points are the global path's points whose static
-    clearance is below ``danger_clearance`` (default: footprint radius + 0.3 m).
+    Terrain (``world.terrain``) is known to the navigator: its planner keeps
+    the footprint off grade 4 and its speed within the passing factor of the
+    grade under the robot; the world holds the robot to that speed as well.
+    Danger points are the global path's points whose static clearance is below
+    ``danger_clearance`` (default: footprint radius + 0.3 m).
 
-    ``mapping="scan"`` hides the map: the robot starts with an empty one of the
-    same layout, the lidar (``lidar``, default ``LidarParams()``) marks what it
-    hits, and both planners read that map; a path-following planner's global
-    path is planned on it with A* (obstacles inflated by the footprint's radius
-    plus GLOBAL_PATH_MARGIN, else the radius, else the inscribed radius) and
-    replanned when the part ahead of the robot comes within the inscribed radius
-    of a mapped obstacle, at most every ``replan_interval`` cycles
-    (``fgdwa.mapping.ScanNavigator``).
-
-    ``stall_cycles`` (either mapping, path-following planners): a robot that
-    has moved less than 0.1 m in that many cycles gives up the next 0.6 m of
-    its path, and the path is replanned around them.
+    ``mapping="scan"`` hides the map: the navigator starts with an empty one of
+    the same layout and marks what the lidar (``lidar``, default
+    ``LidarParams()``) hits.
     """
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
     params = params if params is not None else PlannerParams()
+    navigator_params = navigator if navigator is not None else NavigatorParams()
     start_pose = _as_pose(start, "start")
     goal_point = _as_point(goal, "goal")
     if not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
@@ -216,53 +216,36 @@ def run_episode(
     scanning = mapping == "scan"
     if scanning and lidar is None:
         lidar = LidarParams()
+    if scanning and world.grid is None:
+        raise FgdwaError("mapping = 'scan' builds a map on the world grid's layout: the world needs a grid")
     window = window if window is not None else DetectWindowParams()
     true_grid = world.true_grid()
     truth = CollisionWorld(true_grid, world.discs_at(0.0))
     if truth.in_collision(footprint, start_pose, 0.0):
         raise FgdwaError(f"start = {tuple(start_pose)}: the robot's footprint there overlaps an obstacle")
-    # One field of what really stands there, for the lidar and the danger-point metric; the
-    # planner's map is the same field unless the world hides obstacles from it.
+    # One field of what really stands there, for the lidar and the danger-point metric.
     true_field = DistanceField(true_grid) if true_grid is not None else None
-    map_field = None
-    if world.grid is not None and not scanning:
-        map_field = true_field if world.hidden is None else DistanceField(world.grid)
     scanner = LaserScanner(lidar, true_field) if lidar is not None else None
-    controller = Controller(limits, footprint, params, map_field, weight_policy, window)
-    planner = controller.planner
-    navigator = None
-    follows_path = params.heading_target == "key_nodes"
-    # Tight spots put the robot inside the band a wide inflation closes, so
-    # the last radius is the inscribed one: a way out, then a wider path.
-    radii = [footprint.radius + GLOBAL_PATH_MARGIN, footprint.radius, footprint.inscribed_radius]
-    options = dict(replan_interval=replan_interval, follow_path=follows_path, stall_cycles=stall_cycles)
-    if scanning:
-        if true_grid is None:
-            raise FgdwaError("mapping = 'scan' builds a map on the world grid's layout: the world needs a grid")
-        navigator = ScanNavigator(true_grid, goal_point, radii, footprint.inscribed_radius, **options)
-        path = None if global_path is None else _global_path(world, start_pose, goal_point, footprint, params,
-                                                                 global_path, global_method, global_options)
-    else:
-        path = _global_path(world, start_pose, goal_point, footprint, params, global_path, global_method,
-                            global_options)
-        if stall_cycles is not None and follows_path and world.grid is not None:
-            navigator = ScanNavigator.with_map(world.grid, goal_point, radii, footprint.inscribed_radius, **options)
-    if navigator is not None:
-        navigator.follow(path)
-    if path is not None:
-        controller.set_global_path(path)
+    robot = Navigator(limits, footprint, params, _navigator_map(world, start_pose, goal_point), mapping=mapping,
+                      lidar=lidar if lidar is not None else LidarParams(), policy=weight_policy,
+                      navigator=navigator_params, terrain=world.terrain, passing_factors=world.passing_factors,
+                      window=window)
+    robot.set_goal(goal_point)
+    given = _given_path(world, start_pose, goal_point, footprint, robot.planner, global_path, global_method,
+                        global_options)
+    if given is not None:
+        robot.set_global_path(given)
 
     dt = params.dt
     state = RobotState(start_pose, (0.0, 0.0))
     poses = [start_pose.copy()]
     commands = []
     clearances = [truth.clearance(footprint, start_pose, 0.0)]
-    statuses = []
-    cycle_times = []
-    targets = []
+    statuses, modes, cycle_times, targets = [], [], [], []
     density, deviation, betas, deltas = [], [], [], []
+    paths = []
+    path_version = 0
     outcome = "timeout"
-    last_plan = None
     scan = None
     for k in range(max_steps):
         position = np.array([state.pose.x, state.pose.y])
@@ -270,37 +253,26 @@ def run_episode(
             outcome = "success"
             break
         t = k * dt
-        tic = time.perf_counter()
         discs_now = world.discs_at(t)
         if scanner is not None:
             scan = scanner.scan(state.pose, discs_now, 0.0, seed=int(seed) * SCAN_SEED_STRIDE + k)
-        if navigator is not None:
-            update = navigator.update(scan, position, k)
-            if update.new_cells:
-                controller.set_map(update.field)
-            if update.path is not None:
-                path = update.path
-                controller.set_global_path(path)
-        command = None
-        if navigator is not None and navigator.backing_up:
-            command = _backup_command(state.pose, navigator.backup_speed, dt, footprint, controller.world,
-                                      params.safety_margin)
-            navigator.backed_up(done=command is None)
-        if command is None:
-            plan = controller.step(state, goal_point, scan, discs_now if world.discs_known else [])
-            command = plan.command
-            status = plan.status.name
-        else:
-            status = "BackingUp"
+        tic = time.perf_counter()
+        record = robot.step(state, scan, t, discs_now if world.discs_known else [])
         cycle_times.append(time.perf_counter() - tic)
-        report = controller.report
-        density.append(report.density)
-        deviation.append(report.deviation)
-        betas.append(report.beta)
-        deltas.append(report.delta)
-        last_plan = plan
-        statuses.append(status)
-        targets.append(plan.target)
+        if record.mode == NavigatorMode.Failed:
+            outcome = "failed"
+            break
+        if record.path_version != path_version:
+            path_version = record.path_version
+            paths.append((k, record.path_points))
+        density.append(record.density)
+        deviation.append(record.deviation)
+        betas.append(record.beta)
+        deltas.append(record.delta)
+        modes.append(record.mode.name)
+        statuses.append(record.status.name if record.planned else record.mode.name)
+        targets.append(record.target)
+        command = record.command
         # Steep ground slows the robot whatever it was told.
         factor = world.passing_factors[world.grade_at(position)]
         command = Twist(min(command.v, factor * limits.v_max), command.omega)
@@ -322,6 +294,7 @@ def run_episode(
         if np.hypot(*(position - goal_point)) <= tolerance:
             outcome = "success"
 
+    path = robot.path
     poses_arr = np.array(poses)
     clear_arr = np.array(clearances, dtype=float)
     deviations = np.array(deviation, dtype=float)
@@ -333,6 +306,7 @@ def run_episode(
         danger = danger_point_clearance(poses_arr[:, :2], points, true_field)
     finite = clear_arr[np.isfinite(clear_arr)]
     steps = len(commands)
+    planned = any(status not in MODE_NAMES for status in statuses)
     return EpisodeResult(
         outcome=outcome,
         steps=steps,
@@ -349,12 +323,13 @@ def run_episode(
         commands=np.array(commands, dtype=float).reshape(-1, 2),
         clearances=clear_arr,
         statuses=statuses,
+        modes=modes,
         cycle_times=np.array(cycle_times),
-        last_plan=last_plan,
+        last_plan=robot.plan_result if planned else None,
         # The planner keeps its last cycle's rollouts: copied once, not every cycle.
-        last_rollouts=planner.rollouts() if last_plan is not None else None,
+        last_rollouts=robot.planner.rollouts() if planned else None,
         global_path=None if path is None else path.points,
-        key_nodes=None if path is None else path.points[planner.key_nodes],
+        key_nodes=None if path is None else path.points[robot.planner.key_nodes],
         targets=np.array(targets, dtype=float).reshape(-1, 2),
         density=np.array(density, dtype=float),
         deviation=np.array(deviation, dtype=float),
@@ -362,21 +337,21 @@ def run_episode(
         delta=np.array(deltas, dtype=float),
         last_scan=scan,
         mapping=mapping,
-        scan_map=None if not scanning else navigator.map.grid.cells,
-        paths=[] if navigator is None else list(navigator.paths),
+        scan_map=robot.map.cells if scanning else None,
+        paths=paths,
     )
 
 
-def _backup_command(pose, speed: float, dt: float, footprint: Footprint, seen, margin: float) -> Optional[Twist]:
-    """Straight back at ``speed`` when the robot's own view of the world (``seen``,
-    a ClearanceSource) shows the footprint clear all along the step; else None."""
-    command = Twist(-speed, 0.0)
-    after = step(pose, command, dt)
-    for f in (0.5, 1.0):
-        between = Pose2(pose.x + f * (after.x - pose.x), pose.y + f * (after.y - pose.y), pose.theta)
-        if seen.clearance(footprint, between, 0.0) <= margin:
-            return None
-    return command
+def _navigator_map(world: World, start, goal) -> OccupancyGrid:
+    """The map the navigator starts from: the world's known grid, or for a
+    world without one an empty grid around start and goal (the robot knows
+    nothing of its surroundings then)."""
+    if world.grid is not None:
+        return world.grid
+    margin, resolution = 10.0, 0.1
+    low = np.minimum(start[:2], goal) - margin
+    size = np.ceil((np.maximum(start[:2], goal) + margin - low) / resolution).astype(int)
+    return OccupancyGrid(np.zeros((size[1], size[0]), dtype=np.uint8), resolution, tuple(low))
 
 
 def _falls(world: World, before, after, spacing: float = 0.05) -> bool:
@@ -384,14 +359,16 @@ def _falls(world: World, before, after, spacing: float = 0.05) -> bool:
     return any(world.grade_at((x, y)) >= 4 for _, x, y in _along_step(before, after, spacing))
 
 
-def _global_path(world: World, start, goal, footprint: Footprint, params: PlannerParams, given, method: str,
-                 options: Optional[dict]) -> Optional[GlobalPath]:
+def _given_path(world: World, start, goal, footprint: Footprint, planner, given, method: str,
+                options: Optional[dict]) -> Optional[GlobalPath]:
+    """The path the navigator is handed instead of planning its own: ``given``,
+    or one planned here when the method or options are not the navigator's A*."""
     if given is not None:
         return given if isinstance(given, GlobalPath) else GlobalPath(np.asarray(given, dtype=float))
-    if params.heading_target != "key_nodes":
+    if not planner.needs_path or (method == "astar" and not options):
         return None
     if world.grid is None:
-        raise FgdwaError("heading_target = key_nodes needs a global path: give global_path or a world with a grid")
+        raise FgdwaError("a path-following planner needs a global path: give global_path or a world with a grid")
     options = dict(options or {})
     if method.startswith("ompl:"):
         options.setdefault("footprint", footprint)
@@ -399,7 +376,7 @@ def _global_path(world: World, start, goal, footprint: Footprint, params: Planne
     # room at the corners where key nodes sit; where the margin closes every
     # passage, the footprint's radius alone decides.
     radii = [options.pop("inflation_radius")] if "inflation_radius" in options else \
-        [footprint.radius + GLOBAL_PATH_MARGIN, footprint.radius]
+        [footprint.radius + NavigatorParams().path_margin, footprint.radius]
     for radius in radii:
         plan = plan_global(world.grid, start[:2], goal, method=method, terrain=world.terrain,
                            inflation_radius=radius, **options)

@@ -52,3 +52,4 @@ endif()
 
 run("${CMAKE_COMMAND}" --build "${example_build}" --config "${BUILD_TYPE}")
 run("${example_build}/fgdwa_example")
+run("${example_build}/fgdwa_navigate")

@@ -13,7 +13,7 @@ import pytest
 from scipy.ndimage import binary_dilation
 
 import fgdwa
-from fgdwa import FgdwaError
+from fgdwa import FgdwaError, planner_preset
 from fgdwa.barn_benchmark import (
     BarnRun,
     BarnSetup,
@@ -24,7 +24,6 @@ from fgdwa.barn_benchmark import (
     run_barn_task,
     summarize,
 )
-from fgdwa.mapping import ScanNavigator
 
 # Worlds of the challenge's local test set, from open to tight fields.
 FIVE_WORLDS = [0, 60, 120, 210, 288]
@@ -130,61 +129,61 @@ def _wall_world():
     return fgdwa.OccupancyGrid(cells, 0.1)
 
 
+def _navigator(grid, mapping="scan", **params):
+    navigator = fgdwa.Navigator(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), planner_preset("gdwa").params, grid,
+                                mapping=mapping, navigator=fgdwa.NavigatorParams(**params))
+    navigator.set_goal((5.5, 1.0))
+    return navigator
+
+
 def test_navigator_replans_when_the_scan_shows_the_path_blocked():
     truth = _wall_world()
     scanner = fgdwa.LaserScanner(fgdwa.LidarParams(), fgdwa.DistanceField(truth))
-    navigator = ScanNavigator(truth, (5.5, 1.0), [0.3, 0.2], 0.2, replan_interval=1)
-    first = navigator.update(scanner.scan((0.5, 1.0, 0.0), [], 0.0), (0.5, 1.0), 0).path
-    assert first is not None and len(navigator.paths) == 1
+    navigator = _navigator(truth, replan_period=0.15)
+    state = fgdwa.RobotState((0.5, 1.0, 0.0), (0.0, 0.0))
+    first = navigator.step(state, scanner.scan((0.5, 1.0, 0.0), [], 0.0), 0.0)
+    assert first.path_version == 1 and first.mode == fgdwa.NavigatorMode.Replanning
     # The first scan already shows the wall: the path goes over its top end.
-    assert np.max(first.points[:, 1]) > 2.2
-    assert navigator.map.occupied_count > 0
+    assert np.max(first.path_points[:, 1]) > 2.2
+    assert first.new_cells > 0 and navigator.map.cells.sum() > 0
     # Nothing new: no replan, however often it may.
-    assert navigator.update(scanner.scan((0.5, 1.0, 0.0), [], 0.0), (0.5, 1.0), 1).path is None
+    assert navigator.step(state, scanner.scan((0.5, 1.0, 0.0), [], 0.0), 0.15).path_version == 1
 
 
-def test_navigator_starting_blind_replans_once_the_wall_is_seen():
+def test_navigator_records_the_cycle():
     truth = _wall_world()
-    navigator = ScanNavigator(truth, (5.5, 1.0), [0.3], 0.2, replan_interval=3)
-    empty_scan = fgdwa.LaserScanner(fgdwa.LidarParams(max_range=0.5), fgdwa.DistanceField(truth)).scan(
-        (0.5, 1.0, 0.0), [], 0.0)
-    straight = navigator.update(empty_scan, (0.5, 1.0), 0).path
-    assert straight is not None and np.allclose(straight.points[:, 1], 1.0)  # unknown space is free
-    seeing = fgdwa.LaserScanner(fgdwa.LidarParams(), fgdwa.DistanceField(truth)).scan((2.0, 1.0, 0.0), [], 0.0)
-    assert navigator.update(seeing, (2.0, 1.0), 1).path is None  # blocked, but not due before cycle 3
-    replanned = navigator.update(seeing, (2.0, 1.0), 3).path
-    assert replanned is not None and np.max(replanned.points[:, 1]) > 2.2
-
-
-def test_stalled_robot_gives_up_the_path_ahead_and_backs_up():
-    grid = fgdwa.OccupancyGrid(np.zeros((30, 60), dtype=np.uint8), 0.1)
-    navigator = ScanNavigator.with_map(grid, (5.5, 1.5), [0.2], 0.2, stall_cycles=5, backup_cycles=3)
-    navigator.path = fgdwa.GlobalPath(np.array([[0.5, 1.5], [5.5, 1.5]]))
-    for cycle in range(5):
-        update = navigator.update(None, (2.0, 1.5), cycle)
-        assert update.path is None and navigator.backing_up == 0
-    navigator.update(None, (2.0, 1.5), 5)  # six positions within 0.1 m: stalled
-    assert navigator.stalls == 1 and navigator.backing_up == 3
-    for _ in range(3):
-        navigator.backed_up(done=False)
-    replanned = navigator.update(None, (1.7, 1.5), 9).path
-    assert replanned is not None
-    # The new path leaves the straight line where the robot gave up.
-    points = replanned.points
-    assert np.max(np.abs(points[:, 1] - 1.5)) > 0.1
+    scanner = fgdwa.LaserScanner(fgdwa.LidarParams(), fgdwa.DistanceField(truth))
+    navigator = _navigator(truth, record_top_k=3)
+    record = navigator.step(fgdwa.RobotState((0.5, 1.0, 0.0), (0.0, 0.0)), scanner.scan((0.5, 1.0, 0.0), [], 0.0), 0.0)
+    assert record.planned and record.chosen >= 0
+    assert len(record.best) == 3 and record.best[0].sample == record.chosen
+    assert [b.total for b in record.best] == sorted((b.total for b in record.best), reverse=True)
+    np.testing.assert_allclose(record.best[0].poses, record.chosen_rollout)
+    assert record.chosen_rollout.shape == (planner_preset("gdwa").params.n_steps, 3)
+    assert set(record.times) == {"map", "global", "perception", "plan"} and all(v >= 0 for v in record.times.values())
+    assert sum(record.reject_counts.values()) == len(navigator.plan_result.samples)
 
 
 def test_navigator_and_episode_reject_bad_settings():
     grid = _wall_world()
-    for options, name in ((dict(replan_interval=0), "replan_interval"), (dict(stall_cycles=0), "stall_cycles"),
-                          (dict(backup_cycles=-1), "backup_cycles"), (dict(backup_speed=float("nan")), "backup_speed"),
-                          (dict(give_up_length=-0.1), "give_up_length")):
+    for options, name in ((dict(replan_period=0.0), "replan_period"), (dict(stall_time=-1.0), "stall_time"),
+                          (dict(max_recoveries=-1), "max_recoveries"), (dict(backup_speed=float("nan")), "backup_speed"),
+                          (dict(give_up_length=-0.1), "give_up_length"), (dict(record_top_k=-1), "record_top_k")):
         with pytest.raises(FgdwaError, match=name):
-            ScanNavigator(grid, (5.5, 1.0), [0.3], 0.2, **options)
-    with pytest.raises(FgdwaError, match="inflation_radii"):
-        ScanNavigator(grid, (5.5, 1.0), [], 0.2)
-    with pytest.raises(FgdwaError, match="blocked_clearance"):
-        ScanNavigator(grid, (5.5, 1.0), [0.3], -1.0)
+            fgdwa.NavigatorParams(**options)
+    with pytest.raises(FgdwaError, match="mapping"):
+        fgdwa.Navigator(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), planner_preset("gdwa").params, grid,
+                        mapping="lidar")
+    navigator = fgdwa.Navigator(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), planner_preset("gdwa").params, grid)
+    state = fgdwa.RobotState((0.5, 1.0, 0.0), (0.0, 0.0))
+    with pytest.raises(FgdwaError, match="set_goal"):
+        navigator.step(state, None, 0.0)
+    with pytest.raises(FgdwaError, match="off the map"):
+        navigator.set_goal((50.0, 1.0))
+    navigator.set_goal((5.5, 1.0))
+    scan = fgdwa.LaserScanner(fgdwa.LidarParams(beams=100), fgdwa.DistanceField(grid)).scan((0.5, 1.0, 0.0), [], 0.0)
+    with pytest.raises(FgdwaError, match="beams"):
+        navigator.step(state, scan, 0.0)
     with pytest.raises(FgdwaError, match="points"):
         fgdwa.ScanMap(grid).mark(np.zeros((3, 3)))
     from fgdwa.sim import run_episode

@@ -23,6 +23,8 @@ struct CycleReport {
   double beta = std::numeric_limits<double>::quiet_NaN();       // clearance weight used; NaN without that critic
   double delta = std::numeric_limits<double>::quiet_NaN();      // similarity weight used; NaN without that critic
   std::size_t sensed_points = 0;                                // lidar hits the map and known discs do not explain
+  double perception_time = 0.0;  // s, wall clock: sensed points, I, D and weights
+  double plan_time = 0.0;        // s, wall clock: the local planner
 };
 
 class Controller {
@@ -37,6 +39,10 @@ class Controller {
   // cells; the next step() reads it.
   void set_map(std::shared_ptr<const DistanceField> map);
   const std::shared_ptr<const DistanceField>& map() const { return map_; }
+  // Slope terrain for the planner (LocalPlanner::set_terrain).
+  void set_terrain(std::shared_ptr<const TerrainGrid> terrain, const PassingFactors& factors = kDefaultPassingFactors) {
+    planner_.set_terrain(std::move(terrain), factors);
+  }
 
   // One cycle from `state` toward `goal`. `scan` (may be null) is this cycle's
   // lidar scan; `discs` the moving obstacles the robot knows, placed now.

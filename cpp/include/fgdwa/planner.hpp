@@ -14,6 +14,7 @@
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/critics.hpp"
+#include "fgdwa/grid.hpp"
 #include "fgdwa/path.hpp"
 #include "fgdwa/robot.hpp"
 #include "fgdwa/window.hpp"
@@ -29,8 +30,16 @@ enum class Status : std::uint8_t {
 enum class RejectReason : std::uint8_t {
   None,       // admissible
   Collision,  // the rollout touches an obstacle before the robot could stop
+  Terrain,    // the footprint enters grade-4 terrain before the robot could stop
 };
-constexpr std::size_t kRejectReasonCount = 2;
+constexpr std::size_t kRejectReasonCount = 3;
+
+// How slope grades 0-4 (SPEC 7) limit the robot: each grade's passing factor
+// scales v_max on its cells; grade 4 cannot be entered at all.
+using PassingFactors = std::array<double, TerrainGrid::kMaxGrade + 1>;
+constexpr PassingFactors kDefaultPassingFactors = {1.0, 0.8, 0.6, 0.4, 0.0};
+// Throws fgdwa::Error unless every factor lies in [0, 1].
+void validate_passing_factors(const PassingFactors& factors);
 
 enum class Normalization : std::uint8_t {
   Sum,     // each term divided by its sum over the admissible samples (classic DWA)
@@ -106,7 +115,16 @@ class LocalPlanner {
   // needs one; the path-aware critics read it.
   void set_global_path(const GlobalPath& path);
   void clear_global_path();
+
+  // Slope terrain on the map's layout (null for none): a rollout whose footprint
+  // enters a grade-4 cell before it could stop is rejected (RejectReason::Terrain),
+  // and the window's top speed is the passing factor of the cell under the robot
+  // times v_max, so the command is one the robot can make there.
+  void set_terrain(std::shared_ptr<const TerrainGrid> terrain, const PassingFactors& factors = kDefaultPassingFactors);
+  const std::shared_ptr<const TerrainGrid>& terrain() const { return terrain_; }
   const GlobalPath* global_path() const { return path_.get(); }
+  // Whether a cycle needs a global path: the key-node heading or a critic reads it.
+  bool needs_path() const;
   const std::vector<std::size_t>& key_nodes() const;
 
   // Weight of a critic by name, e.g. set each cycle by a weight policy.
@@ -138,6 +156,12 @@ class LocalPlanner {
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;
+  // The first pose at which the footprint enters grade-4 terrain, n_steps_ if none.
+  int first_terrain_contact(const RobotState& state, const Trajectory& poses) const;
+
+  std::shared_ptr<const TerrainGrid> terrain_;
+  PassingFactors passing_factors_ = kDefaultPassingFactors;
+  std::unique_ptr<FieldClearance> impassable_;  // grade-4 cells as obstacles
   std::unique_ptr<GlobalPath> path_;
   std::unique_ptr<KeyNodeTracker> tracker_;
   PlanResult result_;

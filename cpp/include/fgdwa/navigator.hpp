@@ -1,0 +1,216 @@
+#pragma once
+// The robot side of one control cycle (SPEC 13): the map, the global path kept
+// on it, the controller, and the recovery behaviours, in one object a robot
+// program steps every control period.
+//
+// Per step the data flows one way: scan -> map (built from scans, or the known
+// one) -> (re)plan the global path when needed (no path yet, a new goal, the
+// path ahead blocked, after a recovery) over a ladder of inflation radii ->
+// density I and deviation D -> weights -> local planner (terrain inside) ->
+// recovery -> command. Everything the cycle decided is in its CycleRecord.
+//
+// Lifecycle: construct once per robot; set_goal(); step() every control
+// period with the robot's state and its scan; a new set_goal() starts over
+// (the map built so far is kept).
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fgdwa/controller.hpp"
+#include "fgdwa/global_planner.hpp"
+#include "fgdwa/grid.hpp"
+#include "fgdwa/mapping.hpp"
+#include "fgdwa/path.hpp"
+#include "fgdwa/perception.hpp"
+#include "fgdwa/planner.hpp"
+#include "fgdwa/weights.hpp"
+
+namespace fgdwa {
+
+enum class NavigatorMode : std::uint8_t {
+  Following,   // the local planner drives along the global path (or to the goal)
+  Replanning,  // a new global path was planned this cycle; the planner drives on it
+  BackingUp,   // straight back after a stall, while the robot's map shows the rear clear
+  Rotating,    // in place toward the most open direction after a stall with the rear blocked
+  Waiting,     // standing while a known moving obstacle near the robot passes
+  GoalReached,
+  Failed,      // see CycleRecord::failure
+};
+constexpr std::size_t kNavigatorModeCount = 7;
+
+enum class FailureReason : std::uint8_t {
+  None,
+  NoGlobalPath,         // no path to the goal on the map, at any inflation radius
+  RecoveriesExhausted,  // max_recoveries recoveries in a row without progress
+};
+
+const char* to_string(NavigatorMode mode);
+const char* to_string(FailureReason reason);
+
+// Where the navigator's map comes from.
+enum class MapMode : std::uint8_t {
+  Known,  // the grid given is the map (obstacles it lacks are seen only in the scans)
+  Scan,   // the grid gives only the layout; the map is built from the scans' hits
+};
+const char* to_string(MapMode mode);
+
+struct NavigatorParams {
+  double path_margin = 0.3;       // m kept beyond the footprint's circumscribed radius by the global path where the map allows
+  double replan_period = 0.5;     // s, shortest time between two replans for a blocked path
+  double stall_time = 3.0;        // s over which too little progress is a stall; 0 = never stalls
+  double stall_distance = 0.1;    // m, progress in stall_time below which the robot has stalled
+  double give_up_length = 0.6;    // m of path ahead closed to the global planner after a stall
+  double keep_clear = 0.3;        // m around the robot and the goal that a stall never closes
+  double backup_distance = 0.3;   // m driven straight back after a stall
+  double backup_speed = 0.2;      // m/s, reverse speed while backing up
+  double rotate_limit = 6.283185307179586;  // rad, the most a rotation recovery turns (one turn)
+  double wait_time = 2.0;         // s, standing still for a moving obstacle to pass
+  double wait_radius = 1.5;       // m, a known moving obstacle this near at a stall makes the robot wait
+  int max_recoveries = 6;         // recoveries in a row without progress before Failed
+  double progress_reset = 1.0;    // m from where the last recovery began that counts as progress
+  int record_top_k = 5;           // best-scored rollouts kept in each CycleRecord
+  void validate() const;
+};
+
+// One rollout the planner scored, as recorded.
+struct ScoredRollout {
+  int sample = -1;  // index into the cycle's samples
+  Twist command;
+  double total = 0.0;  // the planner's total score
+  Trajectory poses;
+};
+
+// Wall-clock time of each stage of the cycle, s.
+struct StageTimes {
+  double map = 0.0;         // scan into the map, distance field update
+  double global = 0.0;      // path-blocked checks and global planning
+  double perception = 0.0;  // sensed points, density I, deviation D, weights
+  double plan = 0.0;        // the local planner
+  double total() const { return map + global + perception + plan; }
+};
+
+struct CycleRecord {
+  double time = 0.0;  // s, as given to step()
+  RobotState state;
+  Twist command;
+  NavigatorMode mode = NavigatorMode::Following;
+  FailureReason failure = FailureReason::None;
+  Status status = Status::Ok;  // the local planner's, when it ran this cycle
+  bool planned = false;        // whether the local planner ran this cycle
+  Vec2 target = Vec2::Zero();  // what the heading critic aimed at
+  int key_node = -1;
+  double density = std::numeric_limits<double>::quiet_NaN();    // I; NaN without a scan
+  double deviation = std::numeric_limits<double>::quiet_NaN();  // m, D; NaN without a global path
+  double beta = std::numeric_limits<double>::quiet_NaN();       // clearance weight; NaN without that critic
+  double delta = std::numeric_limits<double>::quiet_NaN();      // similarity weight; NaN without that critic
+  int chosen = -1;                 // the chosen sample, -1 when none
+  Trajectory chosen_rollout;       // its rollout (empty when none)
+  std::vector<ScoredRollout> best; // the record_top_k best admissible rollouts, best first
+  std::shared_ptr<const GlobalPath> path;  // the global path followed (null without one)
+  int path_version = 0;            // bumped on every new global path
+  std::array<int, kRejectReasonCount> reject_counts{};  // samples per reject reason
+  std::size_t new_cells = 0;       // map cells this scan marked occupied
+  int recoveries = 0;              // recoveries in a row without progress, this one included
+  StageTimes times;
+};
+
+class Navigator {
+ public:
+  // `map`: the known map (MapMode::Known) or the layout of the one to build
+  // (MapMode::Scan); `terrain` (optional) on the same layout. `lidar`: the
+  // robot's scanner, against which every scan is checked. `policy` null keeps
+  // the params' weights.
+  Navigator(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& planner,
+            const OccupancyGrid& map, MapMode mode, const LidarParams& lidar,
+            std::shared_ptr<const WeightPolicy> policy = nullptr, const NavigatorParams& params = {},
+            std::optional<TerrainGrid> terrain = std::nullopt,
+            const PassingFactors& passing_factors = kDefaultPassingFactors, const DetectWindowParams& window = {});
+
+  // A new goal: throws fgdwa::Error if it is not finite or lies off the map.
+  // The next step() plans a path to it.
+  void set_goal(const Vec2& goal);
+  // Follow this path (e.g. planned by OMPL) instead of planning one; replans
+  // (blocked path, stalls) still use A* on the navigator's map. After set_goal().
+  void set_global_path(const GlobalPath& path);
+
+  // One control cycle at `time` (s) from `state` with this cycle's scan (null
+  // when the sensor gave none); `discs` the moving obstacles the robot knows,
+  // placed now. Throws fgdwa::Error on misuse: no goal, a state or scan that is
+  // not finite, a scan of another size than the lidar's.
+  const CycleRecord& step(const RobotState& state, const Scan* scan, double time,
+                          const std::vector<Disc>& discs = {});
+
+  const CycleRecord& record() const { return record_; }
+  const PlanResult& plan_result() const { return controller_.planner().last_result(); }
+  const LocalPlanner& planner() const { return controller_.planner(); }
+  const Controller& controller() const { return controller_; }
+  const OccupancyGrid& map() const;
+  MapMode map_mode() const { return mode_; }
+  const NavigatorParams& params() const { return params_; }
+  const std::shared_ptr<const GlobalPath>& path() const { return path_; }
+  int path_version() const { return path_version_; }
+  // Cycles spent in each mode so far.
+  const std::array<int, kNavigatorModeCount>& mode_counts() const { return mode_counts_; }
+  bool has_goal() const { return has_goal_; }
+  const Vec2& goal() const { return goal_; }
+
+ private:
+  bool needs_path() const;
+  // A* on the map (given-up cells closed) over the radius ladder; true if found.
+  bool plan_path(const Vec2& from);
+  void adopt_path(GlobalPath path);
+  bool path_ahead_blocked(const Vec2& position) const;
+  bool stalled(const RobotState& state);
+  void start_recovery(const RobotState& state, const std::vector<Disc>& discs);
+  void give_up_path_ahead(const Vec2& position);
+  // Clearance below which the recoveries count the footprint in contact, for a robot at `pose`.
+  double contact_margin(const Pose2& pose) const;
+  // Whether the footprint stays clear of the robot's own view of the world moving from `pose` by `command`.
+  bool step_clear(const Pose2& pose, const Twist& command) const;
+  Twist backup_command(const RobotState& state);
+  Twist rotate_command(const RobotState& state);
+  double open_heading(const Pose2& pose) const;
+  void finish_record(const RobotState& state);
+
+  RobotLimits limits_;
+  Footprint footprint_;
+  NavigatorParams params_;
+  LidarParams lidar_;
+  MapMode mode_;
+  double dt_;
+  std::optional<TerrainGrid> terrain_;
+  Controller controller_;
+  std::unique_ptr<ScanMap> scan_map_;                    // MapMode::Scan
+  std::unique_ptr<OccupancyGrid> known_map_;             // MapMode::Known
+  std::shared_ptr<const DistanceField> known_field_;
+  std::vector<std::uint8_t> closed_;                     // cells given up after stalls
+  std::vector<double> radii_;                            // the inflation ladder, m
+  bool has_goal_ = false;
+  Vec2 goal_ = Vec2::Zero();
+  std::shared_ptr<const GlobalPath> path_;
+  int path_version_ = 0;
+  bool replan_now_ = false;
+  int replan_cycles_ = 0, stall_cycles_ = 0;
+  int cycles_since_replan_ = 0;
+  int rejected_cycles_ = 0;  // cycles in a row with every sample rejected
+  std::deque<Vec2> recent_;  // positions of the last stall_cycles_ + 1 cycles
+  NavigatorMode mode_now_ = NavigatorMode::Following;
+  FailureReason failure_ = FailureReason::None;
+  int recoveries_ = 0;
+  Vec2 recovery_origin_ = Vec2::Zero();
+  double backed_up_ = 0.0;       // m driven back in this recovery
+  bool backup_braking_ = false;  // the back-up is stopping
+  double rotated_ = 0.0;         // rad turned in this recovery
+  double rotate_goal_ = 0.0;     // rad, the heading the rotation aims at
+  int wait_cycles_left_ = 0;
+  Pose2 last_pose_;
+  std::array<int, kNavigatorModeCount> mode_counts_{};
+  CycleRecord record_;
+  std::vector<int> order_;
+};
+
+}  // namespace fgdwa

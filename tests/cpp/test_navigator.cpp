@@ -1,0 +1,388 @@
+// The Navigator's modes and every transition between them, its replanning,
+// terrain in the local planner, and its checks of bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "fgdwa/navigator.hpp"
+#include "fgdwa/presets.hpp"
+#include "test_support.hpp"
+
+using namespace fgdwa;
+using fgdwa::test::expect_error_naming;
+using fgdwa::test::kInf;
+
+namespace {
+
+OccupancyGrid room(int rows, int cols, const std::vector<std::array<int, 4>>& boxes = {}) {
+  std::vector<std::uint8_t> cells(static_cast<std::size_t>(rows) * cols, 0);
+  for (const auto& b : boxes)  // row0, col0, height, width
+    for (int row = b[0]; row < b[0] + b[2]; ++row)
+      for (int col = b[1]; col < b[1] + b[3]; ++col) cells[static_cast<std::size_t>(row) * cols + col] = 1;
+  return OccupancyGrid(rows, cols, 0.1, Vec2(0.0, 0.0), cells);
+}
+
+PlannerParams gdwa() { return planner_preset("gdwa").params; }
+
+RobotState at(double x, double y, double theta = 0.0) {
+  RobotState s;
+  s.pose = Pose2{x, y, theta};
+  return s;
+}
+
+// Steps the navigator without moving the robot: a robot held in place stalls.
+const CycleRecord& hold(Navigator& nav, const RobotState& state, int cycles, double& t, double dt) {
+  const CycleRecord* r = nullptr;
+  for (int i = 0; i < cycles; ++i, t += dt) r = &nav.step(state, nullptr, t);
+  return *r;
+}
+
+struct Drive {
+  RobotState state;
+  double t = 0.0;
+};
+
+// One cycle in a world of `truth`: scan, step, move.
+const CycleRecord& drive(Navigator& nav, Drive& d, const LaserScanner* scanner, std::mt19937_64& rng, Scan& scan,
+                         double dt) {
+  if (scanner) scanner->scan(d.state.pose, {}, 0.0, rng, scan);
+  const CycleRecord& r = nav.step(d.state, scanner ? &scan : nullptr, d.t);
+  d.state.pose = step(d.state.pose, r.command, dt);
+  d.state.twist = r.command;
+  d.t += dt;
+  return r;
+}
+
+}  // namespace
+
+TEST(Navigator, FollowsToTheGoalAndReportsGoalReached) {
+  const OccupancyGrid map = room(40, 60, {{5, 25, 8, 4}, {28, 35, 8, 4}});
+  Navigator nav(RobotLimits{}, Footprint::circle(0.25), gdwa(), map, MapMode::Known, LidarParams{});
+  nav.set_goal(Vec2(5.0, 2.0));
+  Drive d{at(0.8, 2.0)};
+  std::mt19937_64 rng(0);
+  Scan scan;
+  const FieldClearance truth(std::make_shared<DistanceField>(map));
+  NavigatorMode last = NavigatorMode::Following;
+  for (int i = 0; i < 300 && last != NavigatorMode::GoalReached; ++i) {
+    const CycleRecord& r = drive(nav, d, nullptr, rng, scan, 0.15);
+    ASSERT_GT(truth.clearance(Footprint::circle(0.25), d.state.pose, 0.0), 0.0);
+    if (i == 0) {
+      EXPECT_EQ(r.mode, NavigatorMode::Replanning);  // the first path
+      EXPECT_EQ(r.path_version, 1);
+      ASSERT_TRUE(r.path);
+    }
+    
+    last = r.mode;
+    if (r.planned) {
+      EXPECT_LE(r.best.size(), 5u);
+      for (std::size_t k = 1; k < r.best.size(); ++k) EXPECT_GE(r.best[k - 1].total, r.best[k].total);
+      if (r.chosen >= 0) {
+        ASSERT_FALSE(r.best.empty());
+        EXPECT_EQ(r.best[0].sample, r.chosen);
+        EXPECT_EQ(r.chosen_rollout.size(), static_cast<std::size_t>(gdwa().n_steps()));
+      }
+    }
+  }
+  EXPECT_EQ(last, NavigatorMode::GoalReached);
+  EXPECT_EQ(nav.path_version(), 1);  // the known map never blocks its own path
+  const CycleRecord& after = nav.step(d.state, nullptr, d.t);
+  EXPECT_EQ(after.mode, NavigatorMode::GoalReached);
+  EXPECT_LE(std::abs(after.command.v), std::abs(d.state.twist.v));
+}
+
+TEST(Navigator, ReplansWhenTheScanShowsThePathBlocked) {
+  // A wall across the room, open at the top, that the map built from scans lacks at first.
+  const OccupancyGrid truth = room(30, 60, {{0, 30, 22, 1}});
+  LidarParams lidar;
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), truth, MapMode::Scan, lidar);
+  nav.set_goal(Vec2(5.5, 1.0));
+  // A short-sighted first scan sees nothing: the first path is straight (unknown is free).
+  const LaserScanner blind(LidarParams{lidar.fov, lidar.beams, 0.5, 0.0}, std::make_shared<DistanceField>(truth));
+  std::mt19937_64 rng(0);
+  Scan scan;
+  blind.scan(Pose2{0.5, 1.0, 0.0}, {}, 0.0, rng, scan);
+  const CycleRecord& first = nav.step(at(0.5, 1.0), &scan, 0.0);
+  EXPECT_EQ(first.mode, NavigatorMode::Replanning);
+  ASSERT_TRUE(first.path);
+  for (const Vec2& p : first.path->points()) EXPECT_NEAR(p.y(), 1.0, 1e-9);
+  // The full scan shows the wall; the replan waits for replan_period (0.5 s: 3 cycles of 0.15 s).
+  const LaserScanner seeing(lidar, std::make_shared<DistanceField>(truth));
+  double t = 0.15;
+  int replanned_at = -1;
+  for (int i = 1; i <= 6 && replanned_at < 0; ++i, t += 0.15) {
+    seeing.scan(Pose2{0.5, 1.0, 0.0}, {}, 0.0, rng, scan);
+    const CycleRecord& r = nav.step(at(0.5, 1.0), &scan, t);
+    if (i == 1) {
+      EXPECT_GT(r.new_cells, 0u);
+    }
+    if (r.path_version == 2) {
+      replanned_at = i;
+      EXPECT_EQ(r.mode, NavigatorMode::Replanning);
+      double top = 0.0;
+      for (const Vec2& p : r.path->points()) top = std::max(top, p.y());
+      EXPECT_GT(top, 2.2);  // over the wall's open end
+    }
+  }
+  EXPECT_EQ(replanned_at, 3);
+}
+
+TEST(Navigator, StallBacksUpWithinTheLimitsThenReplansAroundTheGivenUpPath) {
+  const OccupancyGrid map = room(30, 60);
+  NavigatorParams params;
+  params.stall_time = 0.75;  // 5 cycles of 0.15 s
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  nav.set_goal(Vec2(5.5, 1.5));
+  double t = 0.0;
+  const RobotState held = at(2.0, 1.5);
+  const CycleRecord& before = hold(nav, held, 5, t, 0.15);
+  EXPECT_EQ(before.mode, NavigatorMode::Following);
+  EXPECT_EQ(before.recoveries, 0);
+  const CycleRecord& stalled = nav.step(held, nullptr, t);  // six positions within 0.1 m
+  t += 0.15;
+  ASSERT_EQ(stalled.mode, NavigatorMode::BackingUp);
+  EXPECT_EQ(stalled.recoveries, 1);
+  EXPECT_FALSE(stalled.planned);
+  // Reverse within the acceleration limit, up to backup_speed, then stop after backup_distance.
+  RobotState s = held;
+  const RobotLimits limits;
+  double driven = 0.0;
+  Twist command = stalled.command;
+  int cycles = 0;
+  while (true) {
+    EXPECT_LE(command.v, 0.0);
+    EXPECT_GE(command.v, -params.backup_speed - 1e-12);
+    EXPECT_LE(std::abs(command.v - s.twist.v), limits.acc_v * 0.15 + 1e-12);
+    driven += -command.v * 0.15;
+    s.pose = step(s.pose, command, 0.15);
+    s.twist = command;
+    const CycleRecord& r = nav.step(s, nullptr, t);
+    t += 0.15;
+    ++cycles;
+    ASSERT_LT(cycles, 40);
+    if (r.mode != NavigatorMode::BackingUp) {
+      // Backed up: the planner takes over on a new path around the given-up stretch.
+      EXPECT_TRUE(r.planned);
+      EXPECT_EQ(r.mode, NavigatorMode::Replanning);
+      EXPECT_EQ(r.path_version, 2);
+      double off = 0.0;
+      for (const Vec2& p : r.path->points()) off = std::max(off, std::abs(p.y() - 1.5));
+      EXPECT_GT(off, 0.1);
+      break;
+    }
+    command = r.command;
+  }
+  EXPECT_NEAR(driven, params.backup_distance, 0.06);
+  EXPECT_EQ(nav.mode_counts()[static_cast<std::size_t>(NavigatorMode::BackingUp)], cycles);
+}
+
+TEST(Navigator, StallWithTheRearBlockedRotatesTowardOpenSpace) {
+  // A corridor along x: the robot stands across it, facing its upper wall, its back
+  // 1.5 cm from the lower one. Backing up is blocked; turning toward +-x opens the way.
+  const OccupancyGrid map = room(40, 40, {{17, 0, 1, 40}, {25, 0, 1, 40}});
+  NavigatorParams params;
+  params.stall_time = 0.3;  // 2 cycles
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  nav.set_goal(Vec2(3.5, 2.1));
+  double t = 0.0;
+  const RobotState held = at(2.0, 2.015, M_PI / 2);
+  hold(nav, held, 2, t, 0.15);
+  const CycleRecord& r = nav.step(held, nullptr, t);
+  ASSERT_EQ(r.mode, NavigatorMode::Rotating);
+  EXPECT_EQ(r.command.v, 0.0);
+  EXPECT_NE(r.command.omega, 0.0);
+  EXPECT_LE(std::abs(r.command.omega), RobotLimits{}.acc_omega * 0.15 + 1e-12);
+  // Turning ends the recovery: the goal heading reached, the limit turned, or the turn blocked.
+  RobotState s = held;
+  Twist command = r.command;
+  t += 0.15;
+  double turned = 0.0;
+  for (int i = 0; i < 200; ++i, t += 0.15) {
+    s.pose = step(s.pose, command, 0.15);
+    s.twist = command;
+    turned += std::abs(command.omega) * 0.15;
+    const CycleRecord& next = nav.step(s, nullptr, t);
+    if (next.mode != NavigatorMode::Rotating) {
+      EXPECT_TRUE(next.planned);
+      EXPECT_NEAR(std::abs(wrap_angle(s.pose.theta - M_PI / 2)), M_PI / 2, 0.06);  // along the corridor
+      EXPECT_LE(turned, params.rotate_limit + 1e-9);
+      return;
+    }
+    command = next.command;
+  }
+  FAIL() << "the rotation never ended";
+}
+
+TEST(Navigator, StallBesideAMovingObstacleWaitsThenFollows) {
+  const OccupancyGrid map = room(30, 60);
+  NavigatorParams params;
+  params.stall_time = 0.3;
+  params.wait_time = 0.6;  // 4 cycles
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  nav.set_goal(Vec2(5.5, 1.5));
+  const std::vector<Disc> passing = {Disc{Vec2(2.8, 1.5), 0.3, Vec2(0.0, 0.5)}};
+  double t = 0.0;
+  const RobotState held = at(2.0, 1.5);
+  for (int i = 0; i < 2; ++i, t += 0.15) nav.step(held, nullptr, t, passing);
+  int waited = 0;
+  for (int i = 0; i < 10; ++i, t += 0.15) {
+    const CycleRecord& r = nav.step(held, nullptr, t, passing);
+    if (r.mode == NavigatorMode::Waiting) {
+      ++waited;
+      EXPECT_EQ(r.command.v, 0.0);
+    } else if (waited) {
+      EXPECT_TRUE(r.planned);  // the wait over, the planner drives again
+      break;
+    }
+  }
+  EXPECT_EQ(waited, 4);
+}
+
+TEST(Navigator, FailsAfterMaxRecoveriesWithoutProgressAndWhenNoPathExists) {
+  const OccupancyGrid map = room(30, 60);
+  NavigatorParams params;
+  params.stall_time = 0.3;
+  params.max_recoveries = 2;
+  params.backup_distance = 0.0;  // recoveries that cannot move the robot
+  params.rotate_limit = 0.0;
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  nav.set_goal(Vec2(5.5, 1.5));
+  double t = 0.0;
+  const RobotState held = at(2.0, 1.5);
+  int stalls = 0;
+  NavigatorMode mode = NavigatorMode::Following;
+  for (int i = 0; i < 30 && mode != NavigatorMode::Failed; ++i, t += 0.15) {
+    const CycleRecord& r = nav.step(held, nullptr, t);
+    stalls = std::max(stalls, r.recoveries);
+    mode = r.mode;
+    if (mode == NavigatorMode::Failed) {
+      EXPECT_EQ(r.failure, FailureReason::RecoveriesExhausted);
+    }
+  }
+  EXPECT_EQ(mode, NavigatorMode::Failed);
+  EXPECT_EQ(stalls, 3);
+  // Failed holds until a new goal.
+  EXPECT_EQ(nav.step(held, nullptr, t).mode, NavigatorMode::Failed);
+  nav.set_goal(Vec2(5.0, 1.5));
+  EXPECT_NE(nav.step(held, nullptr, t).mode, NavigatorMode::Failed);
+
+  // A goal walled in on the known map: no path at any radius.
+  const OccupancyGrid walled = room(30, 60, {{10, 40, 1, 12}, {20, 40, 1, 12}, {10, 40, 11, 1}, {10, 51, 11, 1}});
+  Navigator boxed(RobotLimits{}, Footprint::circle(0.2), gdwa(), walled, MapMode::Known, LidarParams{});
+  boxed.set_goal(Vec2(4.5, 1.5));
+  const CycleRecord& r = boxed.step(at(1.0, 1.5), nullptr, 0.0);
+  EXPECT_EQ(r.mode, NavigatorMode::Failed);
+  EXPECT_EQ(r.failure, FailureReason::NoGlobalPath);
+}
+
+TEST(Navigator, ProgressResetsTheRecoveryCount) {
+  const OccupancyGrid map = room(30, 80);
+  NavigatorParams params;
+  params.stall_time = 0.3;
+  params.backup_distance = 0.0;
+  params.rotate_limit = 0.0;
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  nav.set_goal(Vec2(7.5, 1.5));
+  double t = 0.0;
+  const CycleRecord& first = hold(nav, at(1.0, 1.5), 3, t, 0.15);
+  EXPECT_EQ(first.recoveries, 1);
+  // 1 m on from where that recovery began, the count starts over.
+  const CycleRecord& later = nav.step(at(2.1, 1.5), nullptr, t);
+  EXPECT_EQ(later.recoveries, 0);
+}
+
+TEST(Navigator, RejectsBadInputNamingIt) {
+  const OccupancyGrid map = room(30, 60);
+  const LidarParams lidar;
+  const auto make = [&](const NavigatorParams& p) {
+    return Navigator(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, lidar, nullptr, p);
+  };
+  const auto bad = [&](auto mutate, const std::string& field) {
+    NavigatorParams p;
+    mutate(p);
+    expect_error_naming([&] { make(p); }, field);
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  bad([&](NavigatorParams& p) { p.path_margin = -0.1; }, "path_margin");
+  bad([&](NavigatorParams& p) { p.replan_period = 0.0; }, "replan_period");
+  bad([&](NavigatorParams& p) { p.stall_time = nan; }, "stall_time");
+  bad([&](NavigatorParams& p) { p.stall_distance = -1.0; }, "stall_distance");
+  bad([&](NavigatorParams& p) { p.give_up_length = -1.0; }, "give_up_length");
+  bad([&](NavigatorParams& p) { p.keep_clear = nan; }, "keep_clear");
+  bad([&](NavigatorParams& p) { p.backup_distance = -0.3; }, "backup_distance");
+  bad([&](NavigatorParams& p) { p.backup_speed = 0.0; }, "backup_speed");
+  bad([&](NavigatorParams& p) { p.rotate_limit = -1.0; }, "rotate_limit");
+  bad([&](NavigatorParams& p) { p.wait_time = kInf; }, "wait_time");
+  bad([&](NavigatorParams& p) { p.wait_radius = -1.0; }, "wait_radius");
+  bad([&](NavigatorParams& p) { p.max_recoveries = -1; }, "max_recoveries");
+  bad([&](NavigatorParams& p) { p.progress_reset = nan; }, "progress_reset");
+  bad([&](NavigatorParams& p) { p.record_top_k = -2; }, "record_top_k");
+
+  Navigator nav = make(NavigatorParams{});
+  expect_error_naming([&] { nav.step(at(1.0, 1.0), nullptr, 0.0); }, "set_goal");
+  expect_error_naming([&] { nav.set_global_path(GlobalPath({Vec2(0.5, 0.5), Vec2(1.0, 1.0)})); }, "set_goal");
+  expect_error_naming([&] { nav.set_goal(Vec2(9.0, 1.0)); }, "off the map");
+  expect_error_naming([&] { nav.set_goal(Vec2(nan, 1.0)); }, "goal x");
+  nav.set_goal(Vec2(5.0, 1.0));
+  Scan scan;
+  scan.ranges.assign(static_cast<std::size_t>(lidar.beams) - 1, 1.0);
+  expect_error_naming([&] { nav.step(at(1.0, 1.0), &scan, 0.0); }, "beams");
+  scan.ranges.assign(static_cast<std::size_t>(lidar.beams), 1.0);
+  scan.ranges[17] = nan;
+  expect_error_naming([&] { nav.step(at(1.0, 1.0), &scan, 0.0); }, "range[17]");
+  expect_error_naming([&] { nav.step(at(nan, 1.0), nullptr, 0.0); }, "state x");
+  expect_error_naming([&] { nav.step(at(1.0, 1.0), nullptr, nan); }, "time");
+  TerrainGrid other(10, 10, 0.1, Vec2(0.0, 0.0), std::vector<std::uint8_t>(100, 0));
+  expect_error_naming(
+      [&] { Navigator(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, lidar, nullptr, {}, other); },
+      "terrain");
+  PassingFactors factors = kDefaultPassingFactors;
+  factors[2] = 1.5;
+  TerrainGrid flat(30, 60, 0.1, Vec2(0.0, 0.0), std::vector<std::uint8_t>(1800, 0));
+  expect_error_naming(
+      [&] { Navigator(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, lidar, nullptr, {}, flat, factors); },
+      "passing_factors[2]");
+}
+
+TEST(PlannerTerrain, RejectsRolloutsIntoGradeFourAndCapsTheWindow) {
+  // Grade 4 from x = 2 m on; grade 2 (factor 0.6) up to x = 1.5 m.
+  std::vector<std::uint8_t> grades(30 * 60, 0);
+  for (int row = 0; row < 30; ++row)
+    for (int col = 0; col < 60; ++col) grades[static_cast<std::size_t>(row) * 60 + col] = col >= 20 ? 4 : (col < 15 ? 2 : 0);
+  const auto terrain = std::make_shared<TerrainGrid>(30, 60, 0.1, Vec2(0.0, 0.0), grades);
+  LocalPlanner planner(RobotLimits{}, Footprint::circle(0.25), PlannerParams{});
+  planner.set_terrain(terrain);
+  const FieldClearance open;
+  RobotState s = at(0.5, 1.5);
+  s.twist = Twist{0.6, 0.0};
+  const double cap = 0.6 * RobotLimits{}.v_max;
+  for (const Twist& sample : planner.plan(s, Vec2(5.0, 1.5), open).samples) EXPECT_LE(sample.v, cap + 1e-12);
+  // 30 cm from grade 4 at speed: the fast samples would run onto it before stopping.
+  s = at(1.45, 1.5);
+  s.twist = Twist{0.6, 0.0};
+  const PlanResult& r = planner.plan(s, Vec2(5.0, 1.5), open);
+  int terrain_rejects = 0;
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    if (r.reasons[i] != RejectReason::Terrain) continue;
+    ++terrain_rejects;
+    EXPECT_GT(r.samples[i].v, 0.0);
+  }
+  EXPECT_GT(terrain_rejects, 0);
+  EXPECT_EQ(r.reject_counts[static_cast<std::size_t>(RejectReason::Terrain)], terrain_rejects);
+  ASSERT_GE(r.best_index, 0);
+  // Whatever it chose, the footprint never reaches grade 4 before the robot could stop: drive it and see.
+  RobotState d = s;
+  for (int i = 0; i < 80; ++i) {
+    const PlanResult& p = planner.plan(d, Vec2(5.0, 1.5), open);
+    d.pose = step(d.pose, p.command, 0.15);
+    d.twist = p.command;
+    ASSERT_LT(terrain->grade_at(d.pose.position()), 4) << "cycle " << i;
+  }
+  // Without terrain the same start goes straight for the goal at full speed.
+  planner.set_terrain(nullptr);
+  const PlanResult& free = planner.plan(s, Vec2(5.0, 1.5), open);
+  EXPECT_EQ(free.reject_counts[static_cast<std::size_t>(RejectReason::Terrain)], 0);
+  EXPECT_GT(free.command.v, cap);
+}
