@@ -1,3 +1,4 @@
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -27,7 +28,78 @@ CriticConfig critic_config(std::string name, double weight, const py::dict& para
 }
 }  // namespace fgdwa::py_convert
 
+namespace {
+
+// A critic written in Python: an instance of a registered class, scoring a
+// batch of rollouts as numpy arrays (see fgdwa.register_critic).
+class PythonCritic : public Critic {
+ public:
+  PythonCritic(std::string name, py::object instance) : name_(std::move(name)), instance_(std::move(instance)) {
+    const std::string sense = py::str(py::getattr(instance_, "sense", py::str("reward")));
+    if (sense != "reward" && sense != "cost")
+      throw Error("critic '" + name_ + "': sense = '" + sense + "': expected 'reward' or 'cost'");
+    sense_ = sense == "cost" ? CriticSense::Cost : CriticSense::Reward;
+    needs_path_ = py::bool_(py::getattr(instance_, "needs_path", py::bool_(false)));
+  }
+  std::string name() const override { return name_; }
+  CriticSense sense() const override { return sense_; }
+  bool needs_path() const override { return needs_path_; }
+  void prepare(const CriticContext& c) override {
+    if (!py::hasattr(instance_, "prepare")) return;
+    py::dict context;
+    context["pose"] = py::make_tuple(c.state.pose.x, c.state.pose.y, c.state.pose.theta);
+    context["velocity"] = py::make_tuple(c.state.twist.v, c.state.twist.omega);
+    context["goal"] = py::make_tuple(c.goal.x(), c.goal.y());
+    context["target"] = py::make_tuple(c.target.x(), c.target.y());
+    context["dt"] = c.dt;
+    context["path"] = c.path ? py::object(py_convert::points_array(c.path->points())) : py::object(py::none());
+    instance_.attr("prepare")(context);
+  }
+  double score(const Rollout& rollout) const override {
+    double out = 0.0;
+    score_all({rollout}, &out);
+    return out;
+  }
+  void score_all(const std::vector<Rollout>& rollouts, double* out) const override {
+    const auto n = static_cast<py::ssize_t>(rollouts.size());
+    const auto steps = n ? static_cast<py::ssize_t>(rollouts[0].poses->size()) : 0;
+    py::array_t<double> poses({n, steps, py::ssize_t(3)}), commands({n, py::ssize_t(2)}), clearance(n);
+    auto p = poses.mutable_unchecked<3>();
+    auto c = commands.mutable_unchecked<2>();
+    auto d = clearance.mutable_unchecked<1>();
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const Rollout& r = rollouts[static_cast<std::size_t>(i)];
+      for (py::ssize_t k = 0; k < steps; ++k) {
+        const Pose2& q = (*r.poses)[static_cast<std::size_t>(k)];
+        p(i, k, 0) = q.x, p(i, k, 1) = q.y, p(i, k, 2) = q.theta;
+      }
+      c(i, 0) = r.command.v, c(i, 1) = r.command.omega;
+      d(i) = r.min_clearance;
+    }
+    const py::object scores = instance_.attr("score_batch")(poses, commands, clearance);
+    // NaN is a veto, so the scores are not checked for finiteness here (the planner does).
+    const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(scores);
+    if (!values || values.ndim() != 1)
+      throw Error("critic '" + name_ + "': score_batch must return a 1-d array of numbers");
+    if (values.size() != n)
+      throw Error("critic '" + name_ + "': score_batch returned " + std::to_string(values.size()) + " scores for " +
+                  std::to_string(n) + " rollouts");
+    for (py::ssize_t i = 0; i < n; ++i) out[i] = values.at(i);
+  }
+
+ private:
+  std::string name_;
+  py::object instance_;
+  CriticSense sense_ = CriticSense::Reward;
+  bool needs_path_ = false;
+};
+
+}  // namespace
+
 void init_critics(py::module_& m) {
+  py::enum_<CriticSense>(m, "CriticSense", "Whether a critic's larger raw scores are better (reward) or worse (cost).")
+      .value("Reward", CriticSense::Reward)
+      .value("Cost", CriticSense::Cost);
   py::class_<CriticConfig>(m, "CriticConfig",
                            "A critic by registered name, its weight, and its own parameters "
                            "(e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).")
@@ -66,4 +138,30 @@ void init_critics(py::module_& m) {
         return s.str();
       });
   m.def("critic_names", &critic_names, "Names of the critics that can be configured.");
+  m.def(
+      "register_python_critic",
+      [](const std::string& name, py::object cls) {
+        if (!PyCallable_Check(cls.ptr())) throw Error("register_critic: critic '" + name + "' is not callable");
+        if (!py::hasattr(cls, "score_batch"))
+          throw Error("register_critic: critic '" + name + "' has no score_batch(poses, commands, min_clearance)");
+        // Held for the life of the process: the registry outlives the interpreter's objects.
+        PyObject* held = cls.inc_ref().ptr();
+        register_critic(name, [name, held](std::map<std::string, double>& params,
+                                           std::map<std::string, std::string>& options) -> std::unique_ptr<Critic> {
+          py::gil_scoped_acquire gil;
+          py::dict kwargs;
+          for (const auto& [key, value] : params) kwargs[py::str(key)] = value;
+          for (const auto& [key, value] : options) kwargs[py::str(key)] = value;
+          params.clear();
+          options.clear();
+          py::object instance;
+          try {
+            instance = py::reinterpret_borrow<py::object>(held)(**kwargs);
+          } catch (py::error_already_set& e) {
+            throw Error("critic '" + name + "': " + std::string(e.what()));
+          }
+          return std::make_unique<PythonCritic>(name, instance);
+        });
+      },
+      py::arg("name"), py::arg("cls"), "Registers a Python critic class under `name` (see fgdwa.register_critic).");
 }

@@ -134,6 +134,8 @@ void init_navigator(py::module_& m) {
         for (std::size_t i = 0; i < kRejectReasonCount; ++i) out[to_string(static_cast<RejectReason>(i))] = r.reject_counts[i];
         return out;
       })
+      .def_readonly("critic_vetoes", &CycleRecord::critic_vetoes,
+                    "Per critic of the planner (in PlannerParams.critics order): samples it vetoed this cycle.")
       .def_readonly("new_cells", &CycleRecord::new_cells)
       .def_readonly("recoveries", &CycleRecord::recoveries)
       .def_property_readonly("times", [](const CycleRecord& r) {

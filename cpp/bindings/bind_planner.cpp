@@ -70,7 +70,8 @@ void init_planner(py::module_& m) {
   py::enum_<RejectReason>(m, "RejectReason", "Why a sampled command was rejected.")
       .value("None_", RejectReason::None)
       .value("Collision", RejectReason::Collision)
-      .value("Terrain", RejectReason::Terrain);
+      .value("Terrain", RejectReason::Terrain)
+      .value("Critic", RejectReason::Critic);
 
   py::class_<PlannerParams>(m, "PlannerParams", "Parameters of the local planner (SI units).")
       .def(py::init([](double dt, double sim_time, int n_v, int n_omega, const std::string& normalization,

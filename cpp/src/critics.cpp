@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <mutex>
 
 #include "fgdwa/dwb_critics.hpp"
 #include "validation.hpp"
@@ -97,7 +98,12 @@ double take(Params& params, const std::string& key, double fallback) {
   return value;
 }
 
-using Factory = std::function<std::unique_ptr<Critic>(Params&, Options&)>;
+using Factory = CriticFactory;
+
+std::mutex& registry_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
 
 std::unique_ptr<Critic> make_similarity(Params& p, Options& o) {
   SimilarityParams params;
@@ -142,8 +148,8 @@ Factory dwb_grid(bool forward_point) {
   };
 }
 
-const std::map<std::string, Factory>& registry() {
-  static const std::map<std::string, Factory> factories = {
+std::map<std::string, Factory>& registry() {
+  static std::map<std::string, Factory> factories = {
       {"heading", [](Params&, Options&) { return std::make_unique<HeadingCritic>(); }},
       {"clearance", [](Params& p, Options&) { return std::make_unique<ClearanceCritic>(take(p, "cap", 2.0)); }},
       {"velocity", [](Params&, Options&) { return std::make_unique<VelocityCritic>(); }},
@@ -158,19 +164,43 @@ const std::map<std::string, Factory>& registry() {
 }
 }  // namespace
 
+const char* to_string(CriticSense sense) {
+  switch (sense) {
+    case CriticSense::Reward: return "reward";
+    case CriticSense::Cost: return "cost";
+  }
+  return "?";
+}
+
+void register_critic(const std::string& name, CriticFactory factory) {
+  if (name.empty()) throw Error("register_critic: the name is empty");
+  if (!factory) throw Error("register_critic: critic '" + name + "' has no factory");
+  std::lock_guard<std::mutex> lock(registry_mutex());
+  if (!registry().emplace(name, std::move(factory)).second)
+    throw Error("register_critic: a critic named '" + name + "' is already registered");
+}
+
 std::unique_ptr<Critic> make_critic(const CriticConfig& config) {
   detail::require_finite("weight of critic '" + config.name + "'", config.weight);
-  const auto& factories = registry();
-  auto it = factories.find(config.name);
-  if (it == factories.end()) {
+  Factory factory;
+  {
+    std::lock_guard<std::mutex> lock(registry_mutex());
+    const auto& factories = registry();
+    auto it = factories.find(config.name);
+    if (it != factories.end()) factory = it->second;
+  }
+  if (!factory) {
+    std::lock_guard<std::mutex> lock(registry_mutex());
+    const auto& factories = registry();
     std::string known;
-    for (const auto& [name, factory] : factories) known += (known.empty() ? "" : ", ") + name;
+    for (const auto& entry : factories) known += (known.empty() ? "" : ", ") + entry.first;
     throw Error("unknown critic '" + config.name + "' (known: " + known + ")");
   }
   Params params = config.params;
   for (const auto& [key, value] : params) detail::require_finite("critic " + config.name + "." + key, value);
   Options options = config.options;
-  auto critic = it->second(params, options);
+  auto critic = factory(params, options);
+  if (!critic) throw Error("critic '" + config.name + "': its factory returned no critic");
   if (!params.empty())
     throw Error("critic '" + config.name + "' has no parameter '" + params.begin()->first + "'");
   if (!options.empty())
@@ -179,6 +209,7 @@ std::unique_ptr<Critic> make_critic(const CriticConfig& config) {
 }
 
 std::vector<std::string> critic_names() {
+  std::lock_guard<std::mutex> lock(registry_mutex());
   std::vector<std::string> names;
   for (const auto& [name, factory] : registry()) names.push_back(name);
   return names;

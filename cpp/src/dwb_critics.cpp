@@ -46,10 +46,10 @@ double DwbObstacleCritic::score(const Rollout& rollout) const {
   const auto cost_of = [&](std::size_t k) {
     return dwb_inflation_cost(world_->clearance(*footprint_, poses[k], static_cast<double>(k + 1) * dt_), params_);
   };
-  if (params_.aggregation == DwbAggregation::Last) return -cost_of(poses.size() - 1);
+  if (params_.aggregation == DwbAggregation::Last) return cost_of(poses.size() - 1);
   double cost = 0.0;
   for (std::size_t k = 0; k < poses.size(); ++k) cost += cost_of(k);
-  return -cost;
+  return cost;
 }
 
 void DwbGridParams::validate() const {
@@ -107,11 +107,11 @@ Vec2 DwbGridCritic::forward_point(const Pose2& pose) const {
 }
 
 double DwbPathDistCritic::score(const Rollout& rollout) const {
-  return -cells(polyline_distance(local_.points, rollout.poses->back().position()));
+  return cells(polyline_distance(local_.points, rollout.poses->back().position()));
 }
 
 double DwbGoalDistCritic::score(const Rollout& rollout) const {
-  return -cells((rollout.poses->back().position() - local_.goal()).norm());
+  return cells((rollout.poses->back().position() - local_.goal()).norm());
 }
 
 void DwbPathAlignCritic::prepare(const CriticContext& context) {
@@ -121,7 +121,7 @@ void DwbPathAlignCritic::prepare(const CriticContext& context) {
 
 double DwbPathAlignCritic::score(const Rollout& rollout) const {
   if (!active_) return 0.0;
-  return -cells(polyline_distance(local_.points, forward_point(rollout.poses->back())));
+  return cells(polyline_distance(local_.points, forward_point(rollout.poses->back())));
 }
 
 void DwbGoalAlignCritic::prepare(const CriticContext& context) {
@@ -133,7 +133,7 @@ void DwbGoalAlignCritic::prepare(const CriticContext& context) {
 }
 
 double DwbGoalAlignCritic::score(const Rollout& rollout) const {
-  return -cells((forward_point(rollout.poses->back()) - target_).norm());
+  return cells((forward_point(rollout.poses->back()) - target_).norm());
 }
 
 }  // namespace fgdwa

@@ -343,6 +343,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   record_.chosen_rollout.clear();
   record_.best.clear();
   record_.reject_counts.fill(0);
+  record_.critic_vetoes.assign(controller_.planner().last_result().critic_names.size(), 0);
   record_.new_cells = 0;
   record_.times = StageTimes{};
   const Vec2 position = state.pose.position();
@@ -448,6 +449,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
     record_.beta = report.beta;
     record_.delta = report.delta;
     record_.reject_counts = plan.reject_counts;
+    record_.critic_vetoes = plan.critic_vetoes;
     record_.chosen = plan.best_index;
     const std::vector<Trajectory>& rollouts = controller_.planner().rollouts();
     if (plan.best_index >= 0) record_.chosen_rollout = rollouts[static_cast<std::size_t>(plan.best_index)];

@@ -31,6 +31,7 @@ const char* to_string(RejectReason reason) {
     case RejectReason::None: return "None";
     case RejectReason::Collision: return "Collision";
     case RejectReason::Terrain: return "Terrain";
+    case RejectReason::Critic: return "Critic";
   }
   return "?";
 }
@@ -85,6 +86,7 @@ LocalPlanner::LocalPlanner(const RobotLimits& limits, const Footprint& footprint
     critics_.push_back(make_critic(config));
     result_.critic_names.push_back(config.name);
     result_.weights.push_back(config.weight);
+    result_.senses.push_back(critics_.back()->sense());
   }
 }
 
@@ -206,6 +208,8 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
     result_.reasons.clear();
     result_.min_clearance.clear();
     result_.free_distance.clear();
+    result_.vetoed_by.clear();
+    result_.critic_vetoes.assign(critics_.size(), 0);
     result_.raw.resize(0, static_cast<Eigen::Index>(critics_.size()));
     result_.normalized.resize(0, static_cast<Eigen::Index>(critics_.size()));
     result_.total.resize(0);
@@ -350,6 +354,8 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
   result_.normalized.setZero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
   result_.total.setConstant(static_cast<Eigen::Index>(n), -std::numeric_limits<double>::infinity());
 
+  result_.vetoed_by.assign(n, -1);
+  result_.critic_vetoes.assign(m, 0);
   admissible_.clear();
   admissible_index_.clear();
   for (std::size_t i = 0; i < n; ++i) {
@@ -361,14 +367,35 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
   scores_.resize(admissible_.size());
   for (std::size_t j = 0; j < m; ++j) {
     critics_[j]->score_all(admissible_, scores_.data());
-    for (std::size_t a = 0; a < admissible_.size(); ++a) result_.raw(admissible_index_[a], j) = scores_[a];
+    for (std::size_t a = 0; a < admissible_.size(); ++a) {
+      const std::size_t i = admissible_index_[a];
+      if (Critic::is_veto(scores_[a])) {
+        // The first critic to veto a sample is the one it is counted against.
+        if (result_.vetoed_by[i] < 0) {
+          result_.vetoed_by[i] = static_cast<int>(j);
+          ++result_.critic_vetoes[j];
+        }
+        continue;
+      }
+      if (!std::isfinite(scores_[a]))
+        throw Error(detail::describe("critic '" + critics_[j]->name() + "' score", scores_[a],
+                                     "must be finite (Critic::veto() rejects a sample)"));
+      result_.raw(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = scores_[a];
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (result_.vetoed_by[i] < 0) continue;
+    --result_.reject_counts[static_cast<std::size_t>(RejectReason::None)];
+    ++result_.reject_counts[static_cast<std::size_t>(RejectReason::Critic)];
+    result_.reasons[i] = RejectReason::Critic;
+    result_.raw.row(static_cast<Eigen::Index>(i)).setZero();
   }
 
   for (std::size_t j = 0; j < m; ++j) {
-    double sum = 0.0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    double magnitude = 0.0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t i = 0; i < n; ++i) {
       if (result_.reasons[i] != RejectReason::None) continue;
-      sum += result_.raw(i, j);
+      magnitude += std::abs(result_.raw(i, j));
       lo = std::min(lo, result_.raw(i, j));
       hi = std::max(hi, result_.raw(i, j));
     }
@@ -376,7 +403,8 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
       if (result_.reasons[i] != RejectReason::None) continue;
       double& out = result_.normalized(i, j);
       switch (params_.normalization) {
-        case Normalization::Sum: out = sum != 0.0 ? result_.raw(i, j) / sum : 0.0; break;
+        // Dividing by a positive number keeps every term's order, whatever its sign.
+        case Normalization::Sum: out = magnitude > 0.0 ? result_.raw(i, j) / magnitude : 0.0; break;
         case Normalization::MinMax: out = hi > lo ? (result_.raw(i, j) - lo) / (hi - lo) : 0.0; break;
         case Normalization::None: out = result_.raw(i, j); break;
       }
@@ -386,7 +414,10 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
   for (std::size_t i = 0; i < n; ++i) {
     if (result_.reasons[i] != RejectReason::None) continue;
     double total = 0.0;
-    for (std::size_t j = 0; j < m; ++j) total += result_.weights[j] * result_.normalized(i, j);
+    for (std::size_t j = 0; j < m; ++j) {
+      const double term = result_.weights[j] * result_.normalized(i, j);
+      total += result_.senses[j] == CriticSense::Cost ? -term : term;
+    }
     result_.total(static_cast<Eigen::Index>(i)) = total;
     if (total > best) {  // strict: ties keep the first sample, deterministically
       best = total;

@@ -11,6 +11,7 @@ from fgdwa._core import (
     CollisionWorld,
     Controller,
     CriticConfig,
+    CriticSense,
     CycleRecord,
     CycleReport,
     DensityReading,
@@ -76,6 +77,7 @@ from fgdwa._core import (
     wrap_angle,
 )
 from fgdwa.fuzzy import engine_from_dict, engine_from_yaml, engine_to_dict, paper_controller_config  # noqa: E402
+from fgdwa.custom_critics import register_critic  # noqa: E402
 from fgdwa.global_planning import global_methods, plan_global  # noqa: E402
 
 __version__ = "0.1.0"
@@ -86,6 +88,7 @@ __all__ = [
     "CollisionWorld",
     "Controller",
     "CriticConfig",
+    "CriticSense",
     "CycleRecord",
     "CycleReport",
     "DensityReading",
@@ -149,6 +152,7 @@ __all__ = [
     "points_field",
     "preset_names",
     "reference_samples",
+    "register_critic",
     "robot_names",
     "robot_preset",
     "rollout",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -333,6 +333,53 @@ class VelocityWindow:
         ...
     @property
     def v_lo(self) -> float:
+        ...
+class CriticSense:
+    """
+    Whether a critic's larger raw scores are better (reward) or worse (cost).
+    
+    Members:
+    
+      Reward
+    
+      Cost
+    """
+    Cost: typing.ClassVar[CriticSense]
+    Reward: typing.ClassVar[CriticSense]
+    __members__: typing.ClassVar[dict[str, CriticSense]]
+    @typing.overload
+    def __eq__(self, other: CriticSense) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: CriticSense) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
         ...
 class CriticConfig:
     """
@@ -663,8 +710,11 @@ class RejectReason:
       Collision
     
       Terrain
+    
+      Critic
     """
     Collision: typing.ClassVar[RejectReason]
+    Critic: typing.ClassVar[RejectReason]
     None_: typing.ClassVar[RejectReason]
     Terrain: typing.ClassVar[RejectReason]
     __members__: typing.ClassVar[dict[str, RejectReason]]
@@ -1379,6 +1429,11 @@ class CycleRecord:
     def command(self) -> Twist:
         ...
     @property
+    def critic_vetoes(self) -> list[int]:
+        """
+        Per critic of the planner (in PlannerParams.critics order): samples it vetoed this cycle.
+        """
+    @property
     def delta(self) -> float:
         ...
     @property
@@ -1536,6 +1591,10 @@ def preset_names() -> list[str]:
 def reference_samples(path: ..., robot: typing.Any, v_ref: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex, n: typing.SupportsInt | typing.SupportsIndex, sampling: str = 'polyline') -> numpy.typing.NDArray[numpy.float64]:
     """
     (n, 2) reference samples E of the similarity cost (SPEC 4, Eq. 9): from the robot's projection onto the path, i * v_ref * dt further along the current segment ('segment') or along the path ('polyline').
+    """
+def register_python_critic(name: str, cls: typing.Any) -> None:
+    """
+    Registers a Python critic class under `name` (see fgdwa.register_critic).
     """
 def robot_names() -> list[str]:
     ...

@@ -69,6 +69,8 @@ class BarnSetup:
     noise_std: float = 0.0  # m
     replan_period: float = 0.5  # s between replans of a blocked path at most
     stall_time: float = 3.0  # s without 0.1 m of progress before a recovery
+    # The challenge's time limit ends a run: the navigator keeps recovering until then.
+    max_recoveries: int = 1000
 
     def __post_init__(self):
         for name in ("v_max", "dt", "sim_time", "lidar_range", "replan_period", "stall_time"):
@@ -77,7 +79,7 @@ class BarnSetup:
                 raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be a finite number > 0")
         if not (math.isfinite(self.noise_std) and self.noise_std >= 0):
             raise FgdwaError(f"BarnSetup.noise_std = {self.noise_std!r}: must be >= 0 (m)")
-        for name in ("lidar_beams",):
+        for name in ("lidar_beams", "max_recoveries"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
                 raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be an integer >= 1")
@@ -90,7 +92,8 @@ class BarnSetup:
                            acc_omega=jackal.acc_omega)
 
     def navigator(self) -> NavigatorParams:
-        return NavigatorParams(replan_period=self.replan_period, stall_time=self.stall_time)
+        return NavigatorParams(replan_period=self.replan_period, stall_time=self.stall_time,
+                               max_recoveries=self.max_recoveries)
 
     def lidar(self) -> LidarParams:
         return LidarParams(fov_deg=270.0, beams=self.lidar_beams, max_range=self.lidar_range,

@@ -82,9 +82,9 @@ TEST(DwbObstacleCritic, CostOfTheLastPoseOrOfEveryPose) {
 
   DwbObstacleCritic last;
   last.prepare(context);
-  EXPECT_NEAR(last.score(rollout_of(poses)), -216.89841, 1e-5);  // 252 e^-0.15
+  EXPECT_NEAR(last.score(rollout_of(poses)), 216.89841, 1e-5);  // 252 e^-0.15
   const Trajectory touching = {Pose2{1.0, 0, 0}, Pose2{1.75, 0, 0}};
-  EXPECT_EQ(last.score(rollout_of(touching)), -253.0);
+  EXPECT_EQ(last.score(rollout_of(touching)), 253.0);
   const Trajectory far = {Pose2{1.65, 0, 0}, Pose2{1.0, 0, 0}};
   EXPECT_EQ(last.score(rollout_of(far)), 0.0);  // only the last pose counts
 
@@ -92,8 +92,8 @@ TEST(DwbObstacleCritic, CostOfTheLastPoseOrOfEveryPose) {
   sum_params.aggregation = DwbAggregation::Sum;
   DwbObstacleCritic sum(sum_params);
   sum.prepare(context);
-  EXPECT_NEAR(sum.score(rollout_of(poses)), -(0.0 + 186.68619 + 216.89841), 1e-4);
-  EXPECT_NEAR(sum.score(rollout_of(far)), -186.68619, 1e-5);
+  EXPECT_NEAR(sum.score(rollout_of(poses)), (0.0 + 186.68619 + 216.89841), 1e-4);
+  EXPECT_NEAR(sum.score(rollout_of(far)), 186.68619, 1e-5);
 }
 
 TEST(DwbObstacleCritic, ReadsPoseKAtTimeKPlusOneSteps) {
@@ -108,7 +108,7 @@ TEST(DwbObstacleCritic, ReadsPoseKAtTimeKPlusOneSteps) {
   DwbObstacleCritic critic;
   critic.prepare(context);
   const Trajectory poses = {Pose2{1.0, 0, 0}, Pose2{1.3, 0, 0}, Pose2{1.7, 0, 0}};
-  EXPECT_NEAR(critic.score(rollout_of(poses)), -88.18431, 1e-5);  // 252 e^-1.05
+  EXPECT_NEAR(critic.score(rollout_of(poses)), 88.18431, 1e-5);  // 252 e^-1.05
 }
 
 TEST(DwbObstacleCritic, NeedsTheWorldAndTheFootprint) {
@@ -164,45 +164,45 @@ TEST(DwbPathDistCritic, CellsFromTheLastPositionToTheLocalPath) {
   DwbPathDistCritic critic;
   EXPECT_TRUE(critic.needs_path());
   critic.prepare(context_on(kStraight, Pose2{0, 0, 0}));
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.1, 0}), -2.0, 1e-12);   // 0.1 m = 2 cells
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, -0.25, 1}), -5.0, 1e-12);  // heading does not count
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.1, 0}), 2.0, 1e-12);   // 0.1 m = 2 cells
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.25, 1}), 5.0, 1e-12);  // heading does not count
   EXPECT_NEAR(score_ending_at(critic, Pose2{0.7, 0.0, 0}), 0.0, 1e-12);
   // Past the window the path is cut at x = 1.5: 0.5 m = 10 cells from its end.
-  EXPECT_NEAR(score_ending_at(critic, Pose2{2.0, 0.0, 0}), -10.0, 1e-12);
+  EXPECT_NEAR(score_ending_at(critic, Pose2{2.0, 0.0, 0}), 10.0, 1e-12);
   DwbGridParams coarse;
   coarse.resolution = 0.1;
   DwbPathDistCritic coarser(coarse);
   coarser.prepare(context_on(kStraight, Pose2{0, 0, 0}));
-  EXPECT_NEAR(score_ending_at(coarser, Pose2{1.0, 0.1, 0}), -1.0, 1e-12);
+  EXPECT_NEAR(score_ending_at(coarser, Pose2{1.0, 0.1, 0}), 1.0, 1e-12);
   expect_error_naming([] { DwbPathDistCritic().prepare(CriticContext{}); }, "global path");
 }
 
 TEST(DwbGoalDistCritic, CellsFromTheLastPositionToTheLocalGoal) {
   DwbGoalDistCritic critic;
   critic.prepare(context_on(kStraight, Pose2{0, 0, 0}));  // local goal (1.5, 0)
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.5, 0.2, 0}), -4.0, 1e-12);
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.2, 0.4, 0}), -10.0, 1e-12);
-  EXPECT_NEAR(score_ending_at(critic, Pose2{0.0, 0.0, 0}), -30.0, 1e-12);
-  EXPECT_NEAR(score_ending_at(critic, Pose2{2.5, 0.0, 0}), -20.0, 1e-12);  // overshooting costs too
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.5, 0.2, 0}), 4.0, 1e-12);
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.2, 0.4, 0}), 10.0, 1e-12);
+  EXPECT_NEAR(score_ending_at(critic, Pose2{0.0, 0.0, 0}), 30.0, 1e-12);
+  EXPECT_NEAR(score_ending_at(critic, Pose2{2.5, 0.0, 0}), 20.0, 1e-12);  // overshooting costs too
   DwbGridParams narrow;
   narrow.local_extent = 1.0;
   DwbGoalDistCritic nearer(narrow);
   nearer.prepare(context_on(kStraight, Pose2{0, 0, 0}));  // local goal (1, 0)
-  EXPECT_NEAR(score_ending_at(nearer, Pose2{1.0, 0.3, 0}), -6.0, 1e-12);
+  EXPECT_NEAR(score_ending_at(nearer, Pose2{1.0, 0.3, 0}), 6.0, 1e-12);
 }
 
 TEST(DwbPathAlignCritic, CellsFromTheForwardPointToTheLocalPath) {
   DwbPathAlignCritic critic;
   critic.prepare(context_on(kStraight, Pose2{0, 0, 0}));
   EXPECT_TRUE(critic.active());
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.1, 0}), -2.0, 1e-12);         // nose at (1.325, 0.1)
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.1, M_PI / 2}), -8.5, 1e-12);  // nose at (1, 0.425)
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.1, -M_PI / 2}), -4.5, 1e-12); // nose at (1, -0.225)
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.1, 0}), 2.0, 1e-12);         // nose at (1.325, 0.1)
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.1, M_PI / 2}), 8.5, 1e-12);  // nose at (1, 0.425)
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.1, -M_PI / 2}), 4.5, 1e-12); // nose at (1, 0.225)
   DwbGridParams short_nose;
   short_nose.forward_point_distance = 0.1;
   DwbPathAlignCritic shorter(short_nose);
   shorter.prepare(context_on(kStraight, Pose2{0, 0, 0}));
-  EXPECT_NEAR(score_ending_at(shorter, Pose2{1.0, 0.1, M_PI / 2}), -4.0, 1e-12);  // nose at (1, 0.2)
+  EXPECT_NEAR(score_ending_at(shorter, Pose2{1.0, 0.1, M_PI / 2}), 4.0, 1e-12);  // nose at (1, 0.2)
 }
 
 TEST(DwbPathAlignCritic, OffWithinTheForwardPointDistanceOfTheGoal) {
@@ -212,15 +212,15 @@ TEST(DwbPathAlignCritic, OffWithinTheForwardPointDistanceOfTheGoal) {
   EXPECT_EQ(score_ending_at(critic, Pose2{9.9, 0.3, 2.0}), 0.0);
   critic.prepare(context_on(kStraight, Pose2{9.6, 0, 0}));  // 0.4 m: on again
   EXPECT_TRUE(critic.active());
-  EXPECT_NEAR(score_ending_at(critic, Pose2{9.7, 0.1, M_PI / 2}), -8.5, 1e-12);
+  EXPECT_NEAR(score_ending_at(critic, Pose2{9.7, 0.1, M_PI / 2}), 8.5, 1e-12);
 }
 
 TEST(DwbGoalAlignCritic, CellsFromTheForwardPointToTheLocalGoal) {
   DwbGoalAlignCritic critic;
   critic.prepare(context_on(kStraight, Pose2{0, 0, 0}));
   EXPECT_EQ(critic.target(), Vec2(1.5, 0));  // the goal is far: no shift
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.0, 0}), -3.5, 1e-12);  // nose at (1.325, 0)
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.5, 0.0, M_PI}), -6.5, 1e-12);  // nose at (1.175, 0)
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.0, 0}), 3.5, 1e-12);  // nose at (1.325, 0)
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.5, 0.0, M_PI}), 6.5, 1e-12);  // nose at (1.175, 0)
 }
 
 TEST(DwbGoalAlignCritic, TargetsForwardPointDistanceBeyondANearGoal) {
@@ -230,7 +230,7 @@ TEST(DwbGoalAlignCritic, TargetsForwardPointDistanceBeyondANearGoal) {
   EXPECT_NEAR((critic.target() - Vec2(1.325, 0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.0, 0}), 0.0, 1e-12);  // centre on the goal, nose past it
   // Nose at (1, 0.325): 0.325 sqrt 2 m from the target.
-  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.0, M_PI / 2}), -0.325 * std::sqrt(2.0) / 0.05, 1e-12);
+  EXPECT_NEAR(score_ending_at(critic, Pose2{1.0, 0.0, M_PI / 2}), 0.325 * std::sqrt(2.0) / 0.05, 1e-12);
   // The shift follows the direction from the robot to the goal: (0.8, -0.6) from (0, 0.75).
   critic.prepare(context_on(shorter, Pose2{0, 0.75, 0}));
   EXPECT_NEAR((critic.target() - Vec2(1.26, -0.195)).norm(), 0.0, 1e-12);

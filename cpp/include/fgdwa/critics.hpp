@@ -2,10 +2,19 @@
 // Cost terms of the evaluation function (Eqs. 4 and 12), one class each.
 //
 // Lifecycle: the planner builds its critics once from configuration by name
-// (`make_critic`), calls `prepare(context)` once per control cycle, then
-// `score(rollout)` for every admissible sample. A score is the raw term, larger
-// is better; normalisation and weights belong to the planner.
+// (`make_critic`, from the factories given to `register_critic`), calls
+// `prepare(context)` once per control cycle, then `score_all` over the
+// admissible samples. A score is the raw term in the critic's declared sense:
+// larger is better for a Reward, smaller for a Cost. The planner normalises
+// each term (Normalization: divided by the sum of the terms' magnitudes, mapped
+// to [0, 1] between their extremes, or raw) and adds weight x term for a reward
+// and subtracts it for a cost, so no normalisation reverses a critic's
+// preference. A critic vetoes a sample by scoring it `Critic::veto()`: the
+// sample is rejected (RejectReason::Critic) and counted against that critic.
+#include <cmath>
 #include <cstdint>
+#include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -43,10 +52,18 @@ struct Rollout {
   double free_distance = 0.0;         // m, arc length before first contact, +inf if none
 };
 
+// Whether a critic's larger raw scores are better (Reward) or worse (Cost).
+enum class CriticSense : std::uint8_t { Reward, Cost };
+const char* to_string(CriticSense sense);
+
 class Critic {
  public:
   virtual ~Critic() = default;
   virtual std::string name() const = 0;
+  virtual CriticSense sense() const { return CriticSense::Reward; }
+  // The score that vetoes a sample (NaN); every other score must be finite.
+  static double veto() { return std::numeric_limits<double>::quiet_NaN(); }
+  static bool is_veto(double score) { return std::isnan(score); }
   virtual void prepare(const CriticContext& context) { (void)context; }
   // Whether the critic reads the global path (the planner refuses to run it without one).
   virtual bool needs_path() const { return false; }
@@ -143,9 +160,19 @@ class SimilarityCritic : public Critic {
   mutable DtwWorkspace workspace_;
 };
 
-// Builds a critic by registered name (those above, and the dwb_* ones of
-// dwb_critics.hpp); throws fgdwa::Error on an unknown name,
-// an unknown parameter or a bad value.
+// Builds a critic from its configuration. A factory takes the numeric
+// parameters and word options it understands out of the maps (anything left is
+// an error) and throws fgdwa::Error on a bad value.
+using CriticFactory = std::function<std::unique_ptr<Critic>(std::map<std::string, double>& params,
+                                                            std::map<std::string, std::string>& options)>;
+// Makes `name` buildable by make_critic (and so by PlannerParams::critics).
+// The built-in critics are registered the same way. Throws fgdwa::Error on an
+// empty name or one already registered.
+void register_critic(const std::string& name, CriticFactory factory);
+
+// Builds a critic by registered name (those above, the dwb_* ones of
+// dwb_critics.hpp, and any registered since); throws fgdwa::Error on an
+// unknown name, an unknown parameter or a bad value.
 std::unique_ptr<Critic> make_critic(const CriticConfig& config);
 // The names make_critic accepts.
 std::vector<std::string> critic_names();

@@ -4,8 +4,9 @@
 // GoalAlign), as a baseline planner (the `dwb` preset).
 //
 // DWB adds scale x cost over its critics and takes the lowest total; these
-// critics return -cost, so with Normalization::None and the weight set to DWB's
-// effective scale the planner's largest total is DWB's lowest. DWB's effective
+// critics are cost critics (CriticSense::Cost) that return DWB's cost, so with
+// Normalization::None and the weight set to DWB's effective scale the planner's
+// largest total (minus the weighted costs) is DWB's lowest. DWB's effective
 // scale is the configured one for BaseObstacle, and the configured one times
 // half the costmap resolution for the four map-grid critics (their costs are in
 // cells; see the `dwb` preset).
@@ -56,6 +57,7 @@ class DwbObstacleCritic : public Critic {
  public:
   explicit DwbObstacleCritic(const DwbObstacleParams& params = {});
   std::string name() const override { return "dwb_obstacle"; }
+  CriticSense sense() const override { return CriticSense::Cost; }
   void prepare(const CriticContext& context) override;
   double score(const Rollout& rollout) const override;
   const DwbObstacleParams& params() const { return params_; }
@@ -94,6 +96,7 @@ class DwbGridCritic : public Critic {
  public:
   explicit DwbGridCritic(const DwbGridParams& params = {});
   bool needs_path() const override { return true; }
+  CriticSense sense() const override { return CriticSense::Cost; }
   void prepare(const CriticContext& context) override;
   const DwbGridParams& params() const { return params_; }
   const DwbLocalPath& local_path() const { return local_; }

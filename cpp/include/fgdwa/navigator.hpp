@@ -113,6 +113,7 @@ struct CycleRecord {
   std::shared_ptr<const GlobalPath> path;  // the global path followed (null without one)
   int path_version = 0;            // bumped on every new global path
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reject reason
+  std::vector<int> critic_vetoes;  // per critic of the planner (PlanResult::critic_names): samples it vetoed
   std::size_t new_cells = 0;       // map cells this scan marked occupied
   int recoveries = 0;              // recoveries in a row without progress, this one included
   StageTimes times;

@@ -31,8 +31,9 @@ enum class RejectReason : std::uint8_t {
   None,       // admissible
   Collision,  // the rollout touches an obstacle before the robot could stop
   Terrain,    // the footprint enters grade-4 terrain before the robot could stop
+  Critic,     // a critic vetoed it (PlanResult::vetoed_by names which)
 };
-constexpr std::size_t kRejectReasonCount = 3;
+constexpr std::size_t kRejectReasonCount = 4;
 
 // How slope grades 0-4 (SPEC 7) limit the robot: each grade's passing factor
 // scales v_max on its cells; grade 4 cannot be entered at all.
@@ -42,7 +43,9 @@ constexpr PassingFactors kDefaultPassingFactors = {1.0, 0.8, 0.6, 0.4, 0.0};
 void validate_passing_factors(const PassingFactors& factors);
 
 enum class Normalization : std::uint8_t {
-  Sum,     // each term divided by its sum over the admissible samples (classic DWA)
+  // Each term divided by the sum of its magnitudes over the admissible samples
+  // (classic DWA's sum for the usual non-negative terms).
+  Sum,
   MinMax,  // each term mapped to [0, 1] over the admissible samples
   // Raw terms as they are, total = sum of weight * raw: how Nav2's DWB adds its
   // critics (scale * cost), which only works with terms on agreed scales.
@@ -93,9 +96,12 @@ struct PlanResult {
   std::vector<RejectReason> reasons;            // per sample
   std::vector<double> min_clearance;            // m, per sample
   std::vector<double> free_distance;            // m, per sample (+inf: never touches)
+  std::vector<int> vetoed_by;                   // per sample: the critic that vetoed it, -1 for none
+  std::vector<int> critic_vetoes;               // per critic: samples it vetoed this cycle
+  std::vector<CriticSense> senses;              // per critic
   Matrix raw;                                   // samples x critics, 0 for rejected samples
   Matrix normalized;                            // samples x critics, 0 for rejected samples (raw with Normalization::None)
-  Eigen::VectorXd total;                        // weighted sum of normalised terms; -inf if rejected
+  Eigen::VectorXd total;                        // rewards' weighted terms minus costs'; -inf if rejected
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reason
   int admissible_count() const { return reject_counts[0]; }
 };
