@@ -13,8 +13,7 @@ import numpy as np
 
 from fgdwa._core import FgdwaError, PlannerParams, preset_names
 
-DEFAULT_EXPERIMENT_OUT = "docs/results"
-DEFAULT_RESULTS_MD = "docs/RESULTS.md"
+DEFAULT_EXPERIMENT_OUT = "out/experiments"
 
 
 def _format_metrics(metrics: dict) -> str:
@@ -112,8 +111,6 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
     if len(names) > 1:
         written.append(write_results(out, names, command, out / "report.md", surfaces))
     results_md = args.results_md
-    if results_md is None and args.out == DEFAULT_EXPERIMENT_OUT:
-        results_md = DEFAULT_RESULTS_MD
     if results_md:
         written.append(write_results(out, list(EXPERIMENTS), command, Path(results_md),
                                      surfaces if surfaces is not None else _existing(out / "control_surfaces.png")))
@@ -171,8 +168,7 @@ def build_parser() -> argparse.ArgumentParser:
     exp.add_argument("--trials", type=_positive, default=15, help="trials per planner (default 15)")
     exp.add_argument("--seed", type=int, default=0, help="base seed: trial i uses seed + i (default 0)")
     exp.add_argument("--out", default=DEFAULT_EXPERIMENT_OUT,
-                     help=f"output directory (default {DEFAULT_EXPERIMENT_OUT}, which also rewrites "
-                          f"{DEFAULT_RESULTS_MD})")
+                     help=f"output directory (default {DEFAULT_EXPERIMENT_OUT})")
     exp.add_argument("--executor", choices=["local", "dask", "serial"], default="local",
                      help="local: a process pool on this machine (default); dask: a dask.distributed cluster; "
                           "serial: this process")
@@ -181,8 +177,8 @@ def build_parser() -> argparse.ArgumentParser:
     exp.add_argument("--workers", type=_positive, default=2, help="worker processes (default 2)")
     exp.add_argument("--max-steps", type=_positive, default=None, help="override every scenario's max_steps")
     exp.add_argument("--results-md", default=None, metavar="PATH",
-                     help=f"also write the results page there (default: {DEFAULT_RESULTS_MD} when --out is "
-                          "the default)")
+                     help="also write the results page there (the repository's: docs/RESULTS.md, with "
+                          "--out docs/results)")
     exp.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
     exp.add_argument("--no-progress", action="store_true", help="no progress bar")
     exp.set_defaults(func=cmd_experiment)

@@ -122,7 +122,9 @@ TEST(CriticContract, DwbCostCriticsUnderSumNormalisationPickTheLowestCost) {
   ASSERT_EQ(r.senses[0], CriticSense::Cost);
   ASSERT_GE(r.best_index, 0);
   for (std::size_t i = 0; i < r.samples.size(); ++i) {
-    if (r.reasons[i] == RejectReason::None) EXPECT_LE(r.raw(r.best_index, 0), r.raw(static_cast<Eigen::Index>(i), 0));
+    if (r.reasons[i] == RejectReason::None) {
+      EXPECT_LE(r.raw(r.best_index, 0), r.raw(static_cast<Eigen::Index>(i), 0));
+    }
   }
 }
 
