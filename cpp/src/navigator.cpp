@@ -65,13 +65,6 @@ double seconds_since(Clock::time_point start) {
 
 int cycles_of(double seconds, double dt) { return static_cast<int>(std::lround(seconds / dt)); }
 
-void require_finite_state(const RobotState& s) {
-  detail::require_finite("state x", s.pose.x);
-  detail::require_finite("state y", s.pose.y);
-  detail::require_finite("state theta", s.pose.theta);
-  detail::require_finite("state v", s.twist.v);
-  detail::require_finite("state omega", s.twist.omega);
-}
 
 // Moves `current` toward `target` by at most `step`.
 double approach(double current, double target, double step) {
@@ -322,7 +315,7 @@ Twist Navigator::rotate_command(const RobotState& state) {
 const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, double time,
                                    const std::vector<Disc>& discs) {
   if (!has_goal_) throw Error("step() before set_goal(): the navigator has no goal");
-  require_finite_state(state);
+  detail::require_finite_state(state);
   detail::require_finite("time", time);
   if (scan) {
     if (scan->ranges.size() != static_cast<std::size_t>(lidar_.beams))

@@ -103,16 +103,6 @@ void LocalPlanner::set_weight(const std::string& critic, double weight) {
 
 double LocalPlanner::weight(const std::string& critic) const { return result_.weights[critic_index(critic)]; }
 
-namespace {
-void require_finite_state(const RobotState& s) {
-  detail::require_finite("state x", s.pose.x);
-  detail::require_finite("state y", s.pose.y);
-  detail::require_finite("state theta", s.pose.theta);
-  detail::require_finite("state v", s.twist.v);
-  detail::require_finite("state omega", s.twist.omega);
-}
-}  // namespace
-
 void LocalPlanner::set_global_path(const GlobalPath& path) {
   path_ = std::make_unique<GlobalPath>(path);
   tracker_ = std::make_unique<KeyNodeTracker>(*path_, params_.key_nodes);
@@ -164,7 +154,7 @@ const std::vector<std::size_t>& LocalPlanner::key_nodes() const {
 }
 
 const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, const ClearanceSource& world) {
-  require_finite_state(state);
+  detail::require_finite_state(state);
   if (params_.heading_target == HeadingTarget::Goal) return run_cycle(state, goal, goal, -1, world);
   if (!tracker_) throw Error("heading_target = key_nodes needs a global path: call set_global_path first");
   // In sight: the footprint, heading for b, stays clear every 10 cm of the way.
@@ -185,7 +175,7 @@ const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, 
 
 const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, const Vec2& target,
                                      const ClearanceSource& world) {
-  require_finite_state(state);
+  detail::require_finite_state(state);
   detail::require_finite("target x", target.x());
   detail::require_finite("target y", target.y());
   return run_cycle(state, goal, target, -1, world);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fgdwa/error.hpp"
+#include "fgdwa/robot.hpp"
 
 namespace fgdwa::detail {
 
@@ -32,6 +33,14 @@ inline void require_non_negative(const std::string& field, double value) {
 inline void require_at_least(const std::string& field, long value, long minimum) {
   if (value < minimum)
     throw Error(describe(field, value, "must be >= " + std::to_string(minimum)));
+}
+
+inline void require_finite_state(const RobotState& s) {
+  require_finite("state x", s.pose.x);
+  require_finite("state y", s.pose.y);
+  require_finite("state theta", s.pose.theta);
+  require_finite("state v", s.twist.v);
+  require_finite("state omega", s.twist.omega);
 }
 
 }  // namespace fgdwa::detail
