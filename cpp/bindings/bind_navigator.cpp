@@ -20,12 +20,9 @@ MapMode map_mode_from_string(const std::string& name) {
 }
 
 PassingFactors passing_factors_from(py::handle obj) {
-  const auto values = float_array(obj, "passing_factors", 1, 0);
+  const auto values = float_array(obj, "passing_factors", 1, static_cast<long>(PassingFactors{}.size()));
   PassingFactors factors{};
-  if (values.size() != static_cast<py::ssize_t>(factors.size()))
-    throw Error("passing_factors: expected " + std::to_string(factors.size()) + " values (grades 0-4), got " +
-                std::to_string(values.size()));
-  for (std::size_t g = 0; g < factors.size(); ++g) factors[g] = values.at(static_cast<py::ssize_t>(g));
+  std::copy(values.data(), values.data() + factors.size(), factors.begin());
   return factors;
 }
 

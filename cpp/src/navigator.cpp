@@ -185,12 +185,17 @@ bool Navigator::stalled(const RobotState& state) {
     recent_.clear();
     return true;
   }
-  recent_.push_back(state.pose.position());
-  if (static_cast<int>(recent_.size()) > stall_cycles_ + 1) recent_.pop_front();
+  remember_position(state.pose.position());
   if (static_cast<int>(recent_.size()) < stall_cycles_ + 1) return false;
   if ((state.pose.position() - recent_.front()).norm() >= params_.stall_distance) return false;
   recent_.clear();
   return true;
+}
+
+void Navigator::remember_position(const Vec2& position) {
+  if (stall_cycles_ < 1) return;
+  recent_.push_back(position);
+  if (static_cast<int>(recent_.size()) > stall_cycles_ + 1) recent_.pop_front();
 }
 
 void Navigator::give_up_path_ahead(const Vec2& position) {
@@ -375,10 +380,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
       run_planner = true;
       break;
     default:
-      if (stall_cycles_ >= 1) {
-        recent_.push_back(position);
-        if (static_cast<int>(recent_.size()) > stall_cycles_ + 1) recent_.pop_front();
-      }
+      remember_position(position);
       break;
   }
   // A recovery in progress gives this cycle's command, or ends and hands over.

@@ -130,9 +130,8 @@ void LocalPlanner::set_terrain(std::shared_ptr<const TerrainGrid> terrain, const
       OccupancyGrid(terrain_->rows(), terrain_->cols(), terrain_->resolution(), terrain_->origin(), std::move(cells))));
 }
 
-int LocalPlanner::first_terrain_contact(const RobotState& state, const Trajectory& poses) const {
-  // A footprint already over grade-4 cells may still leave: only its centre is held to them then.
-  if (impassable_->clearance(footprint_, state.pose, 0.0) <= 0.0) {
+int LocalPlanner::first_terrain_contact(const Trajectory& poses, bool centre_only) const {
+  if (centre_only) {
     for (std::size_t k = 0; k < poses.size(); ++k)
       if (terrain_->grade_at(poses[k].position()) >= TerrainGrid::kMaxGrade) return static_cast<int>(k);
     return n_steps_;
@@ -256,6 +255,8 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const double start_clearance = clearance_now - margin;
   bounds_.resize(static_cast<std::size_t>(n_steps_));
   exact_.resize(static_cast<std::size_t>(n_steps_));
+  // A footprint already over grade-4 cells may still leave: only its centre is held to them then.
+  const bool terrain_centre_only = impassable_ && impassable_->clearance(footprint_, state.pose, 0.0) <= 0.0;
   const double cos_start = std::cos(state.pose.theta), sin_start = std::sin(state.pose.theta);
   // Samples come v-major: the headings of the first row serve every row.
   const std::size_t n_omega = static_cast<std::size_t>(params_.window.n_omega);
@@ -323,7 +324,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     result_.free_distance[i] = free_distance;
     RejectReason reason = is_admissible(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;
     if (reason == RejectReason::None && impassable_) {
-      const int k = first_terrain_contact(state, poses);
+      const int k = first_terrain_contact(poses, terrain_centre_only);
       if (k < n_steps_ && !is_admissible(cmd, k * cmd.v * params_.dt, limits_, params_.dt, params_.braking))
         reason = RejectReason::Terrain;
     }

@@ -166,6 +166,8 @@ class Navigator {
   void adopt_path(GlobalPath path);
   bool path_ahead_blocked(const Vec2& position) const;
   bool stalled(const RobotState& state);
+  // Keeps the last stall_cycles_ + 1 positions for the progress check.
+  void remember_position(const Vec2& position);
   void start_recovery(const RobotState& state, const std::vector<Disc>& discs);
   void give_up_path_ahead(const Vec2& position);
   // Clearance below which the recoveries count the footprint in contact, for a robot at `pose`.

@@ -162,8 +162,9 @@ class LocalPlanner {
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;
-  // The first pose at which the footprint enters grade-4 terrain, n_steps_ if none.
-  int first_terrain_contact(const RobotState& state, const Trajectory& poses) const;
+  // The first pose at which the footprint enters grade-4 terrain, n_steps_ if
+  // none; `centre_only` holds only the centre to it (a footprint already over it).
+  int first_terrain_contact(const Trajectory& poses, bool centre_only) const;
 
   std::shared_ptr<const TerrainGrid> terrain_;
   PassingFactors passing_factors_ = kDefaultPassingFactors;
