@@ -35,6 +35,7 @@ from fgdwa._core import (
     Twist,
     planner_preset,
     step,
+    wrap_angle,
 )
 from fgdwa.global_planning import plan_global
 from fgdwa.mapping import check_mapping
@@ -42,7 +43,6 @@ from fgdwa.metrics import DANGER_MARGIN, danger_point_clearance, danger_points, 
 from fgdwa.world import MovingObstacle, World  # noqa: F401  (World is part of this module's API)
 
 OUTCOMES = ("success", "collision", "fall", "failed", "timeout")
-MODE_NAMES = frozenset(NavigatorMode.__members__)
 SCAN_SEED_STRIDE = 1_000_003  # the lidar's seed in cycle k of a run with `seed`: seed * stride + k
 
 
@@ -133,12 +133,34 @@ def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, af
                          spacing: float = 0.05) -> bool:
     """Whether the footprint touches an obstacle anywhere along one step.
 
-    A step turns first and then moves straight along the new heading, so the
-    positions in between lie on the segment from ``before`` to ``after``; they
-    are checked every ``spacing`` metres, the discs moving with them.
+    A step turns first and then moves straight along the new heading. The turn
+    is swept at the start position (a polygon's outline moves; a circle's does
+    not): each heading's exact clearance bounds how far the outline may turn
+    before it could touch, so a contact deeper than ``TURN_RESOLUTION`` rad
+    times the footprint's radius is never missed. The positions of the drive
+    lie on the segment from ``before`` to ``after``; they are checked every
+    ``spacing`` metres, the discs moving with them.
     """
+    if not footprint.is_circle and _turn_collides(truth, footprint, before, after[2], t):
+        return True
     return any(truth.in_collision(footprint, (x, y, after[2]), t + f * dt)
                for f, x, y in _along_step(before, after, spacing))
+
+
+TURN_RESOLUTION = 1e-3  # rad, the smallest heading step of the referee's turn sweep
+
+
+def _turn_collides(truth: CollisionWorld, footprint: Footprint, before, heading: float, t: float) -> bool:
+    turn = wrap_angle(heading - before[2])
+    turned = 0.0
+    while True:
+        clearance = truth.clearance(footprint, (before[0], before[1], before[2] + np.copysign(turned, turn)), t)
+        if clearance <= 0.0:
+            return True
+        if turned >= abs(turn):
+            return False
+        # No point of the outline moves farther than radius x angle.
+        turned = min(abs(turn), turned + max(clearance / footprint.radius, TURN_RESOLUTION))
 
 
 def run_episode(
@@ -231,7 +253,7 @@ def run_episode(
                       navigator=navigator_params, terrain=world.terrain, passing_factors=world.passing_factors,
                       window=window)
     robot.set_goal(goal_point)
-    given = _given_path(world, start_pose, goal_point, footprint, robot.planner, global_path, global_method,
+    given = _given_path(world, start_pose, goal_point, footprint, robot, global_path, global_method,
                         global_options)
     if given is not None:
         robot.set_global_path(given)
@@ -245,6 +267,7 @@ def run_episode(
     density, deviation, betas, deltas = [], [], [], []
     paths = []
     path_version = 0
+    planned = False  # whether the local planner ran in any cycle
     outcome = "timeout"
     scan = None
     for k in range(max_steps):
@@ -269,6 +292,7 @@ def run_episode(
         deviation.append(record.deviation)
         betas.append(record.beta)
         deltas.append(record.delta)
+        planned = planned or record.planned
         modes.append(record.mode.name)
         statuses.append(record.status.name if record.planned else record.mode.name)
         targets.append(record.target)
@@ -306,7 +330,6 @@ def run_episode(
         danger = danger_point_clearance(poses_arr[:, :2], points, true_field)
     finite = clear_arr[np.isfinite(clear_arr)]
     steps = len(commands)
-    planned = any(status not in MODE_NAMES for status in statuses)
     return EpisodeResult(
         outcome=outcome,
         steps=steps,
@@ -359,13 +382,13 @@ def _falls(world: World, before, after, spacing: float = 0.05) -> bool:
     return any(world.grade_at((x, y)) >= 4 for _, x, y in _along_step(before, after, spacing))
 
 
-def _given_path(world: World, start, goal, footprint: Footprint, planner, given, method: str,
+def _given_path(world: World, start, goal, footprint: Footprint, robot: Navigator, given, method: str,
                 options: Optional[dict]) -> Optional[GlobalPath]:
     """The path the navigator is handed instead of planning its own: ``given``,
     or one planned here when the method or options are not the navigator's A*."""
     if given is not None:
         return given if isinstance(given, GlobalPath) else GlobalPath(np.asarray(given, dtype=float))
-    if not planner.needs_path or (method == "astar" and not options):
+    if not robot.planner.needs_path or (method == "astar" and not options):
         return None
     if world.grid is None:
         raise FgdwaError("a path-following planner needs a global path: give global_path or a world with a grid")
@@ -376,7 +399,7 @@ def _given_path(world: World, start, goal, footprint: Footprint, planner, given,
     # room at the corners where key nodes sit; where the margin closes every
     # passage, the footprint's radius alone decides.
     radii = [options.pop("inflation_radius")] if "inflation_radius" in options else \
-        [footprint.radius + NavigatorParams().path_margin, footprint.radius]
+        [footprint.radius + robot.params.path_margin, footprint.radius]
     for radius in radii:
         plan = plan_global(world.grid, start[:2], goal, method=method, terrain=world.terrain,
                            inflation_radius=radius, **options)

@@ -59,6 +59,29 @@ def test_contact_between_poses_is_found():
     assert collides_during_step(truth, footprint, before, after, 0.0, 0.15)
 
 
+def test_a_rectangle_turning_in_place_beside_a_post_is_a_collision():
+    # The Jackal's 0.42 m x 0.33 m rectangle turns a quarter turn in place; a 2 cm post lies
+    # clear of both end placements but inside the footprint between 42 and 50 degrees.
+    cells = np.zeros((100, 100), np.uint8)
+    cells[62, 51] = 1  # the post: x 1.02 .. 1.04, y 1.24 .. 1.26
+    truth = fgdwa.CollisionWorld(fgdwa.OccupancyGrid(cells, 0.02))
+    rectangle = fgdwa.robot_preset("jackal").footprint
+    before, after = (1.0, 1.0, 0.0), (1.0, 1.0, np.pi / 2)
+    assert truth.clearance(rectangle, before) > 0.02 and truth.clearance(rectangle, after) > 0.02
+    assert collides_during_step(truth, rectangle, before, after, 0.0, 0.1)
+    # A smaller turn stops short of it; a circle turns anywhere.
+    assert not collides_during_step(truth, rectangle, before, (1.0, 1.0, np.radians(30)), 0.0, 0.1)
+    assert not collides_during_step(truth, fgdwa.Footprint.circle(0.2), before, after, 0.0, 0.1)
+    # The planner agrees: from that pose it never commands the turn that sweeps the post.
+    params = fgdwa.PlannerParams(dt=0.1, n_v=5, n_omega=41)
+    planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(omega_max=16.0, acc_omega=200.0), rectangle, params)
+    result = planner.plan(fgdwa.RobotState(before, (0.0, 0.0)), (1.0, 3.0), fgdwa.FieldClearance(
+        fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.02))))
+    sweeping = [reason for sample, reason in zip(result.samples, result.reasons)
+                if sample[0] == 0.0 and sample[1] * 0.1 >= np.pi / 2]
+    assert sweeping and all(reason == "Collision" for reason in sweeping)
+
+
 def test_cli_demo_writes_the_figure(tmp_path, capsys):
     assert main(["demo", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
