@@ -170,10 +170,18 @@ bool Navigator::plan_path(const Vec2& from) {
   return false;
 }
 
-bool Navigator::path_ahead_blocked(const Vec2& position) const {
+bool Navigator::path_ahead_blocked(const Vec2& position) {
   if (!path_) return true;
   const std::shared_ptr<const DistanceField>& field = controller_.map();
-  return field && path_blocked(*path_, position, *field, footprint_.inscribed_radius());
+  if (!field) return false;
+  // The same path on the same map, found clear from here or from farther back: still clear.
+  const double from = path_->project(position).arc_length;
+  if (clear_check_.map_version == map_version_ && clear_check_.path_version == path_version_ &&
+      from >= clear_check_.from)
+    return false;
+  if (path_blocked(*path_, position, *field, footprint_.inscribed_radius())) return true;
+  clear_check_ = ClearCheck{map_version_, path_version_, from};
+  return false;
 }
 
 bool Navigator::stalled(const RobotState& state) {
@@ -349,7 +357,10 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   Clock::time_point tic = Clock::now();
   if (scan_map_ && scan) {
     record_.new_cells = scan_map_->integrate(*scan);
-    if (record_.new_cells) controller_.set_map(scan_map_->field());
+    if (record_.new_cells) {
+      controller_.set_map(scan_map_->field());
+      ++map_version_;
+    }
   }
   record_.times.map = seconds_since(tic);
 

@@ -164,7 +164,7 @@ class Navigator {
   // A* on the map (given-up cells closed) over the radius ladder; true if found.
   bool plan_path(const Vec2& from);
   void adopt_path(GlobalPath path);
-  bool path_ahead_blocked(const Vec2& position) const;
+  bool path_ahead_blocked(const Vec2& position);
   bool stalled(const RobotState& state);
   // Keeps the last stall_cycles_ + 1 positions for the progress check.
   void remember_position(const Vec2& position);
@@ -196,6 +196,13 @@ class Navigator {
   Vec2 goal_ = Vec2::Zero();
   std::shared_ptr<const GlobalPath> path_;
   int path_version_ = 0;
+  int map_version_ = 0;  // bumped whenever scans add cells
+  // The last blocked-path check that found the path clear: of which map and
+  // path, and from which arc length (m) on.
+  struct ClearCheck {
+    int map_version = -1, path_version = -1;
+    double from = 0.0;
+  } clear_check_;
   bool replan_now_ = false;
   int replan_cycles_ = 0, stall_cycles_ = 0;
   int cycles_since_replan_ = 0;
