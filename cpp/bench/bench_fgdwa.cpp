@@ -26,6 +26,10 @@
 // so every figure is per cycle. How each stage of the breakdown is measured,
 // with the public API only:
 //   BM_Cycle          the whole cycle above.
+//   BM_NavigatorCycle the same cycle through Navigator::step (known map, the
+//                     same path handed over, stalls off since the robot never
+//                     moves): the map stage, the blocked-path check every
+//                     replan_period, the record with its 5 best rollouts.
 //   BM_Scan           LaserScanner::scan alone.
 //   BM_Sensed         what Controller::step does with the scan before the
 //                     planner, redone with the public API: hit_points, the map's
@@ -74,6 +78,7 @@
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/controller.hpp"
+#include "fgdwa/navigator.hpp"
 #include "fgdwa/critics.hpp"
 #include "fgdwa/global_planner.hpp"
 #include "fgdwa/grid.hpp"
@@ -142,6 +147,7 @@ struct Scene {
   std::unique_ptr<GlobalPath> path;
   std::vector<Position> positions;
   std::vector<Controller> controllers;  // the cycle
+  std::vector<Navigator> navigators;    // the same cycle through the Navigator
   std::vector<LocalPlanner> planners, planners_no_similarity;  // the stage benchmarks' planners
 
   Scene() {
@@ -164,6 +170,7 @@ struct Scene {
     const double length = path->length();
     positions.reserve(kPositions);
     controllers.reserve(kPositions);
+    navigators.reserve(kPositions);
     planners.reserve(kPositions);
     planners_no_similarity.reserve(kPositions);
     for (int i = 0; i < kPositions; ++i) {
@@ -173,8 +180,16 @@ struct Scene {
       Position pos;
       pos.state = RobotState{Pose2{p.x(), p.y(), path->segment_direction(path->segment_at(s))}, Twist{kSpeed, 0.0}};
       positions.push_back(std::move(pos));
-      controllers.emplace_back(limits, footprint, preset.params, field, policy, window);
+      // Its own copy of the map's field, as each navigator builds its own: the same memory to walk.
+      controllers.emplace_back(limits, footprint, preset.params, std::make_shared<const DistanceField>(grid), policy,
+                               window);
       controllers.back().set_global_path(*path);
+      NavigatorParams held;
+      held.stall_time = 0.0;
+      navigators.emplace_back(limits, footprint, preset.params, grid, MapMode::Known, LidarParams{}, policy, held,
+                              std::nullopt, kDefaultPassingFactors, window);
+      navigators.back().set_goal(goal);
+      navigators.back().set_global_path(*path);
       planners.emplace_back(limits, footprint, preset.params);
       planners.back().set_global_path(*path);
       planners_no_similarity.emplace_back(limits, footprint, no_similarity);
@@ -188,6 +203,7 @@ struct Scene {
       Position& pos = positions[static_cast<std::size_t>(i)];
       LocalPlanner& planner = planners[static_cast<std::size_t>(i)];
       cycle(static_cast<std::size_t>(i));
+      navigator_cycle(static_cast<std::size_t>(i));
       const CycleReport& report = controllers[static_cast<std::size_t>(i)].report();
       pos.density = report.density;
       pos.deviation = report.deviation;
@@ -230,6 +246,12 @@ struct Scene {
     scanner.scan(pos.state.pose, kNoDiscs, 0.0, noise, pos.scan);
     benchmark::DoNotOptimize(controllers[i].step(pos.state, goal, &pos.scan).command);
   }
+
+  void navigator_cycle(std::size_t i) {
+    Position& pos = positions[i];
+    scanner.scan(pos.state.pose, kNoDiscs, 0.0, noise, pos.scan);
+    benchmark::DoNotOptimize(navigators[i].step(pos.state, &pos.scan, 0.0).command);
+  }
 };
 
 Scene& scene() {
@@ -251,6 +273,11 @@ void over_positions(benchmark::State& bench, Body body) {
 void BM_Cycle(benchmark::State& bench) {
   Scene& s = scene();
   over_positions(bench, [&](std::size_t i) { s.cycle(i); });
+}
+
+void BM_NavigatorCycle(benchmark::State& bench) {
+  Scene& s = scene();
+  over_positions(bench, [&](std::size_t i) { s.navigator_cycle(i); });
 }
 
 void BM_Scan(benchmark::State& bench) {
@@ -358,6 +385,7 @@ double smallest(const std::vector<double>& v) { return *std::min_element(v.begin
   BENCHMARK(fn)->ArgName("positions")->Arg(1)->Arg(kPositions)->Unit(benchmark::kMicrosecond)->MinTime( \
       0.03)->Repetitions(20)->ComputeStatistics("min", smallest)->ReportAggregatesOnly(true)
 FGDWA_STAGE(BM_Cycle);
+FGDWA_STAGE(BM_NavigatorCycle);
 FGDWA_STAGE(BM_Scan);
 FGDWA_STAGE(BM_Sensed);
 FGDWA_STAGE(BM_DensityDeviation);
@@ -451,6 +479,7 @@ void print_summary(const SummaryReporter& reporter) {
     row("whole cycle", cycle);
     row("  of which plan()", plan);
     row("  cross-check: similarity critic alone", get("BM_Similarity", n));
+    row("Navigator::step (same cycle)", get("BM_NavigatorCycle", n));
   }
   std::printf("target: whole cycle median <= 500 us\n");
 }
