@@ -117,6 +117,11 @@ def test_bad_requests_are_named(barn, barn_file, tmp_path):
         BarnSetup(v_max=-1.0)
     with pytest.raises(FgdwaError, match="v_max"):
         BarnSetup(v_max=3.0).limits()
+    for field, value in (("stall_time", 0.0), ("replan_period", float("nan")), ("max_recoveries", 0),
+                         ("max_recoveries", 2.5)):
+        with pytest.raises(FgdwaError, match=field):
+            BarnSetup(**{field: value})
+    assert BarnSetup(stall_time=4.5, max_recoveries=3).navigator().stall_time == 4.5
     assert main(["barn", "--data", str(barn_file), "--worlds", "0", "--executor", "local", "--scheduler",
                  "tcp://localhost:1", "--out", str(tmp_path)]) == 2
     assert main(["barn", "--data", str(tmp_path / "missing.npz"), "--out", str(tmp_path)]) == 2
