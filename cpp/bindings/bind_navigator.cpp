@@ -44,7 +44,8 @@ void init_navigator(py::module_& m) {
 
   py::class_<NavigatorParams>(m, "NavigatorParams", "Replanning and recovery settings of a Navigator (SPEC 13).")
       .def(py::init([](double path_margin, double replan_period, double stall_time, double stall_distance,
-                       double give_up_length, double keep_clear, double backup_distance, double backup_speed,
+                       double give_up_length, double keep_clear, double sensed_close_radius, double backup_distance,
+                       double backup_speed,
                        double rotate_limit_deg, double wait_time, double wait_radius, int max_recoveries,
                        double progress_reset, int record_top_k) {
              NavigatorParams p;
@@ -54,6 +55,7 @@ void init_navigator(py::module_& m) {
              p.stall_distance = stall_distance;
              p.give_up_length = give_up_length;
              p.keep_clear = keep_clear;
+             p.sensed_close_radius = sensed_close_radius;
              p.backup_distance = backup_distance;
              p.backup_speed = backup_speed;
              p.rotate_limit = rotate_limit_deg * M_PI / 180.0;
@@ -67,13 +69,15 @@ void init_navigator(py::module_& m) {
            }),
            py::arg("path_margin") = 0.3, py::arg("replan_period") = 0.5, py::arg("stall_time") = 3.0,
            py::arg("stall_distance") = 0.1, py::arg("give_up_length") = 0.6, py::arg("keep_clear") = 0.3,
-           py::arg("backup_distance") = 0.3, py::arg("backup_speed") = 0.2, py::arg("rotate_limit_deg") = 360.0,
+           py::arg("sensed_close_radius") = 2.0, py::arg("backup_distance") = 0.3, py::arg("backup_speed") = 0.2,
+           py::arg("rotate_limit_deg") = 360.0,
            py::arg("wait_time") = 2.0, py::arg("wait_radius") = 1.5, py::arg("max_recoveries") = 6,
            py::arg("progress_reset") = 1.0, py::arg("record_top_k") = 5,
            "path_margin: m kept beyond the footprint's radius by the global path where the map allows; "
            "replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance "
            "(m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after "
-           "a stall, except within keep_clear (m) of the robot and the goal; backup_distance (m) at backup_speed "
+           "a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the "
+           "scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed "
            "(m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle "
            "within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; "
            "record_top_k: best rollouts kept in each CycleRecord.")
@@ -83,6 +87,7 @@ void init_navigator(py::module_& m) {
       .def_readonly("stall_distance", &NavigatorParams::stall_distance)
       .def_readonly("give_up_length", &NavigatorParams::give_up_length)
       .def_readonly("keep_clear", &NavigatorParams::keep_clear)
+      .def_readonly("sensed_close_radius", &NavigatorParams::sensed_close_radius)
       .def_readonly("backup_distance", &NavigatorParams::backup_distance)
       .def_readonly("backup_speed", &NavigatorParams::backup_speed)
       .def_property_readonly("rotate_limit_deg", [](const NavigatorParams& p) { return p.rotate_limit * 180.0 / M_PI; })

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 
 #include "fgdwa/global_planner.hpp"
@@ -31,14 +32,22 @@ void AStarParams::validate() const {
 std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_radius, const TerrainGrid* terrain) {
   detail::require_non_negative("inflation_radius", inflation_radius);
   if (terrain && !terrain->matches(grid)) throw Error("terrain: its cells must match the occupancy grid's");
+  // Grade-4 cells keep the footprint off as obstacles do: the local planner
+  // rejects a footprint over them, so a path hugging them could not be followed.
+  std::optional<OccupancyGrid> with_impassable;
+  if (terrain) {
+    std::vector<std::uint8_t> cells = grid.cells();
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      cells[i] = cells[i] || terrain->grades()[i] >= TerrainGrid::kMaxGrade;
+    with_impassable.emplace(grid.rows(), grid.cols(), grid.resolution(), grid.origin(), std::move(cells));
+  }
+  const OccupancyGrid& obstacles = with_impassable ? *with_impassable : grid;
   std::vector<std::uint8_t> blocked(grid.cells().size(), 0);
-  const DistanceField field(grid);
+  const DistanceField field(obstacles);
   for (int r = 0; r < grid.rows(); ++r)
-    for (int c = 0; c < grid.cols(); ++c) {
-      const std::size_t i = grid.index(r, c);
-      blocked[i] = grid.occupied(r, c) || field.distance(grid.cell_center(r, c)) < inflation_radius ||
-                   (terrain && terrain->grade(r, c) >= TerrainGrid::kMaxGrade);
-    }
+    for (int c = 0; c < grid.cols(); ++c)
+      blocked[grid.index(r, c)] =
+          obstacles.occupied(r, c) || field.distance(grid.cell_center(r, c)) < inflation_radius;
   return blocked;
 }
 

@@ -46,6 +46,7 @@ void NavigatorParams::validate() const {
   detail::require_non_negative("stall_distance", stall_distance);
   detail::require_non_negative("give_up_length", give_up_length);
   detail::require_non_negative("keep_clear", keep_clear);
+  detail::require_non_negative("sensed_close_radius", sensed_close_radius);
   detail::require_non_negative("backup_distance", backup_distance);
   detail::require_positive("backup_speed", backup_speed);
   detail::require_non_negative("rotate_limit", rotate_limit);
@@ -218,6 +219,15 @@ void Navigator::give_up_path_ahead(const Vec2& position) {
   }
 }
 
+void Navigator::close_sensed_obstacles(const Vec2& position) {
+  const OccupancyGrid& grid = map();
+  for (const Vec2& hit : controller_.sensed_points()) {
+    int row, col;
+    if ((hit - position).norm() <= params_.sensed_close_radius && grid.cell_of(hit, row, col))
+      closed_[grid.index(row, col)] = 1;
+  }
+}
+
 double Navigator::contact_margin(const Pose2& pose) const {
   // As the planner does: the margin never asks for more room than the robot has.
   return std::clamp(controller_.world().clearance(footprint_, pose, 0.0) - 1e-3, 0.0,
@@ -285,7 +295,10 @@ void Navigator::start_recovery(const RobotState& state, const std::vector<Disc>&
     wait_cycles_left_ = std::max(1, cycles_of(params_.wait_time, dt_));
     return;
   }
-  if (path_) give_up_path_ahead(position);
+  if (path_) {
+    give_up_path_ahead(position);
+    close_sensed_obstacles(position);
+  }
   backed_up_ = 0.0;
   backup_braking_ = false;
   rotated_ = 0.0;

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from fgdwa._core import OccupancyGrid
+from fgdwa._core import OccupancyGrid, TerrainGrid
 from fgdwa.scenario import Scenario
 from fgdwa.world import World
 
@@ -104,4 +104,58 @@ def unknown_beside_path_scenario() -> Scenario:
         start=(1.0, 3.0, 0.0),
         goal=(15.0, 3.0),
         description="Obstacles missing from the map, 0.5 m beside the straight global path.",
+    )
+
+
+def dead_end_scenario() -> Scenario:
+    """A pocket open toward the start whose back wall the map lacks.
+
+    The global path runs straight through the pocket to the goal beyond it;
+    the lidar shows the back wall only once the robot is inside. The map never
+    learns it (it is the known map), so only a recovery gets the robot out: it
+    stalls at the wall, gives up the stretch of path ahead, backs out, and the
+    replanned path goes round the pocket."""
+    resolution = 0.1
+    cells = np.zeros((100, 140), dtype=np.uint8)
+    cells[0, :] = cells[-1, :] = 1
+    cells[:, 0] = cells[:, -1] = 1
+    _fill(cells, resolution, 4.0, 3.8, 9.0, 4.0)  # lower side of the pocket
+    _fill(cells, resolution, 4.0, 6.0, 9.0, 6.2)  # upper side
+    hidden = np.zeros_like(cells)
+    _fill(hidden, resolution, 8.8, 4.0, 9.0, 6.0)  # its back wall, missing from the map
+    grid = OccupancyGrid(cells, resolution, (0.0, 0.0))
+    return Scenario(
+        name="dead_end",
+        world=World(grid=grid, hidden=OccupancyGrid(hidden, resolution, (0.0, 0.0))),
+        start=(1.5, 5.0, 0.0),
+        goal=(12.5, 5.0),
+        description="A pocket the global path enters because the map lacks its back wall; only a recovery solves it.",
+    )
+
+
+def terrain_temptation_scenario() -> Scenario:
+    """A block missing from the map stands on the path beside a grade-4 slope.
+
+    Dodging it below is the short way round, onto ground the robot cannot
+    enter; above, the way is clear but longer. A planner blind to terrain
+    dodges onto the slope and falls."""
+    resolution = 0.1
+    cells = np.zeros((80, 140), dtype=np.uint8)
+    cells[0, :] = cells[-1, :] = 1
+    cells[:, 0] = cells[:, -1] = 1
+    hidden = np.zeros_like(cells)
+    _fill(hidden, resolution, 6.0, 3.5, 6.6, 4.8)  # on the path, reaching further up than down
+    grades = np.zeros_like(cells)
+    _fill(grades, resolution, 4.0, 0.1, 9.0, 3.2)  # the slope below the path
+    grades[grades == 1] = 4
+    _fill(grades, resolution, 4.0, 3.2, 9.0, 3.4)  # its edge, steep but passable
+    grades[grades == 1] = 3
+    grid = OccupancyGrid(cells, resolution, (0.0, 0.0))
+    return Scenario(
+        name="terrain_temptation",
+        world=World(grid=grid, hidden=OccupancyGrid(hidden, resolution, (0.0, 0.0)),
+                    terrain=TerrainGrid(grades, resolution, (0.0, 0.0))),
+        start=(1.5, 4.0, 0.0),
+        goal=(12.5, 4.0),
+        description="A block missing from the map on the path; dodging it below leads onto a grade-4 slope.",
     )

@@ -311,6 +311,7 @@ TEST(Navigator, RejectsBadInputNamingIt) {
   bad([&](NavigatorParams& p) { p.stall_distance = -1.0; }, "stall_distance");
   bad([&](NavigatorParams& p) { p.give_up_length = -1.0; }, "give_up_length");
   bad([&](NavigatorParams& p) { p.keep_clear = nan; }, "keep_clear");
+  bad([&](NavigatorParams& p) { p.sensed_close_radius = -1.0; }, "sensed_close_radius");
   bad([&](NavigatorParams& p) { p.backup_distance = -0.3; }, "backup_distance");
   bad([&](NavigatorParams& p) { p.backup_speed = 0.0; }, "backup_speed");
   bad([&](NavigatorParams& p) { p.rotate_limit = -1.0; }, "rotate_limit");

@@ -50,6 +50,8 @@ class Controller {
                          const std::vector<Disc>& discs = {});
 
   const CycleReport& report() const { return report_; }
+  // The last scan's hits that neither the map nor the known discs explain.
+  const std::vector<Vec2>& sensed_points() const { return unexplained_; }
   const LocalPlanner& planner() const { return planner_; }
   const FieldClearance& world() const { return world_; }
 

@@ -34,9 +34,9 @@ struct TerrainCost {
   double multiplier(int grade) const { return 1.0 + w_risk * risk[static_cast<std::size_t>(grade)]; }
 };
 
-// Cells a robot of `inflation_radius` cannot centre on: occupied cells, cells
-// whose centre is nearer than the radius to an obstacle square, and grade-4
-// terrain. Row-major, 1 = blocked.
+// Cells a robot of `inflation_radius` cannot centre on: occupied and grade-4
+// cells, and cells whose centre is nearer than the radius to the square of
+// either (the local planner keeps the footprint off both). Row-major, 1 = blocked.
 std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_radius,
                                   const TerrainGrid* terrain = nullptr);
 

@@ -65,6 +65,7 @@ struct NavigatorParams {
   double stall_distance = 0.1;    // m, progress in stall_time below which the robot has stalled
   double give_up_length = 0.6;    // m of path ahead closed to the global planner after a stall
   double keep_clear = 0.3;        // m around the robot and the goal that a stall never closes
+  double sensed_close_radius = 2.0;  // m: at a stall, hits the map lacks this near are closed to the global planner
   double backup_distance = 0.3;   // m driven straight back after a stall
   double backup_speed = 0.2;      // m/s, reverse speed while backing up
   double rotate_limit = 6.283185307179586;  // rad, the most a rotation recovery turns (one turn)
@@ -170,6 +171,8 @@ class Navigator {
   void remember_position(const Vec2& position);
   void start_recovery(const RobotState& state, const std::vector<Disc>& discs);
   void give_up_path_ahead(const Vec2& position);
+  // Closes to the global planner the cells of the scan's hits that the map lacks, near the robot.
+  void close_sensed_obstacles(const Vec2& position);
   // Clearance below which the recoveries count the footprint in contact, for a robot at `pose`.
   double contact_margin(const Pose2& pose) const;
   // Whether the footprint stays clear of the robot's own view of the world moving from `pose` by `command`.
