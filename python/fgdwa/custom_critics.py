@@ -17,8 +17,9 @@ calls ``MyCritic(k=2.0)``) and has:
   must be finite.
 
 Cost: the planner copies the rollouts into numpy arrays and calls back into
-Python once per cycle (about 20-60 us for 441 samples of 20 poses, plus the
-critic's own numpy work), where a C++ critic costs a few microseconds. The
+Python once per cycle: a critic returning zeros added 18-19 us to a 76 us plan
+of 441 samples of 20 poses (open space, measured on 2 cores), before the
+critic's own numpy work; a C++ critic costs a few microseconds. The
 registry is per process: a Dask worker or a pool process must register the
 critic too (e.g. in the module that defines it, imported by the task).
 """
