@@ -14,7 +14,7 @@
 //   scan    LaserScanner::scan: 541 beams over 270 deg, max range 10 m, no noise
 //   sensed  the hits the map does not explain, as a points_field for the planner
 //   I, D    obstacle_density (detect window +-60 deg, R 2 m) and GlobalPath::deviation
-//   fuzzy   FuzzyWeights::weights(I, D) -> beta, delta; set_weight on the planner
+//   fuzzy   FuzzyWeights::weights(I, D) -> clearance and similarity weights; set_weight on the planner
 //   plan    LocalPlanner::plan with planner_preset("fgdwa").params: 21 x 21
 //           samples, 20 steps (dt 0.15 s, sim_time 3 s), heading to key nodes,
 //           critics heading, clearance, velocity and similarity (DTW of every
@@ -118,7 +118,7 @@ struct Position {
   RobotState state;
   Scan scan;
   double density = 0.0, deviation = 0.0;  // I and D, as the controller read them
-  WeightPair weights;                      // beta and delta it set
+  double beta = 0.0, delta = 0.0;          // the clearance and similarity weights it set
   std::size_t sensed_points = 0;           // hits the map does not explain
   int admissible_empty = 0;  // admissible samples against a world without obstacles
   CriticContext context;
@@ -207,11 +207,12 @@ struct Scene {
       const CycleReport& report = controllers[static_cast<std::size_t>(i)].report();
       pos.density = report.density;
       pos.deviation = report.deviation;
-      pos.weights = WeightPair{report.beta, report.delta};
+      pos.beta = report.beta;
+      pos.delta = report.delta;
       pos.sensed_points = report.sensed_points;
       for (LocalPlanner* pl : {&planner, &planners_no_similarity[static_cast<std::size_t>(i)]}) {
-        pl->set_weight("clearance", pos.weights.beta);
-        if (pl == &planner) pl->set_weight("similarity", pos.weights.delta);
+        pl->set_weight("clearance", pos.beta);
+        if (pl == &planner) pl->set_weight("similarity", pos.delta);
         pl->plan(pos.state, goal, world);
       }
       pos.admissible_empty = planner.plan(pos.state, goal, empty_world).admissible_count();
@@ -364,8 +365,8 @@ void plan_with(benchmark::State& bench, std::vector<LocalPlanner>& planners, boo
   Scene& s = scene();
   over_positions(bench, [&](std::size_t i) {
     const Position& pos = s.positions[i];
-    planners[i].set_weight("clearance", pos.weights.beta);
-    if (similarity) planners[i].set_weight("similarity", pos.weights.delta);
+    planners[i].set_weight("clearance", pos.beta);
+    if (similarity) planners[i].set_weight("similarity", pos.delta);
     benchmark::DoNotOptimize(planners[i].plan(pos.state, s.goal, world).command);
   });
 }
@@ -434,7 +435,7 @@ void print_scene() {
   for (std::size_t i = 0; i < s.positions.size(); ++i) {
     const Position& p = s.positions[i];
     std::printf("%3zu %7.2f %7.2f %7.2f %6.3f %6.3f %6.3f %6.3f %6zu %3zu/%-3d %7d %6.3f  %s\n", i, p.state.pose.x,
-                p.state.pose.y, p.state.pose.theta, p.density, p.deviation, p.weights.beta, p.weights.delta,
+                p.state.pose.y, p.state.pose.theta, p.density, p.deviation, p.beta, p.delta,
                 p.sensed_points, p.admissible.size(), p.samples, p.admissible_empty, p.command.v,
                 to_string(p.status));
   }

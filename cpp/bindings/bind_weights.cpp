@@ -12,7 +12,8 @@ namespace py = pybind11;
 using namespace fgdwa;
 
 namespace {
-// Lets a Python class derive from WeightPolicy and define weights(density, deviation) -> (beta, delta).
+// Lets a Python class derive from WeightPolicy and define
+// weights(density, deviation) -> {critic name: weight}.
 class PyWeightPolicy : public WeightPolicy {
  public:
   std::string name() const override {
@@ -20,18 +21,27 @@ class PyWeightPolicy : public WeightPolicy {
     py::function f = py::get_override(static_cast<const WeightPolicy*>(this), "name");
     return f ? f().cast<std::string>() : std::string("python");
   }
-  WeightPair weights(double density, double deviation) const override {
+  CriticWeights weights(double density, double deviation) const override {
     py::gil_scoped_acquire gil;
     py::function f = py::get_override(static_cast<const WeightPolicy*>(this), "weights");
     if (!f) throw Error("a WeightPolicy subclass must define weights(density, deviation)");
     const py::object result = f(density, deviation);
-    py::sequence pair;
-    try {
-      pair = result.cast<py::sequence>();
-    } catch (const py::cast_error&) {
+    if (!py::isinstance<py::dict>(result))
+      throw Error("WeightPolicy.weights must return a dict {critic name: weight}, got " +
+                  std::string(py::str(py::type::of(result))));
+    CriticWeights weights;
+    for (auto item : result.cast<py::dict>()) {
+      const std::string critic = py::str(item.first);
+      double weight;
+      try {
+        weight = item.second.cast<double>();
+      } catch (const py::cast_error&) {
+        throw Error("WeightPolicy.weights: the weight of critic '" + critic + "' is not a number");
+      }
+      if (!std::isfinite(weight)) throw Error("WeightPolicy.weights: the weight of critic '" + critic + "' is not finite");
+      weights[critic] = weight;
     }
-    if (!pair || pair.size() != 2) throw Error("WeightPolicy.weights must return (beta, delta)");
-    return {pair[0].cast<double>(), pair[1].cast<double>()};
+    return weights;
   }
 };
 }  // namespace
@@ -39,8 +49,9 @@ class PyWeightPolicy : public WeightPolicy {
 void init_weights(py::module_& m) {
   py::class_<WeightPolicy, PyWeightPolicy, std::shared_ptr<WeightPolicy>>(
       m, "WeightPolicy",
-      "Sets the clearance weight beta and the similarity weight delta from I and D each cycle. Derive from it in "
-      "Python (call super().__init__()) and define weights(density, deviation) -> (beta, delta).")
+      "Sets critics' weights from the obstacle density I and the path deviation D each cycle. Derive from it in "
+      "Python (call super().__init__()) and define weights(density, deviation) -> {critic name: weight}; the "
+      "controller applies the weights of the critics its planner has.")
       .def(py::init<>())
       .def_property_readonly("name", &WeightPolicy::name)
       .def(
@@ -48,28 +59,42 @@ void init_weights(py::module_& m) {
           [](const WeightPolicy& p, double density, double deviation) {
             if (std::isnan(density)) throw Error("density I is NaN");
             if (std::isnan(deviation)) throw Error("deviation D is NaN");
-            const WeightPair w = p.weights(density, deviation);
-            return py::make_tuple(w.beta, w.delta);
+            return p.weights(density, deviation);
           },
-          py::arg("density"), py::arg("deviation"), "(beta, delta) for obstacle density I and path deviation D (m).");
+          py::arg("density"), py::arg("deviation"),
+          "{critic name: weight} for obstacle density I and path deviation D (m).");
 
-  py::class_<FixedWeights, WeightPolicy, std::shared_ptr<FixedWeights>>(m, "FixedWeights",
-                                                                         "beta and delta held fixed.")
+  py::class_<FixedWeights, WeightPolicy, std::shared_ptr<FixedWeights>>(
+      m, "FixedWeights", "Critics' weights held fixed: FixedWeights(beta, delta) for clearance and similarity, or "
+                         "FixedWeights(weights={critic name: weight}).")
       .def(py::init<double, double>(), py::arg("beta"), py::arg("delta"))
+      .def(py::init<CriticWeights>(), py::arg("weights"))
       .def("__repr__", [](const FixedWeights& w) {
-        const WeightPair p = w.weights(0.0, 0.0);
         std::ostringstream s;
-        s << "FixedWeights(beta=" << p.beta << ", delta=" << p.delta << ")";
+        s << "FixedWeights({";
+        bool first = true;
+        for (const auto& [critic, weight] : w.weights(0.0, 0.0)) {
+          s << (first ? "" : ", ") << "'" << critic << "': " << weight;
+          first = false;
+        }
+        s << "})";
         return s.str();
       });
 
   py::class_<FuzzyWeights, WeightPolicy, std::shared_ptr<FuzzyWeights>>(
       m, "FuzzyWeights",
-      "beta and delta from a Mamdani engine with inputs I, D and outputs beta, delta (default: the paper's).")
-      .def(py::init([](const MamdaniEngine* engine) {
-             return engine ? std::make_shared<FuzzyWeights>(*engine) : std::make_shared<FuzzyWeights>();
+      "Critics' weights from a Mamdani engine with inputs I and D, each output mapped to a critic.")
+      .def(py::init([](const MamdaniEngine* engine, std::optional<std::map<std::string, std::string>> outputs) {
+             if (!engine) {
+               if (outputs) throw Error("FuzzyWeights: output_critics needs an engine");
+               return std::make_shared<FuzzyWeights>();
+             }
+             return outputs ? std::make_shared<FuzzyWeights>(*engine, *outputs) : std::make_shared<FuzzyWeights>(*engine);
            }),
-           py::arg("engine") = nullptr)
+           py::arg("engine") = nullptr, py::arg("output_critics") = py::none(),
+           "engine: a MamdaniEngine with inputs I and D (default: the paper's); output_critics: {output: critic} "
+           "(default: beta -> clearance, delta -> similarity).")
+      .def_property_readonly("output_critics", &FuzzyWeights::output_critics)
       .def_property_readonly("engine", &FuzzyWeights::engine)
       .def("__repr__", [](const FuzzyWeights& w) {
         return "FuzzyWeights(" + std::to_string(w.engine().rules().size()) + " rules)";

@@ -14,10 +14,6 @@ Controller::Controller(const RobotLimits& limits, const Footprint& footprint, co
     : planner_(limits, footprint, params), map_(std::move(map)), policy_(std::move(policy)), window_(window),
       world_(map_) {
   window_.validate();
-  for (const CriticConfig& c : params.critics) {
-    has_clearance_ = has_clearance_ || c.name == "clearance";
-    has_similarity_ = has_similarity_ || c.name == "similarity";
-  }
 }
 
 void Controller::set_global_path(const GlobalPath& path) { planner_.set_global_path(path); }
@@ -54,12 +50,12 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
   if (planner_.global_path()) report_.deviation = planner_.global_path()->deviation(state.pose.position());
   if (policy_) {
     if (!scan) throw Error("the weight policy reads the obstacle density I: step() needs a scan");
-    const WeightPair w = policy_->weights(report_.density, std::isnan(report_.deviation) ? 0.0 : report_.deviation);
-    if (has_clearance_) planner_.set_weight("clearance", w.beta);
-    if (has_similarity_) planner_.set_weight("similarity", w.delta);
+    const CriticWeights weights = policy_->weights(report_.density, std::isnan(report_.deviation) ? 0.0 : report_.deviation);
+    for (const auto& [critic, weight] : weights)
+      if (planner_.has_critic(critic)) planner_.set_weight(critic, weight);
   }
-  if (has_clearance_) report_.beta = planner_.weight("clearance");
-  if (has_similarity_) report_.delta = planner_.weight("similarity");
+  if (planner_.has_critic("clearance")) report_.beta = planner_.weight("clearance");
+  if (planner_.has_critic("similarity")) report_.delta = planner_.weight("similarity");
   const Clock::time_point planning = Clock::now();
   report_.perception_time = std::chrono::duration<double>(planning - start).count();
   const PlanResult& result = planner_.plan(state, goal, world_);

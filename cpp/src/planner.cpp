@@ -96,6 +96,10 @@ std::size_t LocalPlanner::critic_index(const std::string& name) const {
   throw Error("the planner has no critic '" + name + "'");
 }
 
+bool LocalPlanner::has_critic(const std::string& critic) const {
+  return std::find(result_.critic_names.begin(), result_.critic_names.end(), critic) != result_.critic_names.end();
+}
+
 void LocalPlanner::set_weight(const std::string& critic, double weight) {
   detail::require_finite("weight of critic '" + critic + "'", weight);
   result_.weights[critic_index(critic)] = weight;

@@ -1060,35 +1060,44 @@ class MamdaniEngine:
         ...
 class WeightPolicy:
     """
-    Sets the clearance weight beta and the similarity weight delta from I and D each cycle. Derive from it in Python (call super().__init__()) and define weights(density, deviation) -> (beta, delta).
+    Sets critics' weights from the obstacle density I and the path deviation D each cycle. Derive from it in Python (call super().__init__()) and define weights(density, deviation) -> {critic name: weight}; the controller applies the weights of the critics its planner has.
     """
     def __init__(self) -> None:
         ...
-    def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
+    def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex) -> dict[str, float]:
         """
-        (beta, delta) for obstacle density I and path deviation D (m).
+        {critic name: weight} for obstacle density I and path deviation D (m).
         """
     @property
     def name(self) -> str:
         ...
 class FixedWeights(WeightPolicy):
     """
-    beta and delta held fixed.
+    Critics' weights held fixed: FixedWeights(beta, delta) for clearance and similarity, or FixedWeights(weights={critic name: weight}).
     """
+    @typing.overload
     def __init__(self, beta: typing.SupportsFloat | typing.SupportsIndex, delta: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, weights: collections.abc.Mapping[str, typing.SupportsFloat | typing.SupportsIndex]) -> None:
         ...
     def __repr__(self) -> str:
         ...
 class FuzzyWeights(WeightPolicy):
     """
-    beta and delta from a Mamdani engine with inputs I, D and outputs beta, delta (default: the paper's).
+    Critics' weights from a Mamdani engine with inputs I and D, each output mapped to a critic.
     """
-    def __init__(self, engine: MamdaniEngine = None) -> None:
-        ...
+    def __init__(self, engine: MamdaniEngine = None, output_critics: collections.abc.Mapping[str, str] | None = None) -> None:
+        """
+        engine: a MamdaniEngine with inputs I and D (default: the paper's); output_critics: {output: critic} (default: beta -> clearance, delta -> similarity).
+        """
     def __repr__(self) -> str:
         ...
     @property
     def engine(self) -> MamdaniEngine:
+        ...
+    @property
+    def output_critics(self) -> dict[str, str]:
         ...
 class PlannerPreset:
     """

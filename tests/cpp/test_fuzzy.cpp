@@ -5,7 +5,9 @@
 #include <limits>
 #include <random>
 
+#include "fgdwa/controller.hpp"
 #include "fgdwa/fuzzy.hpp"
+#include "fgdwa/weights.hpp"
 #include "test_support.hpp"
 
 namespace fgdwa {
@@ -357,3 +359,50 @@ TEST(MamdaniEngine, ResolutionOnlyRefinesTheCentroid) {
 
 }  // namespace
 }  // namespace fgdwa
+
+using namespace fgdwa;
+
+TEST(WeightPolicy, WeightsComeByCriticName) {
+  const FixedWeights pair(0.3, 1.5);
+  EXPECT_EQ(pair.weights(0.0, 0.0), (CriticWeights{{"clearance", 0.3}, {"similarity", 1.5}}));
+  const FixedWeights named(CriticWeights{{"dwb_obstacle", 0.02}});
+  EXPECT_EQ(named.weights(1.0, 1.0), (CriticWeights{{"dwb_obstacle", 0.02}}));
+  // The paper's controller: beta sets the clearance critic, delta the similarity critic.
+  const FuzzyWeights fuzzy;
+  const CriticWeights w = fuzzy.weights(1.8, 0.1);
+  ASSERT_EQ(w.size(), 2u);
+  double out[2];
+  const double in[2] = {1.8, 0.1};
+  fuzzy.engine().evaluate(in, 2, out, 2);
+  EXPECT_DOUBLE_EQ(w.at("clearance"), out[fuzzy.engine().output_index("beta")]);
+  EXPECT_DOUBLE_EQ(w.at("similarity"), out[fuzzy.engine().output_index("delta")]);
+  // Outputs mapped to other critics.
+  const FuzzyWeights remapped(paper_fuzzy_controller(), {{"beta", "dwb_obstacle"}, {"delta", "dwb_path_dist"}});
+  EXPECT_DOUBLE_EQ(remapped.weights(1.8, 0.1).at("dwb_obstacle"), w.at("clearance"));
+
+  fgdwa::test::expect_error_naming([] { FixedWeights(-0.1, 1.0); }, "beta");
+  fgdwa::test::expect_error_naming([] { FixedWeights(CriticWeights{{"", 1.0}}); }, "empty");
+  fgdwa::test::expect_error_naming([] { FixedWeights(CriticWeights{{"velocity", -1.0}}); }, "velocity");
+  fgdwa::test::expect_error_naming([] { FuzzyWeights(paper_fuzzy_controller(), {{"beta", "clearance"}}); }, "outputs");
+  fgdwa::test::expect_error_naming(
+      [] { FuzzyWeights(paper_fuzzy_controller(), {{"beta", "clearance"}, {"gamma", "velocity"}}); }, "gamma");
+}
+
+TEST(WeightPolicy, TheControllerSetsTheWeightsOfTheCriticsItsPlannerHas) {
+  PlannerParams params;
+  params.critics = {{"heading", 0.5}, {"clearance", 0.15}, {"velocity", 1.0}};  // no similarity critic
+  auto policy = std::make_shared<FixedWeights>(CriticWeights{{"clearance", 0.7}, {"similarity", 2.0}, {"velocity", 0.4}});
+  Controller controller(RobotLimits{}, Footprint::circle(0.25), params, nullptr, policy);
+  Scan scan;
+  scan.angle_min = -1.0;
+  scan.angle_increment = 0.01;
+  scan.max_range = 10.0;
+  scan.ranges.assign(201, std::numeric_limits<double>::infinity());
+  RobotState state;
+  controller.step(state, Vec2(3.0, 0.0), &scan);
+  EXPECT_DOUBLE_EQ(controller.planner().weight("clearance"), 0.7);
+  EXPECT_DOUBLE_EQ(controller.planner().weight("velocity"), 0.4);
+  EXPECT_DOUBLE_EQ(controller.planner().weight("heading"), 0.5);
+  EXPECT_DOUBLE_EQ(controller.report().beta, 0.7);
+  EXPECT_TRUE(std::isnan(controller.report().delta));
+}

@@ -48,14 +48,19 @@ def test_fuzzy_weights_follow_the_rule_tables():
     policy = fgdwa.FuzzyWeights()
     engine = fgdwa.paper_fuzzy_controller()
     for density, deviation in [(0.1, 0.2), (1.0, 2.5), (1.9, 4.8), (0.5, 3.7)]:
-        beta, delta = policy.weights(density, deviation)
+        weights = policy.weights(density, deviation)
         out = engine.evaluate(I=density, D=deviation)
-        assert (beta, delta) == pytest.approx((out["beta"], out["delta"]))
+        assert weights == pytest.approx({"clearance": out["beta"], "similarity": out["delta"]})
     # More obstacles ahead: more weight on safety (Table 3, D small); farther off the path:
     # more weight on similarity (Table 4).
-    assert policy.weights(1.8, 0.0)[0] > policy.weights(0.1, 0.0)[0] + 0.2
-    assert policy.weights(0.1, 4.5)[1] > policy.weights(0.1, 0.0)[1] + 1.5
-    assert fgdwa.FixedWeights(0.3, 1.0).weights(2.0, 5.0) == (0.3, 1.0)
+    assert policy.weights(1.8, 0.0)["clearance"] > policy.weights(0.1, 0.0)["clearance"] + 0.2
+    assert policy.weights(0.1, 4.5)["similarity"] > policy.weights(0.1, 0.0)["similarity"] + 1.5
+    assert fgdwa.FixedWeights(0.3, 1.0).weights(2.0, 5.0) == {"clearance": 0.3, "similarity": 1.0}
+    assert fgdwa.FixedWeights(weights={"velocity": 0.5}).weights(0.0, 0.0) == {"velocity": 0.5}
+    remapped = fgdwa.FuzzyWeights(engine, output_critics={"beta": "dwb_obstacle", "delta": "similarity"})
+    assert set(remapped.weights(1.0, 1.0)) == {"dwb_obstacle", "similarity"}
+    with pytest.raises(fgdwa.FgdwaError, match="outputs"):
+        fgdwa.FuzzyWeights(engine, output_critics={"beta": "clearance"})
     with pytest.raises(fgdwa.FgdwaError, match="beta"):
         fgdwa.FixedWeights(-0.1, 1.0)
     with pytest.raises(fgdwa.FgdwaError, match="density"):
@@ -98,7 +103,8 @@ def test_controller_runs_the_cycle_a_robot_would():
     assert report.sensed_points > 10  # the block is not on the map
     assert report.density == pytest.approx(fgdwa.obstacle_density(scan).density)
     assert report.deviation == pytest.approx(0.2)
-    assert (report.beta, report.delta) == pytest.approx(preset.weight_policy().weights(report.density, 0.2))
+    weights = preset.weight_policy().weights(report.density, 0.2)
+    assert (report.beta, report.delta) == pytest.approx((weights["clearance"], weights["similarity"]))
     assert plan.weights[plan.critic_names.index("clearance")] == report.beta
     with pytest.raises(fgdwa.FgdwaError, match="needs a scan"):
         controller.step(state, (15.0, 3.0), None)

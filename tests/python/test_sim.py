@@ -119,6 +119,10 @@ def test_weight_policy_needs_a_lidar():
 
     class Constant(fgdwa.WeightPolicy):
         def weights(self, density, deviation):
+            return {"clearance": 0.2}
+
+    class Pair(fgdwa.WeightPolicy):
+        def weights(self, density, deviation):
             return 0.2, 0.0
 
     with pytest.raises(fgdwa.FgdwaError, match="lidar"):
@@ -126,3 +130,6 @@ def test_weight_policy_needs_a_lidar():
     result = run_episode(scenario.world, scenario.start, scenario.goal, weight_policy=Constant(),
                          lidar=fgdwa.LidarParams(), max_steps=20)
     assert np.all(result.beta == 0.2)
+    with pytest.raises(fgdwa.FgdwaError, match="dict"):
+        run_episode(scenario.world, scenario.start, scenario.goal, weight_policy=Pair(), lidar=fgdwa.LidarParams(),
+                    max_steps=5)

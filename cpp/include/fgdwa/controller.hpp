@@ -1,7 +1,7 @@
 #pragma once
 // One control cycle as a robot runs it (SPEC 9): the scan shows obstacles the
 // map lacks and gives the detect window's density I, the global path gives the
-// deviation D, the weight policy turns (I, D) into beta and delta, and the
+// deviation D, the weight policy turns (I, D) into critics' weights, and the
 // planner picks the command. Data flows one way; nothing reaches back.
 //
 // Lifecycle: construct once with the map; set_global_path when a path is
@@ -61,7 +61,6 @@ class Controller {
   std::shared_ptr<const WeightPolicy> policy_;
   DetectWindowParams window_;
   FieldClearance world_;
-  bool has_clearance_ = false, has_similarity_ = false;
   CycleReport report_;
   std::vector<Vec2> unexplained_;
 };

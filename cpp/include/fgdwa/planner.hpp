@@ -133,6 +133,7 @@ class LocalPlanner {
   bool needs_path() const;
   const std::vector<std::size_t>& key_nodes() const;
 
+  bool has_critic(const std::string& critic) const;
   // Weight of a critic by name, e.g. set each cycle by a weight policy.
   void set_weight(const std::string& critic, double weight);
   double weight(const std::string& critic) const;

@@ -14,7 +14,7 @@ struct PlannerPreset {
   std::string name;
   std::string description;
   PlannerParams params;
-  bool fuzzy = false;  // beta and delta from the paper's fuzzy controller each cycle
+  bool fuzzy = false;  // clearance and similarity weights from the paper's fuzzy controller each cycle
   // The weight policy to run this preset with: null when the weights stay as in params.
   std::shared_ptr<WeightPolicy> weight_policy() const;
 };

@@ -1,50 +1,63 @@
 #pragma once
-// How the weights of the clearance (beta) and similarity (delta) critics are
-// set each control cycle from the obstacle density I and the path deviation D
-// (SPEC 6): held fixed, or read from a fuzzy controller.
+// How critics' weights are set each control cycle from the obstacle density I
+// and the path deviation D (SPEC 6): held fixed, or read from a fuzzy
+// controller. A policy returns weights by critic name; the controller applies
+// those the planner has (the paper's fuzzy policy also names the similarity
+// critic, which GDWA lacks).
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "fgdwa/fuzzy.hpp"
 
 namespace fgdwa {
 
-struct WeightPair {
-  double beta = 0.0;   // weight of the clearance critic
-  double delta = 0.0;  // weight of the similarity critic
-};
+// Weight per critic name.
+using CriticWeights = std::map<std::string, double>;
 
 class WeightPolicy {
  public:
   virtual ~WeightPolicy() = default;
   virtual std::string name() const = 0;
   // Weights for this cycle's density I (0-2) and deviation D (m).
-  virtual WeightPair weights(double density, double deviation) const = 0;
+  virtual CriticWeights weights(double density, double deviation) const = 0;
 };
 
 class FixedWeights : public WeightPolicy {
  public:
+  // Throws fgdwa::Error on an empty critic name or a negative or non-finite weight.
+  explicit FixedWeights(CriticWeights weights);
+  // The paper's pair: beta for the clearance critic, delta for the similarity critic.
   FixedWeights(double beta, double delta);
   std::string name() const override { return "fixed"; }
-  WeightPair weights(double, double) const override { return weights_; }
+  CriticWeights weights(double, double) const override { return weights_; }
 
  private:
-  WeightPair weights_;
+  CriticWeights weights_;
 };
 
-// beta and delta from a Mamdani engine with inputs I and D and outputs beta
-// and delta (by those names); the paper's controller by default.
+// Critic weights from a Mamdani engine with inputs I and D: each output sets
+// the critic it is mapped to (default: the paper's controller, beta -> clearance
+// and delta -> similarity).
 class FuzzyWeights : public WeightPolicy {
  public:
   FuzzyWeights();
-  explicit FuzzyWeights(MamdaniEngine engine);
+  explicit FuzzyWeights(MamdaniEngine engine,
+                        std::map<std::string, std::string> output_critics = {{"beta", "clearance"},
+                                                                             {"delta", "similarity"}});
   std::string name() const override { return "fuzzy"; }
-  WeightPair weights(double density, double deviation) const override;
+  CriticWeights weights(double density, double deviation) const override;
   const MamdaniEngine& engine() const { return engine_; }
+  // Output name -> critic name.
+  const std::map<std::string, std::string>& output_critics() const { return output_critics_; }
 
  private:
   MamdaniEngine engine_;
-  std::size_t in_density_, in_deviation_, out_beta_, out_delta_;
+  std::map<std::string, std::string> output_critics_;
+  std::vector<std::pair<std::size_t, std::string>> outputs_;  // engine output index -> critic
+  std::size_t in_density_, in_deviation_;
 };
 
 }  // namespace fgdwa
