@@ -98,7 +98,14 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
                               options=options)
     trials_wall = time.perf_counter() - tic
     for result in results:
-        d = save_experiment(result, out, figures=not args.no_figures)
+        paths = {}
+        if not args.no_figures:
+            from fgdwa.figures import experiment_figures
+
+            directory = out / result.spec.name
+            directory.mkdir(parents=True, exist_ok=True)
+            paths = experiment_figures(result, directory)
+        d = save_experiment(result, out, paths)
         print()
         print(terminal_report(d))
         print(f"files: {out / result.spec.name}/")
@@ -182,7 +189,7 @@ def build_parser() -> argparse.ArgumentParser:
     exp.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
     exp.add_argument("--no-progress", action="store_true", help="no progress bar")
     exp.set_defaults(func=cmd_experiment)
-    from fgdwa.datasets.barn import register_barn_commands
+    from fgdwa.barn_cli import register_barn_commands
 
     register_barn_commands(sub)
     return parser

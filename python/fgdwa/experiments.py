@@ -27,8 +27,8 @@ from typing import Callable, Iterable, Optional, Sequence, Union
 import numpy as np
 
 from fgdwa import stats
+from fgdwa.stats import SIGNIFICANCE, finishing_rate
 from fgdwa._core import FgdwaError
-from fgdwa.report import SIGNIFICANCE, finishing_rate
 from fgdwa.scenario import Scenario, run_scenario
 
 EXECUTORS = ("local", "dask", "serial")

@@ -14,12 +14,8 @@ import os
 from pathlib import Path
 from typing import Optional, Sequence
 
-SIGNIFICANCE = 0.05  # two-sided p below which an effect counts as significant
+from fgdwa.stats import SIGNIFICANCE, finishing_rate
 
-
-def finishing_rate(successes: int, runs: int) -> float:
-    """Successes in % of the runs; NaN without runs."""
-    return 100.0 * successes / runs if runs else float("nan")
 
 EXCLUSION_NOTE = ("Runs that did not reach the goal (collision, fall or timeout) count in the finishing rate "
                   "only: their running time, steps, mileage and clearances are left out of the means, the "
@@ -391,17 +387,15 @@ SURFACES_CAPTION = "The paper's fuzzy controller: control surfaces beta(I, D) an
 SURFACES_FILE = "control_surfaces.png"
 
 
-def save_experiment(result, directory: Path, figures: bool = True) -> dict:
-    """Write an ExperimentResult into ``directory/<name>/``: <name>.json, the CSVs, the
-    figures and report.md. Returns its dictionary, with the figures' file names."""
+def save_experiment(result, directory: Path, figures: Optional[dict] = None) -> dict:
+    """Write an ExperimentResult into ``directory/<name>/``: <name>.json, the CSVs and
+    report.md, which shows ``figures`` ({caption: path}, made there beforehand by
+    ``fgdwa.figures.experiment_figures``). Returns its dictionary, with the figures'
+    file names."""
     directory = Path(directory) / result.spec.name
     directory.mkdir(parents=True, exist_ok=True)
     d = result.to_dict()
-    paths = {}
-    if figures:
-        from fgdwa.figures import experiment_figures
-
-        paths = experiment_figures(result, directory)
+    paths = dict(figures or {})
     d["figures"] = {caption: Path(p).name for caption, p in paths.items()}
     write_json(d, directory / f"{result.spec.name}.json")
     write_csvs(d, directory)

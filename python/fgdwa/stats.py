@@ -22,6 +22,13 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+SIGNIFICANCE = 0.05  # two-sided p below which an effect counts as significant
+
+
+def finishing_rate(successes: int, runs: int) -> float:
+    """Successes in % of the runs; NaN without runs."""
+    return 100.0 * successes / runs if runs else float("nan")
+
 
 def finite(values: Sequence[float]) -> np.ndarray:
     """The finite values as a float array."""

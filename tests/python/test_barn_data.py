@@ -16,16 +16,15 @@ import pytest
 import fgdwa
 from conftest import barn_locations
 from fgdwa import FgdwaError
+from fgdwa.barn_cli import barn_import_command, register_barn_commands
 from fgdwa.datasets import (
     BarnDataset,
-    barn_import_command,
     barn_score,
     convert_barn_worlds,
     fill_holes,
     find_barn_file,
     load_barn,
     parse_world_selection,
-    register_barn_commands,
 )
 
 CONVERTED_WORLDS = (0, 150, 299)  # the worlds whose original files are in worlds/

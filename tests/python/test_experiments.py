@@ -255,7 +255,7 @@ def test_results_page_counts_claims_read_back_from_json(tmp_path):
                                  claims=(Claim("steps", "gdwa", -10.0, "fewer"),
                                          Claim("steps", "nobody", -10.0, "not run here"),
                                          Claim("mileage", "gdwa", 0.1, "same", kind="no_difference")))
-    save_experiment(result, tmp_path, figures=False)
+    save_experiment(result, tmp_path)
     d = read_json(tmp_path / "t" / "t.json")
     mileage_p = sps.ttest_ind([10.0, 10.2, 9.9], [11.0, 11.4], equal_var=False).pvalue
     assert [c["agrees"] for c in d["claims"]] == [True, None, bool(mileage_p >= 0.05)]
@@ -274,7 +274,7 @@ def test_results_page_counts_claims_read_back_from_json(tmp_path):
 
 def test_a_single_experiment_updates_the_results_page_from_saved_runs(tmp_path):
     out = tmp_path / "r"
-    save_experiment(_hand_made_result(), out, figures=False)
+    save_experiment(_hand_made_result(), out)
     assert main(["experiment", "e1", "--trials", "2", "--out", str(out), "--results-md", str(tmp_path / "R.md"),
                  "--no-figures", "--no-progress", "--executor", "serial", "--max-steps", "30"]) == 0
     page = (tmp_path / "R.md").read_text()

@@ -8,7 +8,6 @@ from fgdwa.datasets.barn import (
     BARN_FIELD_SIZE,
     BarnDataset,
     BarnWorld,
-    barn_import_command,
     barn_score,
     convert_barn_worlds,
     fill_holes,
@@ -16,14 +15,12 @@ from fgdwa.datasets.barn import (
     load_barn,
     parse_world_selection,
     read_barn_world,
-    register_barn_commands,
 )
 
 __all__ = [
     "BARN_FIELD_SIZE",
     "BarnDataset",
     "BarnWorld",
-    "barn_import_command",
     "barn_score",
     "convert_barn_worlds",
     "fill_holes",
@@ -31,5 +28,4 @@ __all__ = [
     "load_barn",
     "parse_world_selection",
     "read_barn_world",
-    "register_barn_commands",
 ]

@@ -1,0 +1,61 @@
+"""The ``fgdwa barn`` command line: run the benchmark, and ``barn import`` to
+make its data file from the challenge's world files."""
+
+from __future__ import annotations
+
+from typing import Optional
+
+from fgdwa.barn_benchmark import barn_command
+from fgdwa.datasets.barn import convert_barn_worlds, describe_world_ids, load_barn
+
+
+def barn_import_command(world_dir: str, out: str, worlds: Optional[str] = None) -> int:
+    """``fgdwa barn import WORLD_DIR --out FILE [--worlds SPEC]``: convert the
+    challenge's world and path files to a barn.npz-format file. Returns the exit
+    status; errors are raised as FgdwaError (the CLI prints them)."""
+    convert_barn_worlds(world_dir, out, worlds)
+    dataset = load_barn(out)  # what was written must load
+    print(f"wrote {out}: {len(dataset)} BARN worlds ({describe_world_ids(dataset.world_ids)}) from {world_dir}")
+    return 0
+
+
+def register_barn_commands(subparsers) -> None:
+    """Add ``barn`` (run the benchmark) and ``barn import`` to an argparse
+    sub-parser set (``parser.add_subparsers()``); the handlers are stored as
+    ``func(args, argv) -> int``, as fgdwa.cli expects."""
+    barn = subparsers.add_parser(
+        "barn", help="run planners on BARN worlds (or: barn import)",
+        description="Run planners on BARN worlds and score them as the BARN challenge does; "
+                    "`fgdwa barn import` makes the data file.")
+    barn.add_argument("--data", default=None, metavar="FILE",
+                      help="the barn.npz file (or its directory); default: $FGDWA_BARN_DATA")
+    barn.add_argument("--worlds", default="all", metavar="SPEC",
+                      help="world ids: 'all' (default), '0,6,12', '0-49', '0-299:6'")
+    barn.add_argument("--planners", default="fgdwa,dwb", metavar="LIST",
+                      help="comma-separated planner presets (default fgdwa,dwb; the comparison set is "
+                           "dwa,gdwa,sgdwa,fgdwa,dwb)")
+    barn.add_argument("--map", dest="mapping", choices=["known", "scan"], default="known",
+                      help="known: the planners get the whole grid; scan: the robot maps what its lidar hits "
+                           "and replans on that (default known)")
+    barn.add_argument("--trials", type=int, default=1, help="runs per world and planner (default 1)")
+    barn.add_argument("--seed", type=int, default=0, help="base seed: trial i uses seed + i (lidar noise)")
+    barn.add_argument("--executor", choices=["local", "dask", "serial"], default="local",
+                      help="local: a process pool (default); dask: a dask.distributed cluster; serial: this process")
+    barn.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                      help="dask scheduler address (default: a LocalCluster on this machine)")
+    barn.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
+    barn.add_argument("--out", default="out/barn", metavar="DIR",
+                      help="directory for runs.csv, summary.json, failures.png (default out/barn)")
+    barn.add_argument("--no-figures", action="store_true", help="skip failures.png")
+    barn.add_argument("--no-progress", action="store_true", help="no progress bar")
+    barn.set_defaults(func=lambda args, *_: barn_command(args))
+    barn_sub = barn.add_subparsers(dest="barn_command", required=False, metavar="{import}")
+    imp = barn_sub.add_parser(
+        "import", help="convert the BARN challenge's world_<i>.world and path_<i>.npy files to a barn.npz file")
+    imp.add_argument("world_dir", metavar="WORLD_DIR",
+                     help="directory with world_<i>.world, and path_<i>.npy beside them or in path_files/ "
+                          "(the challenge's jackal_helper/worlds/BARN)")
+    imp.add_argument("--out", required=True, metavar="FILE", help="the barn.npz file to write")
+    imp.add_argument("--worlds", default=None, metavar="SPEC",
+                     help="world ids to convert: 'all' (default), '0,6,12', '0-49' or '0-299:6'")
+    imp.set_defaults(func=lambda args, *_: barn_import_command(args.world_dir, args.out, args.worlds))
