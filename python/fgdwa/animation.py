@@ -1,13 +1,9 @@
-"""An animated GIF of one episode: the robot's footprint, the path driven so far, the
-dynamic window's rollout fan and the chosen rollout, the lidar's hits, the
-detect window and the moving obstacles.
+"""An animated GIF of one episode: the robot's footprint as it is, the path driven
+so far, the rollouts the planner scored and the one it chose, the lidar's hits,
+the detect window and the moving obstacles.
 
-The episode records poses and commands, not every cycle's scan or samples, so
-each frame rebuilds them: the scan by scanning the trial's world again at the
-recorded pose with the episode's own noise seed (``run_episode`` seeds cycle k
-with ``seed * 1_000_003 + k``), the fan by rolling out a grid of the commands
-reachable from the recorded command, and the chosen rollout from the command
-the robot executed.
+Every frame replays what the episode recorded (``run_episode(record_cycles=True)``):
+nothing of the robot's side is simulated again.
 """
 
 from __future__ import annotations
@@ -22,12 +18,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.animation import PillowWriter  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
-from matplotlib.patches import Circle, Wedge  # noqa: E402
+from matplotlib.patches import Circle, Polygon, Wedge  # noqa: E402
 
-from fgdwa._core import DistanceField, LaserScanner, Pose2, dynamic_window, rollout, sample_window  # noqa: E402
+from fgdwa._core import FgdwaError  # noqa: E402
 from fgdwa.plotting import draw_world  # noqa: E402
 from fgdwa.scenario import Scenario, scenario_params, trial_variation  # noqa: E402
-from fgdwa.sim import SCAN_SEED_STRIDE, EpisodeResult  # noqa: E402
+from fgdwa.sim import EpisodeResult  # noqa: E402
 
 
 def frame_indices(steps: int, max_frames: int = 150) -> np.ndarray:
@@ -39,27 +35,24 @@ def frame_indices(steps: int, max_frames: int = 150) -> np.ndarray:
 
 
 def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, seed: int = 0,
-              max_frames: int = 150, dpi: int = 70, fps: int = 10, fan: tuple = (7, 9)) -> Path:
-    """Animate ``result``, the run of ``planner`` on ``scenario`` with ``seed``, into a GIF at ``path``.
-
-    ``fan`` = (velocities, turn rates) of the rollout grid drawn each frame."""
+              max_frames: int = 150, dpi: int = 70, fps: int = 10) -> Path:
+    """Animate ``result``, the run of ``planner`` on ``scenario`` with ``seed`` recorded
+    with ``record_cycles=True``, into a GIF at ``path``."""
+    if len(result.cycles) != result.steps:
+        raise FgdwaError("write_gif replays the recorded cycles: run the episode with record_cycles=True")
     _, params = scenario_params(scenario, planner)
-    _, world, lidar = trial_variation(scenario, seed)
-    true_grid = world.true_grid()
-    scanner = LaserScanner(lidar, DistanceField(true_grid)) if true_grid is not None else None
-    n_steps = params.n_steps
-    limits = scenario.limits
-    radius = scenario.footprint.radius
+    _, world, _ = trial_variation(scenario, seed)
+    footprint = scenario.footprint
+    radius = footprint.radius
     window = scenario.window
     steps = result.steps
     frames = frame_indices(steps, max_frames)
 
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     draw_world(ax, dataclasses.replace(world, discs=(), movers=()), 0.0)
-    if result.global_path is not None:
-        ax.plot(*result.global_path.T, "--", color="tab:red", linewidth=1.0)
-        if result.key_nodes is not None:
-            ax.plot(*result.key_nodes.T, "+", color="tab:blue", markersize=8, markeredgewidth=1.5)
+    # The global path in force at each frame (the navigator replans), from the recorded paths.
+    (global_line,) = ax.plot([], [], "--", color="tab:red", linewidth=1.0)
+    path_starts = [cycle for cycle, _ in result.paths]
     ax.plot(*np.asarray(scenario.goal)[:2], "*", color="tab:orange", markersize=13)
     ax.set_aspect("equal")
     if world.grid is not None:
@@ -76,7 +69,9 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
     sector = Wedge((0, 0), window.radius, 0, 0, facecolor="tab:cyan", edgecolor="tab:blue", alpha=0.18,
                    linestyle="--")
     ax.add_patch(sector)
-    body = Circle((0, 0), radius, facecolor="tab:blue", edgecolor="k", alpha=0.6, zorder=5)
+    outline = None if footprint.is_circle else np.asarray(footprint.vertices, dtype=float)
+    body = Circle((0, 0), radius, facecolor="tab:blue", edgecolor="k", alpha=0.6, zorder=5) if outline is None else \
+        Polygon(outline, closed=True, facecolor="tab:blue", edgecolor="k", alpha=0.6, zorder=5)
     ax.add_patch(body)
     (heading,) = ax.plot([], [], color="k", linewidth=1.2, zorder=6)
     discs = [Circle((0, 0), max(d.radius, 0.05), color="tab:purple", alpha=0.7, zorder=3)
@@ -86,42 +81,46 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
     label = ax.set_title("", fontsize=8)
     fig.tight_layout()
 
-    poses, commands, dt = result.poses, result.commands, params.dt
+    poses, dt = result.poses, params.dt
 
     def draw(k):
         x, y, theta = poses[k]
         t = k * dt
         driven.set_data(poses[: k + 1, 0], poses[: k + 1, 1])
-        body.center = (x, y)
+        if outline is None:
+            body.center = (x, y)
+        else:
+            c, s_ = np.cos(theta), np.sin(theta)
+            body.set_xy(outline @ np.array([[c, s_], [-s_, c]]) + (x, y))
         heading.set_data([x, x + 1.4 * radius * np.cos(theta)], [y, y + 1.4 * radius * np.sin(theta)])
         sector.set_center((x, y))
         sector.set_theta1(np.degrees(theta) - window.half_angle_deg)
         sector.set_theta2(np.degrees(theta) + window.half_angle_deg)
-        discs_now = world.discs_at(t)
-        for patch, disc in zip(discs, discs_now):
+        for patch, disc in zip(discs, world.discs_at(t)):
             patch.center = tuple(disc.center)
-        if scanner is not None:
-            scan = scanner.scan(Pose2(x, y, theta), discs_now, 0.0, seed=int(seed) * SCAN_SEED_STRIDE + k)
-            points = scan.hit_points
-            hits.set_offsets(points if len(points) else np.zeros((0, 2)))
-        current = tuple(commands[k - 1]) if k > 0 else (0.0, 0.0)
+        held = np.searchsorted(path_starts, k, side="right") - 1
+        points = np.asarray(result.paths[held][1]) if held >= 0 else np.zeros((0, 2))
+        global_line.set_data(points[:, 0], points[:, 1]) if len(points) else global_line.set_data([], [])
         if k < steps:
-            candidates = sample_window(dynamic_window(limits, current, dt), current, fan[0], fan[1])
-            fan_lines.set_segments([np.vstack([[x, y], rollout((x, y, theta), tuple(c), dt, n_steps)[:, :2]])
-                                    for c in candidates])
-            best = np.vstack([[x, y], rollout((x, y, theta), tuple(commands[k]), dt, n_steps)[:, :2]])
+            cycle = result.cycles[k]
+            hits.set_offsets(cycle.hits if len(cycle.hits) else np.zeros((0, 2)))
+            fan_lines.set_segments([np.vstack([[x, y], r[:, :2]]) for r in cycle.rollouts])
+            best = np.vstack([[x, y], cycle.chosen[:, :2]]) if len(cycle.chosen) else np.zeros((0, 2))
             chosen.set_data(best[:, 0], best[:, 1])
         else:
+            hits.set_offsets(np.zeros((0, 2)))
             fan_lines.set_segments([])
             chosen.set_data([], [])
         text = f"t = {t:5.2f} s  step {k}/{steps}"
+        if k < steps and result.cycles[k].mode not in ("Following", "Replanning"):
+            text += f"  {result.cycles[k].mode}"
         for name, values in (("beta", result.beta), ("delta", result.delta), ("I", result.density)):
             if k < len(values) and np.isfinite(values[k]):
                 text += f"  {name} {values[k]:.2f}"
         if k == steps:
             text += f"  {result.outcome}"
         label.set_text(text)
-        return [fan_lines, chosen, driven, hits, sector, body, heading, label, *discs]
+        return [fan_lines, chosen, driven, hits, sector, body, heading, label, global_line, *discs]
 
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)

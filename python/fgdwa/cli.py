@@ -59,6 +59,11 @@ def cmd_run(args: argparse.Namespace) -> int:
     planner = args.planner or scenario.planner
     options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
     tic = time.perf_counter()
+    if args.gif:
+        # The GIF replays the cycles; a wider fan of scored rollouts than the default 5 shows the choice.
+        from fgdwa._core import NavigatorParams
+
+        options.update(record_cycles=True, navigator=NavigatorParams(record_top_k=40))
     result = run_scenario(scenario, planner, args.seed, **options)
     wall = time.perf_counter() - tic
     print(f"scenario {scenario.name}: {scenario.description}")

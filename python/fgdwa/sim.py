@@ -47,6 +47,18 @@ SCAN_SEED_STRIDE = 1_000_003  # the lidar's seed in cycle k of a run with `seed`
 
 
 @dataclass
+class CycleTrace:
+    """What one cycle saw and scored, kept with ``run_episode(record_cycles=True)``
+    so that figures replay it instead of simulating it again."""
+
+    mode: str  # the navigator's mode (NavigatorMode name)
+    rollouts: np.ndarray  # (k, n_steps, 3) the best admissible rollouts the planner scored, best first
+    totals: np.ndarray  # (k,) their total scores
+    chosen: np.ndarray  # (n_steps, 3) the chosen rollout; (0, 3) when the planner chose none
+    hits: np.ndarray  # (n, 2) the lidar's hits this cycle; (0, 2) without a scan
+
+
+@dataclass
 class EpisodeResult:
     """The executed run and its SPEC 9 metrics."""
 
@@ -80,6 +92,7 @@ class EpisodeResult:
     mapping: str = "known"  # "known": the planners had the map; "scan": they had the robot's own map
     scan_map: Optional[np.ndarray] = None  # (rows, cols) the robot's map at the end, with mapping="scan"
     paths: list = field(default_factory=list)  # (cycle, (n, 2) points) per global path followed, in order
+    cycles: list = field(default_factory=list)  # CycleTrace per cycle, with record_cycles=True
 
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
@@ -182,6 +195,7 @@ def run_episode(
     danger_clearance: Optional[float] = None,
     mapping: str = "known",
     navigator: Optional[NavigatorParams] = None,
+    record_cycles: bool = False,
 ) -> EpisodeResult:
     """Drive from ``start`` (x, y, theta, at rest) to ``goal`` (x, y).
 
@@ -219,6 +233,10 @@ def run_episode(
     ``mapping="scan"`` hides the map: the navigator starts with an empty one of
     the same layout and marks what the lidar (``lidar``, default
     ``LidarParams()``) hits.
+
+    ``record_cycles`` keeps a :class:`CycleTrace` per cycle in ``cycles`` (the
+    scored rollouts, the chosen one, the scan's hits): what the GIF replays.
+    About 10 kB a cycle with a 541-beam lidar, so it is off for experiments.
     """
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
@@ -268,6 +286,7 @@ def run_episode(
     paths = []
     path_version = 0
     planned = False  # whether the local planner ran in any cycle
+    cycles = []
     outcome = "timeout"
     scan = None
     for k in range(max_steps):
@@ -293,6 +312,8 @@ def run_episode(
         betas.append(record.beta)
         deltas.append(record.delta)
         planned = planned or record.planned
+        if record_cycles:
+            cycles.append(_trace(record, scan, params.n_steps))
         modes.append(record.mode.name)
         statuses.append(record.status.name if record.planned else record.mode.name)
         targets.append(record.target)
@@ -362,7 +383,16 @@ def run_episode(
         mapping=mapping,
         scan_map=robot.map.cells if scanning else None,
         paths=paths,
+        cycles=cycles,
     )
+
+
+def _trace(record, scan, n_steps: int) -> CycleTrace:
+    best = record.best
+    rollouts = np.array([b.poses for b in best], dtype=float).reshape(len(best), n_steps, 3)
+    return CycleTrace(mode=record.mode.name, rollouts=rollouts, totals=np.array([b.total for b in best], dtype=float),
+                      chosen=np.asarray(record.chosen_rollout, dtype=float).reshape(-1, 3),
+                      hits=scan.hit_points if scan is not None else np.zeros((0, 2)))
 
 
 def _navigator_map(world: World, start, goal) -> OccupancyGrid:

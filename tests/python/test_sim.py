@@ -133,3 +133,27 @@ def test_weight_policy_needs_a_lidar():
     with pytest.raises(fgdwa.FgdwaError, match="dict"):
         run_episode(scenario.world, scenario.start, scenario.goal, weight_policy=Pair(), lidar=fgdwa.LidarParams(),
                     max_steps=5)
+
+
+def test_recorded_cycles_are_what_the_planner_scored_and_the_gif_replays_them(tmp_path):
+    from fgdwa.animation import write_gif
+
+    scenario = demo_scenario()
+    plain = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=30, lidar=fgdwa.LidarParams())
+    assert plain.cycles == []
+    with pytest.raises(fgdwa.FgdwaError, match="record_cycles"):
+        write_gif(plain, scenario, tmp_path / "x.gif", planner="dwa")
+    result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=30, lidar=fgdwa.LidarParams(),
+                         record_cycles=True, navigator=fgdwa.NavigatorParams(record_top_k=7))
+    assert len(result.cycles) == result.steps == 30
+    n_steps = fgdwa.PlannerParams().n_steps
+    for k, cycle in enumerate(result.cycles):
+        assert cycle.rollouts.shape == (7, n_steps, 3)
+        assert np.all(np.diff(cycle.totals) <= 0)  # best first
+        np.testing.assert_allclose(cycle.chosen, cycle.rollouts[0])
+        # The chosen rollout starts with the command the robot then executed.
+        after = fgdwa.step(tuple(result.poses[k]), tuple(result.commands[k]), 0.15)
+        np.testing.assert_allclose(cycle.chosen[0], (after.x, after.y, after.theta), atol=1e-9)
+        assert cycle.hits.ndim == 2 and cycle.hits.shape[1] == 2 and len(cycle.hits) > 0
+    gif = write_gif(result, scenario, tmp_path / "demo.gif", planner="dwa", max_frames=5)
+    assert gif.stat().st_size > 0
