@@ -18,10 +18,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.animation import PillowWriter  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
-from matplotlib.patches import Circle, Polygon, Wedge  # noqa: E402
+from matplotlib.patches import Circle, Wedge  # noqa: E402
 
 from fgdwa._core import FgdwaError  # noqa: E402
-from fgdwa.plotting import draw_world  # noqa: E402
+from fgdwa.plotting import draw_world, footprint_patch, placed_outline  # noqa: E402
 from fgdwa.scenario import Scenario, scenario_params, trial_variation  # noqa: E402
 from fgdwa.sim import EpisodeResult  # noqa: E402
 
@@ -69,9 +69,7 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
     sector = Wedge((0, 0), window.radius, 0, 0, facecolor="tab:cyan", edgecolor="tab:blue", alpha=0.18,
                    linestyle="--")
     ax.add_patch(sector)
-    outline = None if footprint.is_circle else np.asarray(footprint.vertices, dtype=float)
-    body = Circle((0, 0), radius, facecolor="tab:blue", edgecolor="k", alpha=0.6, zorder=5) if outline is None else \
-        Polygon(outline, closed=True, facecolor="tab:blue", edgecolor="k", alpha=0.6, zorder=5)
+    body = footprint_patch(footprint, result.poses[0], facecolor="tab:blue", edgecolor="k", alpha=0.6, zorder=5)
     ax.add_patch(body)
     (heading,) = ax.plot([], [], color="k", linewidth=1.2, zorder=6)
     discs = [Circle((0, 0), max(d.radius, 0.05), color="tab:purple", alpha=0.7, zorder=3)
@@ -87,11 +85,10 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
         x, y, theta = poses[k]
         t = k * dt
         driven.set_data(poses[: k + 1, 0], poses[: k + 1, 1])
-        if outline is None:
+        if footprint.is_circle:
             body.center = (x, y)
         else:
-            c, s_ = np.cos(theta), np.sin(theta)
-            body.set_xy(outline @ np.array([[c, s_], [-s_, c]]) + (x, y))
+            body.set_xy(placed_outline(footprint.vertices, poses[k]))
         heading.set_data([x, x + 1.4 * radius * np.cos(theta)], [y, y + 1.4 * radius * np.sin(theta)])
         sector.set_center((x, y))
         sector.set_theta1(np.degrees(theta) - window.half_angle_deg)

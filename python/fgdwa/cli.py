@@ -76,7 +76,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     png = out / f"{scenario.name}_{planner}.png"
     plot_episode(result, world, scenario.goal, png, title=f"{scenario.name}, {planner}, seed {args.seed}: "
                  f"{result.outcome}, {result.steps} steps, {result.mileage:.2f} m",
-                 footprint_radius=scenario.footprint.radius)
+                 footprint=scenario.footprint)
     print(f"figure: {png}")
     if args.gif:
         from fgdwa.animation import write_gif

@@ -12,6 +12,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
+from fgdwa._core import Footprint  # noqa: E402
 from fgdwa.sim import EpisodeResult  # noqa: E402
 from fgdwa.world import World  # noqa: E402
 
@@ -63,16 +64,32 @@ def draw_rollout_fan(ax, rollouts: np.ndarray, totals: np.ndarray, best_index: i
         ax.plot(*rollouts[best_index, :, :2].T, color="red", linewidth=2.0, label="chosen rollout")
 
 
+def placed_outline(vertices: np.ndarray, pose) -> np.ndarray:
+    """A polygon footprint's (n, 2) vertices (robot frame) placed at pose (x, y, theta)."""
+    x, y, theta = pose
+    c, s = np.cos(theta), np.sin(theta)
+    return np.asarray(vertices, dtype=float) @ np.array([[c, s], [-s, c]]) + (x, y)
+
+
+def footprint_patch(footprint, pose, **style):
+    """The footprint as it is, placed at pose: a circle or the polygon."""
+    if footprint.is_circle:
+        return plt.Circle(tuple(pose[:2]), footprint.radius, **style)
+    return plt.Polygon(placed_outline(footprint.vertices, pose), closed=True, **style)
+
+
 def plot_episode(result: EpisodeResult, world: World, goal, path: Optional[Path] = None,
-                 title: str = "", footprint_radius: float = 0.25):
-    """Map, executed path, start and goal, and the last cycle's rollout fan."""
+                 title: str = "", footprint=None):
+    """Map, executed path, start and goal, the footprint (default a 0.25 m circle) at
+    the end, and the rollouts the planner scored in its last cycle."""
     fig, ax = plt.subplots(figsize=(9, 6.5))
     draw_world(ax, world, result.sim_time)
     if result.global_path is not None:
         ax.plot(*result.global_path.T, color="tab:red", linewidth=1.0, linestyle="--", label="global path")
         ax.plot(*result.key_nodes.T, "+", color="tab:red", markersize=10, markeredgewidth=2, label="key nodes")
     ax.plot(*result.poses[:, :2].T, color="tab:blue", linewidth=1.8, label="executed path")
-    ax.add_patch(plt.Circle(result.poses[-1, :2], footprint_radius, fill=False, color="tab:blue"))
+    ax.add_patch(footprint_patch(footprint if footprint is not None else Footprint.circle(0.25), result.poses[-1],
+                                 fill=False, color="tab:blue"))
     if result.last_plan is not None:
         draw_rollout_fan(ax, result.last_rollouts, np.asarray(result.last_plan.total), result.last_plan.best_index)
     ax.plot(*result.poses[0, :2], "o", color="tab:green", markersize=9, label="start")

@@ -157,3 +157,17 @@ def test_recorded_cycles_are_what_the_planner_scored_and_the_gif_replays_them(tm
         assert cycle.hits.ndim == 2 and cycle.hits.shape[1] == 2 and len(cycle.hits) > 0
     gif = write_gif(result, scenario, tmp_path / "demo.gif", planner="dwa", max_frames=5)
     assert gif.stat().st_size > 0
+
+
+def test_the_footprint_is_drawn_as_it_is(tmp_path):
+    from fgdwa.plotting import footprint_patch, placed_outline, plot_episode
+
+    jackal = fgdwa.robot_preset("jackal").footprint
+    corners = placed_outline(jackal.vertices, (1.0, 2.0, np.pi / 2))
+    np.testing.assert_allclose(sorted(corners[:, 0]), [0.835, 0.835, 1.165, 1.165], atol=1e-9)
+    np.testing.assert_allclose(sorted(corners[:, 1]), [1.79, 1.79, 2.21, 2.21], atol=1e-9)
+    assert footprint_patch(jackal, (1.0, 2.0, 0.0)).get_xy().shape[1] == 2
+    scenario = demo_scenario()
+    result = run_episode(scenario.world, scenario.start, scenario.goal, footprint=jackal, max_steps=10)
+    plot_episode(result, scenario.world, scenario.goal, tmp_path / "jackal.png", footprint=jackal)
+    assert (tmp_path / "jackal.png").stat().st_size > 0
