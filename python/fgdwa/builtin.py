@@ -16,12 +16,18 @@ def _fill(cells: np.ndarray, resolution: float, x0: float, y0: float, x1: float,
     cells[r0:r1, c0:c1] = 1
 
 
+def _walled_room(rows: int, cols: int) -> np.ndarray:
+    """Cells of a room whose border cells are walls."""
+    cells = np.zeros((rows, cols), dtype=np.uint8)
+    cells[0, :] = cells[-1, :] = 1
+    cells[:, 0] = cells[:, -1] = 1
+    return cells
+
+
 def demo_scenario() -> Scenario:
     """A 12 m x 8 m room: blocks beside the straight line and a wall with a gap stand between start and goal."""
     resolution = 0.1
-    cells = np.zeros((80, 120), dtype=np.uint8)
-    cells[0, :] = cells[-1, :] = 1
-    cells[:, 0] = cells[:, -1] = 1
+    cells = _walled_room(80, 120)
     _fill(cells, resolution, 3.0, 4.4, 3.6, 6.6)  # block just above the straight line
     _fill(cells, resolution, 5.6, 0.0, 6.0, 2.9)  # broken wall, lower part
     _fill(cells, resolution, 5.6, 5.1, 6.0, 8.0)  # broken wall, upper part: the gap is at y 2.9-5.1
@@ -45,9 +51,7 @@ def c_trap_scenario() -> Scenario:
     Heading straight for the goal leads into the C's pocket, where every way
     forward is blocked: plain DWA is trapped. The global path runs around the C."""
     resolution = 0.1
-    cells = np.zeros((100, 140), dtype=np.uint8)
-    cells[0, :] = cells[-1, :] = 1
-    cells[:, 0] = cells[:, -1] = 1
+    cells = _walled_room(100, 140)
     _fill(cells, resolution, 8.0, 2.5, 8.5, 7.5)  # back of the C, facing the start
     _fill(cells, resolution, 5.0, 2.5, 8.5, 3.0)  # lower arm
     _fill(cells, resolution, 5.0, 7.0, 8.5, 7.5)  # upper arm
@@ -68,9 +72,7 @@ def hidden_obstacles_scenario() -> Scenario:
     shows them, so a planner that does not sense collides, and one that does
     must leave the path to get round them."""
     resolution = 0.1
-    cells = np.zeros((60, 140), dtype=np.uint8)
-    cells[0, :] = cells[-1, :] = 1
-    cells[:, 0] = cells[:, -1] = 1
+    cells = _walled_room(60, 140)
     hidden = np.zeros_like(cells)
     _fill(hidden, resolution, 5.0, 2.4, 5.6, 3.6)
     _fill(hidden, resolution, 9.0, 2.7, 9.4, 4.2)
@@ -90,9 +92,7 @@ def unknown_beside_path_scenario() -> Scenario:
     The robot passes close by each; a planner that weighs safety more where the
     detect window fills keeps a wider berth there and drives freely elsewhere."""
     resolution = 0.1
-    cells = np.zeros((60, 160), dtype=np.uint8)
-    cells[0, :] = cells[-1, :] = 1
-    cells[:, 0] = cells[:, -1] = 1
+    cells = _walled_room(60, 160)
     hidden = np.zeros_like(cells)
     _fill(hidden, resolution, 4.0, 3.5, 4.8, 4.5)  # above the path, 0.5 m from it
     _fill(hidden, resolution, 7.5, 1.6, 8.3, 2.5)  # below the path, 0.5 m from it
@@ -116,9 +116,7 @@ def dead_end_scenario() -> Scenario:
     stalls at the wall, gives up the stretch of path ahead, backs out, and the
     replanned path goes round the pocket."""
     resolution = 0.1
-    cells = np.zeros((100, 140), dtype=np.uint8)
-    cells[0, :] = cells[-1, :] = 1
-    cells[:, 0] = cells[:, -1] = 1
+    cells = _walled_room(100, 140)
     _fill(cells, resolution, 4.0, 3.8, 9.0, 4.0)  # lower side of the pocket
     _fill(cells, resolution, 4.0, 6.0, 9.0, 6.2)  # upper side
     hidden = np.zeros_like(cells)
@@ -140,9 +138,7 @@ def terrain_temptation_scenario() -> Scenario:
     enter; above, the way is clear but longer. A planner blind to terrain
     dodges onto the slope and falls."""
     resolution = 0.1
-    cells = np.zeros((80, 140), dtype=np.uint8)
-    cells[0, :] = cells[-1, :] = 1
-    cells[:, 0] = cells[:, -1] = 1
+    cells = _walled_room(80, 140)
     hidden = np.zeros_like(cells)
     _fill(hidden, resolution, 6.0, 3.5, 6.6, 4.8)  # on the path, reaching further up than down
     grades = np.zeros_like(cells)
