@@ -8,6 +8,7 @@ judges collisions with the exact FCL ``CollisionWorld``.
 from __future__ import annotations
 
 import time
+import dataclasses
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -176,28 +177,35 @@ def _turn_collides(truth: CollisionWorld, footprint: Footprint, before, heading:
         turned = min(abs(turn), turned + max(clearance / footprint.radius, TURN_RESOLUTION))
 
 
-def run_episode(
-    world: World,
-    start,
-    goal,
-    limits: Optional[RobotLimits] = None,
-    footprint: Optional[Footprint] = None,
-    params: Optional[PlannerParams] = None,
-    max_steps: int = 1000,
-    goal_tolerance: Optional[float] = None,
-    global_path=None,
-    global_method: str = "astar",
-    global_options: Optional[dict] = None,
-    lidar: Optional[LidarParams] = None,
-    window: Optional[DetectWindowParams] = None,
-    weight_policy=None,
-    seed: int = 0,
-    danger_clearance: Optional[float] = None,
-    mapping: str = "known",
-    navigator: Optional[NavigatorParams] = None,
-    record_cycles: bool = False,
-) -> EpisodeResult:
-    """Drive from ``start`` (x, y, theta, at rest) to ``goal`` (x, y).
+@dataclass(frozen=True)
+class EpisodeOptions:
+    """How ``run_episode`` runs an episode; every field is optional (see run_episode)."""
+
+    limits: Optional[RobotLimits] = None  # default RobotLimits()
+    footprint: Optional[Footprint] = None  # default a circle of 0.25 m
+    params: Optional[PlannerParams] = None  # default PlannerParams()
+    max_steps: int = 1000  # cycles before a timeout
+    goal_tolerance: Optional[float] = None  # m; default the planner's
+    global_path: Optional[object] = None  # a GlobalPath or (n, 2) points to follow
+    global_method: str = "astar"  # "astar" or "ompl:NAME", for a path planned before the run
+    global_options: Optional[dict] = None  # options of plan_global
+    lidar: Optional[LidarParams] = None  # None: no scans (known map only)
+    window: Optional[DetectWindowParams] = None  # the detect window of I
+    weight_policy: Optional[object] = None  # a WeightPolicy; needs a lidar
+    seed: int = 0  # the lidar's noise
+    danger_clearance: Optional[float] = None  # m; default footprint radius + 0.3 m
+    mapping: str = "known"  # or "scan"
+    navigator: Optional[NavigatorParams] = None  # default NavigatorParams()
+    record_cycles: bool = False  # keep a CycleTrace per cycle
+
+
+EPISODE_OPTIONS = tuple(f.name for f in dataclasses.fields(EpisodeOptions))
+
+
+def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = None, **settings) -> EpisodeResult:
+    """Drive from ``start`` (x, y, theta, at rest) to ``goal`` (x, y), run as
+    ``options`` say (an EpisodeOptions) with any of its fields given as keywords
+    on top (an unknown keyword is an error naming it).
 
     The robot side is one :class:`fgdwa.Navigator` (map, global path, local
     planner, recovery; ``navigator`` its NavigatorParams); this function is the
@@ -238,6 +246,14 @@ def run_episode(
     scored rollouts, the chosen one, the scan's hits): what the GIF replays.
     About 10 kB a cycle with a 541-beam lidar, so it is off for experiments.
     """
+    options = options if options is not None else EpisodeOptions()
+    unknown = sorted(set(settings) - set(EPISODE_OPTIONS))
+    if unknown:
+        raise FgdwaError(f"run_episode: unknown setting(s) {unknown} (known: {', '.join(EPISODE_OPTIONS)})")
+    options = dataclasses.replace(options, **settings)
+    limits, footprint, params, max_steps = options.limits, options.footprint, options.params, options.max_steps
+    goal_tolerance, global_path, lidar, window = options.goal_tolerance, options.global_path, options.lidar, options.window
+    weight_policy, seed, mapping, navigator = options.weight_policy, options.seed, options.mapping, options.navigator
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
     params = params if params is not None else PlannerParams()
@@ -271,8 +287,8 @@ def run_episode(
                       navigator=navigator_params, terrain=world.terrain, passing_factors=world.passing_factors,
                       window=window)
     robot.set_goal(goal_point)
-    given = _given_path(world, start_pose, goal_point, footprint, robot, global_path, global_method,
-                        global_options)
+    given = _given_path(world, start_pose, goal_point, footprint, robot, global_path, options.global_method,
+                        options.global_options)
     if given is not None:
         robot.set_global_path(given)
 
@@ -312,7 +328,7 @@ def run_episode(
         betas.append(record.beta)
         deltas.append(record.delta)
         planned = planned or record.planned
-        if record_cycles:
+        if options.record_cycles:
             cycles.append(_trace(record, scan, params.n_steps))
         modes.append(record.mode.name)
         statuses.append(record.status.name if record.planned else record.mode.name)
@@ -346,7 +362,8 @@ def run_episode(
     deviations = deviations[np.isfinite(deviations)]
     danger = float("nan")
     if path is not None and true_grid is not None:
-        threshold = footprint.radius + DANGER_MARGIN if danger_clearance is None else float(danger_clearance)
+        threshold = footprint.radius + DANGER_MARGIN if options.danger_clearance is None else \
+            float(options.danger_clearance)
         points = danger_points(path.points, true_field, threshold)
         danger = danger_point_clearance(poses_arr[:, :2], points, true_field)
     finite = clear_arr[np.isfinite(clear_arr)]

@@ -150,7 +150,7 @@ def test_peer_case_python_robotics_dwa():
     limits = fgdwa.RobotLimits(v_min=0.0, v_max=1.0, omega_max=np.radians(40), acc_v=0.2, acc_omega=np.radians(40))
     params = fgdwa.PlannerParams(dt=0.1, sim_time=3.0, normalization="minmax", goal_tolerance=1.0,
                                  critics=[("heading", 0.15), ("clearance", 1.0), ("velocity", 1.0)])
-    result = run_episode(world, (0.0, 0.0, np.pi / 8), (10.0, 10.0), limits, fgdwa.Footprint.circle(1.0), params,
-                         max_steps=1500)
+    result = run_episode(world, (0.0, 0.0, np.pi / 8), (10.0, 10.0), limits=limits,
+                         footprint=fgdwa.Footprint.circle(1.0), params=params, max_steps=1500)
     assert result.outcome == "success"
     assert result.min_clearance > 0.0

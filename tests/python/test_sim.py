@@ -171,3 +171,18 @@ def test_the_footprint_is_drawn_as_it_is(tmp_path):
     result = run_episode(scenario.world, scenario.start, scenario.goal, footprint=jackal, max_steps=10)
     plot_episode(result, scenario.world, scenario.goal, tmp_path / "jackal.png", footprint=jackal)
     assert (tmp_path / "jackal.png").stat().st_size > 0
+
+
+def test_episode_options_and_keyword_settings_agree():
+    from fgdwa.sim import EpisodeOptions
+
+    scenario = demo_scenario()
+    options = EpisodeOptions(max_steps=15, lidar=fgdwa.LidarParams(), seed=3)
+    by_object = run_episode(scenario.world, scenario.start, scenario.goal, options)
+    by_keywords = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=15, lidar=fgdwa.LidarParams(),
+                              seed=3)
+    np.testing.assert_array_equal(by_object.poses, by_keywords.poses)
+    # Keywords go on top of the object.
+    assert run_episode(scenario.world, scenario.start, scenario.goal, options, max_steps=5).steps == 5
+    with pytest.raises(fgdwa.FgdwaError, match="max_step"):
+        run_episode(scenario.world, scenario.start, scenario.goal, max_step=5)
