@@ -6,7 +6,8 @@ from __future__ import annotations
 from typing import Optional
 
 from fgdwa.barn_benchmark import barn_command
-from fgdwa.datasets.barn import convert_barn_worlds, describe_world_ids, load_barn
+from fgdwa.datasets.barn import describe_world_ids, load_barn
+from fgdwa.datasets.barn_convert import convert_barn_worlds
 
 
 def barn_import_command(world_dir: str, out: str, worlds: Optional[str] = None) -> int:

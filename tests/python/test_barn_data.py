@@ -215,7 +215,7 @@ def test_converter_reproduces_the_shared_file_for_its_three_worlds(world_dir, ra
 
 def test_hole_filling_matters_for_the_converted_worlds(world_dir, raw):
     # Worlds 150 and 299 have solid blocks whose inner cylinders were dropped.
-    from fgdwa.datasets.barn import _cylinder_positions
+    from fgdwa.datasets.barn_convert import _cylinder_positions
 
     k = int(np.flatnonzero(raw["world_ids"] == 299)[0])
     count = sum(1 for _, _, y in _cylinder_positions(world_dir / "world_299.world") if y >= 5.1)

@@ -9,13 +9,11 @@ from fgdwa.datasets.barn import (
     BarnDataset,
     BarnWorld,
     barn_score,
-    convert_barn_worlds,
-    fill_holes,
     find_barn_file,
     load_barn,
     parse_world_selection,
-    read_barn_world,
 )
+from fgdwa.datasets.barn_convert import convert_barn_worlds, fill_holes, read_barn_world
 
 __all__ = [
     "BARN_FIELD_SIZE",
