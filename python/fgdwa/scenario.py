@@ -26,8 +26,18 @@ from fgdwa._core import (
 from fgdwa.sim import EpisodeResult, run_episode
 from fgdwa.world import World
 
-PARAM_FIELDS = ("dt", "sim_time", "n_v", "n_omega", "normalization", "braking", "goal_tolerance", "heading_target",
-                "key_node_angle_deg", "key_node_radius", "key_node_sight", "safety_margin", "critics")
+def init_keywords(cls) -> tuple:
+    """The keyword arguments of a bound class's constructor, read from the signature
+    pybind11 writes into its docstring: the one place they are defined."""
+    doc = cls.__init__.__doc__ or ""
+    if "(" not in doc or ")" not in doc:
+        raise FgdwaError(f"{cls.__name__}: its constructor has no signature to read")
+    inside = doc[doc.index("(") + 1:doc.index(")")]
+    return tuple(part.split(":")[0].strip() for part in inside.split(", ")[1:])
+
+
+# PlannerParams' fields, each a keyword of its constructor and a readable attribute.
+PARAM_FIELDS = init_keywords(PlannerParams)
 
 
 @dataclass(frozen=True)

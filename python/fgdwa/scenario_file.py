@@ -31,6 +31,7 @@ from fgdwa._core import (
     Footprint,
     LidarParams,
     OccupancyGrid,
+    PlannerParams,
     RobotLimits,
     TerrainGrid,
     critic_names,
@@ -48,11 +49,8 @@ _TOP_KEYS = ("name", "description", "map", "terrain", "unknown_obstacles", "movi
              "goal_tolerance")
 _MAP_SOURCES = ("ascii", "png", "npy", "size")
 _LIMIT_FIELDS = ("v_min", "v_max", "omega_max", "acc_v", "acc_omega", "brake_v", "brake_omega")
-# Types of the planner overrides this module knows; a field added to PARAM_FIELDS later is passed through
-# and checked by PlannerParams alone.
-_OVERRIDE_TYPES = {"dt": float, "sim_time": float, "n_v": int, "n_omega": int, "normalization": str,
-                   "braking": str, "goal_tolerance": float, "heading_target": str, "key_node_angle_deg": float,
-                   "key_node_radius": float, "critics": list}
+# The type of each planner override, from the bound PlannerParams' defaults.
+_OVERRIDE_TYPES = {name: type(getattr(PlannerParams(), name)) for name in PARAM_FIELDS}
 
 
 def shipped_scenarios() -> list:
@@ -712,6 +710,8 @@ class _Reader:
                 item = self.integer(item, fkey, low=1)
             elif kind is str:
                 item = self.string(item, fkey)
+            elif kind is bool:
+                item = self.boolean(item, fkey)
             elif kind is list:
                 item = self.critics(item, fkey)
             self.core(fkey, raw[name], lambda: params_with(base, **{name: item}))

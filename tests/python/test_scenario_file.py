@@ -264,6 +264,8 @@ def test_bad_value(tmp_path):
     ("planner: {preset: fastest}\n", "planner.preset", "'fastest'"),
     ("planner: {overrides: {dt: -0.1}}\n", "planner.overrides.dt", "-0.1"),
     ("planner: {overrides: {normalization: median}}\n", "planner.overrides.normalization", "'median'"),
+    ("planner: {overrides: {safety_margin: -0.01}}\n", "planner.overrides.safety_margin", "-0.01"),
+    ("planner: {overrides: {key_node_sight: sometimes}}\n", "planner.overrides.key_node_sight", "'sometimes'"),
     ("planner: {overrides: {critics: [{name: speed, weight: 1}]}}\n", "planner.overrides.critics[0].name", "'speed'"),
     ("global_planner: {method: dijkstra}\n", "global_planner.method", "'dijkstra'"),
     ("global_planner: {options: {inflation_radius: -1}}\n", "global_planner.options.inflation_radius", "-1"),
@@ -391,3 +393,14 @@ def test_no_python_errors_leak():
                  "? [1, 2]\n: 3\n"]:
         with pytest.raises(fgdwa.FgdwaError):
             load_scenario(text)
+
+
+def test_planner_overrides_are_the_bound_params_fields(tmp_path):
+    from fgdwa.scenario import PARAM_FIELDS
+
+    assert {"safety_margin", "key_node_sight", "critics", "dt"} <= set(PARAM_FIELDS)
+    defaults = fgdwa.PlannerParams()
+    assert all(hasattr(defaults, name) for name in PARAM_FIELDS)
+    path = write(tmp_path, TINY + "planner: {preset: gdwa, overrides: {safety_margin: 0.05, key_node_sight: true}}\n")
+    scenario = load_scenario(path)
+    assert scenario.overrides == {"safety_margin": 0.05, "key_node_sight": True}
