@@ -14,9 +14,7 @@ using namespace fgdwa::py_convert;
 namespace {
 
 MapMode map_mode_from_string(const std::string& name) {
-  if (name == "known") return MapMode::Known;
-  if (name == "scan") return MapMode::Scan;
-  throw Error("mapping = '" + name + "': expected one of known, scan");
+  return enum_from_string("mapping", name, std::array{MapMode::Known, MapMode::Scan});
 }
 
 PassingFactors passing_factors_from(py::handle obj) {

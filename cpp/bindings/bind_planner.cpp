@@ -42,22 +42,16 @@ CriticConfig critic_from_python(py::handle item) {
 }
 
 BrakingModel braking_from_string(const std::string& name) {
-  if (name == "discrete") return BrakingModel::Discrete;
-  if (name == "continuous") return BrakingModel::Continuous;
-  throw Error("braking = '" + name + "': expected 'discrete' or 'continuous'");
+  return enum_from_string("braking", name, std::array{BrakingModel::Discrete, BrakingModel::Continuous});
 }
 
 HeadingTarget heading_target_from_string(const std::string& name) {
-  if (name == "goal") return HeadingTarget::Goal;
-  if (name == "key_nodes") return HeadingTarget::KeyNodes;
-  throw Error("heading_target = '" + name + "': expected 'goal' or 'key_nodes'");
+  return enum_from_string("heading_target", name, std::array{HeadingTarget::Goal, HeadingTarget::KeyNodes});
 }
 
 Normalization normalization_from_string(const std::string& name) {
-  if (name == "sum") return Normalization::Sum;
-  if (name == "minmax") return Normalization::MinMax;
-  if (name == "none") return Normalization::None;
-  throw Error("normalization = '" + name + "': expected 'sum', 'minmax' or 'none'");
+  return enum_from_string("normalization", name,
+                          std::array{Normalization::Sum, Normalization::MinMax, Normalization::None});
 }
 
 }  // namespace

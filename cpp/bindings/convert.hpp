@@ -4,6 +4,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,18 @@ py::array_t<double> poses_to_array(const Trajectory& poses);
 py::array_t<double> points_array(const std::vector<Vec2>& points);
 // (n, 2) commands (v, omega).
 py::array_t<double> twists_array(const std::vector<Twist>& twists);
+// The enum value whose to_string() is `name`, the names written once, in
+// to_string; otherwise an error naming `field` and the values it takes.
+template <typename Enum, std::size_t N>
+Enum enum_from_string(const std::string& field, const std::string& name, const std::array<Enum, N>& values) {
+  std::string known;
+  for (Enum value : values) {
+    if (name == to_string(value)) return value;
+    known += std::string(known.empty() ? "" : ", ") + "'" + to_string(value) + "'";
+  }
+  throw Error(field + " = '" + name + "': expected one of " + known);
+}
+
 // A CriticConfig from Python: numeric params go to `params`, words to `options`.
 CriticConfig critic_config(std::string name, double weight, const py::dict& params);
 

@@ -8,6 +8,7 @@ from typing import Optional
 from fgdwa.barn_benchmark import barn_command
 from fgdwa.datasets.barn import describe_world_ids, load_barn
 from fgdwa.datasets.barn_convert import convert_barn_worlds
+from fgdwa.mapping import MAPPING_MODES
 
 
 def barn_import_command(world_dir: str, out: str, worlds: Optional[str] = None) -> int:
@@ -35,7 +36,7 @@ def register_barn_commands(subparsers) -> None:
     barn.add_argument("--planners", default="fgdwa,dwb", metavar="LIST",
                       help="comma-separated planner presets (default fgdwa,dwb; the comparison set is "
                            "dwa,gdwa,sgdwa,fgdwa,dwb)")
-    barn.add_argument("--map", dest="mapping", choices=["known", "scan"], default="known",
+    barn.add_argument("--map", dest="mapping", choices=list(MAPPING_MODES), default="known",
                       help="known: the planners get the whole grid; scan: the robot maps what its lidar hits "
                            "and replans on that (default known)")
     barn.add_argument("--trials", type=int, default=1, help="runs per world and planner (default 1)")
