@@ -1,0 +1,168 @@
+"""Reading scenario YAML: a strict YAML loader, and the typed readers whose
+every error names the file, the key path and the offending value."""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+from pathlib import Path
+from typing import Any, Optional, Sequence, Union
+
+import numpy as np
+import yaml
+
+from fgdwa._core import FgdwaError
+
+
+class _StrictLoader(yaml.SafeLoader):
+    """SafeLoader that refuses duplicate keys and reads 1e-3 as a number (YAML 1.1 wants 1.0e-3)."""
+
+    def construct_mapping(self, node, deep=False):
+        if isinstance(node, yaml.MappingNode):
+            self.flatten_mapping(node)
+            seen = set()
+            for key_node, _ in node.value:
+                key = self.construct_object(key_node, deep=True)
+                try:
+                    duplicate = key in seen
+                except TypeError:
+                    raise yaml.constructor.ConstructorError(None, None, f"unhashable key {key!r}",
+                                                            key_node.start_mark) from None
+                if duplicate:
+                    raise yaml.constructor.ConstructorError(None, None, f"duplicate key {key!r}",
+                                                            key_node.start_mark)
+                seen.add(key)
+        return super().construct_mapping(node, deep=deep)
+
+
+_StrictLoader.add_implicit_resolver(
+    "tag:yaml.org,2002:float",
+    re.compile(r"""^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"""),
+    list("-+0123456789"))
+
+
+def parse_yaml(text: str, where: str) -> Any:
+    try:
+        return yaml.load(text, Loader=_StrictLoader)  # noqa: S506 (a SafeLoader subclass)
+    except yaml.MarkedYAMLError as error:
+        mark = error.problem_mark or error.context_mark
+        problem = error.problem or error.context or "malformed YAML"
+        if mark is None:
+            raise FgdwaError(f"{where}: malformed YAML: {problem}") from None
+        lines = text.splitlines()
+        line = lines[mark.line] if 0 <= mark.line < len(lines) else ""
+        raise FgdwaError(f"{where}: malformed YAML at line {mark.line + 1}, column {mark.column + 1}: {problem} "
+                         f"(line {mark.line + 1} = {line.strip()!r})") from None
+    except yaml.YAMLError as error:
+        raise FgdwaError(f"{where}: malformed YAML: {error}") from None
+
+
+def short_repr(value: Any, limit: int = 80) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
+
+def join_key(parent: str, child: Union[str, int]) -> str:
+    if isinstance(child, int):
+        return f"{parent}[{child}]"
+    return f"{parent}.{child}" if parent else str(child)
+
+
+def is_number(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+class ValueReader:
+    """Typed values from one YAML document; every error names ``where``, the key path and the value."""
+
+    def __init__(self, where: str, base_dir: Path, default_name: str = "scenario"):
+        self.where = where
+        self.base_dir = base_dir
+        self.default_name = default_name
+
+    def fail(self, key: str, value: Any, problem: str):
+        raise FgdwaError(f"{self.where}: {key} = {short_repr(value)}: {problem}")
+
+    def mapping(self, value: Any, key: str, allowed: Sequence[str], required: Sequence[str] = ()) -> dict:
+        if not isinstance(value, dict):
+            self.fail(key, value, f"expected a mapping with keys {', '.join(allowed)}")
+        for name, item in value.items():
+            if not isinstance(name, str) or name not in allowed:
+                close = difflib.get_close_matches(str(name), allowed, n=1)
+                hint = f"; did you mean {close[0]!r}?" if close else ""
+                self.fail(join_key(key, str(name)), item, f"unknown key (known here: {', '.join(allowed)}){hint}")
+        for name in required:
+            if value.get(name) is None:
+                self.fail(join_key(key, name), None, "required")
+        return value
+
+    def number(self, value: Any, key: str, low: Optional[float] = None, high: Optional[float] = None,
+               low_open: bool = False) -> float:
+        if not is_number(value):
+            self.fail(key, value, "expected a number")
+        value = float(value)
+        if not math.isfinite(value):
+            self.fail(key, value, "must be finite")
+        if low is not None and (value <= low if low_open else value < low):
+            self.fail(key, value, f"must be {'>' if low_open else '>='} {low:g}")
+        if high is not None and value > high:
+            self.fail(key, value, f"must be <= {high:g}")
+        return value
+
+    def integer(self, value: Any, key: str, low: Optional[int] = None) -> int:
+        if isinstance(value, bool) or not isinstance(value, int):
+            self.fail(key, value, "expected an integer")
+        if low is not None and value < low:
+            self.fail(key, value, f"must be >= {low}")
+        return int(value)
+
+    def boolean(self, value: Any, key: str) -> bool:
+        if not isinstance(value, bool):
+            self.fail(key, value, "expected true or false")
+        return value
+
+    def string(self, value: Any, key: str) -> str:
+        if not isinstance(value, str):
+            self.fail(key, value, "expected a string")
+        return value
+
+    def point(self, value: Any, key: str) -> tuple:
+        if isinstance(value, dict):
+            self.mapping(value, key, ("x", "y"), required=("x", "y"))
+            return self.number(value["x"], join_key(key, "x")), self.number(value["y"], join_key(key, "y"))
+        if not isinstance(value, (list, tuple)) or len(value) != 2:
+            self.fail(key, value, "expected [x, y] in metres")
+        return tuple(self.number(v, join_key(key, i)) for i, v in enumerate(value))
+
+    def points(self, value: Any, key: str, minimum: int) -> np.ndarray:
+        if not isinstance(value, (list, tuple)) or len(value) < minimum:
+            self.fail(key, value, f"expected a list of at least {minimum} [x, y] points")
+        return np.array([self.point(v, join_key(key, i)) for i, v in enumerate(value)], dtype=float)
+
+    def file(self, value: Any, key: str, suffixes: Sequence[str]) -> Path:
+        name = self.string(value, key)
+        path = Path(name).expanduser()
+        if not path.is_absolute():
+            path = self.base_dir / path
+        if not path.is_file():
+            self.fail(key, value, f"no such file ({path})")
+        if path.suffix.lower() not in suffixes:
+            self.fail(key, value, f"expected a {' or '.join(suffixes)} file")
+        return path
+
+    def core(self, key: str, value: Any, build):
+        """Calls a core constructor; its complaint is reported at ``key``."""
+        try:
+            return build()
+        except FgdwaError as error:
+            self.fail(key, value, str(error))
+        except (TypeError, ValueError, RuntimeError) as error:
+            self.fail(key, value, f"rejected ({error})".splitlines()[0])
+
+    def list_of(self, value: Any, key: str) -> list:
+        if value is None:
+            return []
+        if not isinstance(value, list):
+            self.fail(key, value, "expected a list")
+        return value
