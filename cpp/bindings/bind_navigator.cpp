@@ -45,7 +45,7 @@ void init_navigator(py::module_& m) {
                        double give_up_length, double keep_clear, double sensed_close_radius, double backup_distance,
                        double backup_speed,
                        double rotate_limit_deg, double wait_time, double wait_radius, int max_recoveries,
-                       double progress_reset, int record_top_k) {
+                       double progress_reset, int record_top_k, const OccupancyParams& occupancy) {
              NavigatorParams p;
              p.path_margin = path_margin;
              p.replan_period = replan_period;
@@ -62,6 +62,7 @@ void init_navigator(py::module_& m) {
              p.max_recoveries = max_recoveries;
              p.progress_reset = progress_reset;
              p.record_top_k = record_top_k;
+             p.occupancy = occupancy;
              p.validate();
              return p;
            }),
@@ -71,6 +72,7 @@ void init_navigator(py::module_& m) {
            py::arg("rotate_limit_deg") = 360.0,
            py::arg("wait_time") = 2.0, py::arg("wait_radius") = 1.5, py::arg("max_recoveries") = 6,
            py::arg("progress_reset") = 1.0, py::arg("record_top_k") = 5,
+           py::arg("occupancy") = OccupancyParams(),
            "path_margin: m kept beyond the footprint's radius by the global path where the map allows; "
            "replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance "
            "(m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after "
@@ -78,7 +80,8 @@ void init_navigator(py::module_& m) {
            "scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed "
            "(m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle "
            "within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; "
-           "record_top_k: best rollouts kept in each CycleRecord.")
+           "record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std "
+           "is at least the lidar's noise_std).")
       .def_readonly("path_margin", &NavigatorParams::path_margin)
       .def_readonly("replan_period", &NavigatorParams::replan_period)
       .def_readonly("stall_time", &NavigatorParams::stall_time)
@@ -94,6 +97,7 @@ void init_navigator(py::module_& m) {
       .def_readonly("max_recoveries", &NavigatorParams::max_recoveries)
       .def_readonly("progress_reset", &NavigatorParams::progress_reset)
       .def_readonly("record_top_k", &NavigatorParams::record_top_k)
+      .def_readonly("occupancy", &NavigatorParams::occupancy)
       .def("__repr__", [](const NavigatorParams& p) {
         std::ostringstream s;
         s << "NavigatorParams(stall_time=" << p.stall_time << ", backup_distance=" << p.backup_distance

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "fgdwa/error.hpp"
 
@@ -23,6 +24,12 @@ void Controller::set_map(std::shared_ptr<const DistanceField> map) {
   world_.set_field(map_);
 }
 
+void Controller::set_range_noise(double std) {
+  if (!(std::isfinite(std) && std >= 0.0))
+    throw Error("range noise = " + std::to_string(std) + ": must be a finite std >= 0 (m)");
+  range_noise_ = std;
+}
+
 const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,
                                    const std::vector<Disc>& discs) {
   using Clock = std::chrono::steady_clock;
@@ -33,11 +40,12 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
     // Hits on the map's obstacles or on known discs are explained; the rest are
     // obstacles the planner would not otherwise see.
     const double resolution = map_ ? map_->grid().resolution() : 0.1;
+    const double tolerance = 0.5 * resolution + 3.0 * range_noise_;
     unexplained_.clear();
     for (const Vec2& hit : scan->hit_points()) {
-      if (map_ && map_->distance(hit) <= 0.5 * resolution) continue;
+      if (map_ && map_->distance(hit) <= tolerance) continue;
       const bool on_disc = std::any_of(discs.begin(), discs.end(), [&](const Disc& d) {
-        return (hit - d.center).norm() <= d.radius + 0.5 * resolution;
+        return (hit - d.center).norm() <= d.radius + tolerance;
       });
       if (!on_disc) unexplained_.push_back(hit);
     }

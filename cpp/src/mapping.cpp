@@ -2,61 +2,205 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "fgdwa/error.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
 
-ScanMap::ScanMap(int rows, int cols, double resolution, Vec2 origin)
-    : grid_(rows, cols, resolution, origin,
+void OccupancyParams::validate() const {
+  detail::require_positive("occupancy hit", hit);
+  detail::require_finite("occupancy miss", miss);
+  if (miss >= 0.0) throw Error("occupancy miss = " + std::to_string(miss) + ": must be < 0 (a pass is evidence of free space)");
+  detail::require_finite("occupancy clamp_min", clamp_min);
+  detail::require_finite("occupancy clamp_max", clamp_max);
+  detail::require_finite("occupancy occupied", occupied);
+  detail::require_finite("occupancy free", free);
+  if (!(clamp_min <= free && free < occupied && occupied <= clamp_max))
+    throw Error("occupancy thresholds: need clamp_min <= free < occupied <= clamp_max, got " + std::to_string(clamp_min) +
+                " <= " + std::to_string(free) + " < " + std::to_string(occupied) + " <= " + std::to_string(clamp_max));
+  if (hit < occupied) throw Error("occupancy hit = " + std::to_string(hit) + ": must reach the occupied threshold (" +
+                                  std::to_string(occupied) + ") so that a first hit marks an unknown cell");
+  detail::require_non_negative("occupancy range_std", range_std);
+  if (std::isnan(clear_range) || clear_range < 0.0)
+    throw Error("occupancy clear_range = " + std::to_string(clear_range) + ": must be >= 0 (m, inf for no limit)");
+}
+
+const char* to_string(CellState state) {
+  switch (state) {
+    case CellState::Unknown: return "unknown";
+    case CellState::Free: return "free";
+    case CellState::Occupied: return "occupied";
+  }
+  return "?";
+}
+
+ScanMap::ScanMap(int rows, int cols, double resolution, Vec2 origin, const OccupancyParams& params)
+    : params_(params),
+      grid_(rows, cols, resolution, origin,
             std::vector<std::uint8_t>(static_cast<std::size_t>(std::max(rows, 0)) * std::max(cols, 0), 0)),
-      cells_(grid_.cells()) {}
+      cells_(grid_.cells()),
+      states_(cells_.size(), static_cast<std::uint8_t>(CellState::Unknown)),
+      log_odds_(cells_.size(), 0.0f),
+      passed_in_(cells_.size(), 0),
+      hit_in_(cells_.size(), 0) {
+  params_.validate();
+}
 
-ScanMap::ScanMap(const OccupancyGrid& like) : ScanMap(like.rows(), like.cols(), like.resolution(), like.origin()) {}
+ScanMap::ScanMap(const OccupancyGrid& like, const OccupancyParams& params)
+    : ScanMap(like.rows(), like.cols(), like.resolution(), like.origin(), params) {}
 
-bool ScanMap::mark_point(const Vec2& p) {
+bool ScanMap::cell_index(const Vec2& p, std::size_t& cell) const {
   int row = 0, col = 0;
   if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !grid_.cell_of(p, row, col)) return false;
-  std::uint8_t& cell = cells_[grid_.index(row, col)];
-  if (cell) return false;
-  cell = 1;
+  cell = grid_.index(row, col);
   return true;
 }
 
-std::size_t ScanMap::integrate(const Scan& scan) {
+int ScanMap::update(std::size_t cell, double delta) {
+  float& l = log_odds_[cell];
+  l = static_cast<float>(std::clamp(static_cast<double>(l) + delta, params_.clamp_min, params_.clamp_max));
+  std::uint8_t& state = states_[cell];
+  const auto before = static_cast<CellState>(state);
+  CellState after = before;
+  if (l >= params_.occupied) after = CellState::Occupied;
+  else if (l <= params_.free || before == CellState::Unknown) after = CellState::Free;
+  if (before == CellState::Unknown) ++known_;
+  state = static_cast<std::uint8_t>(after);
+  if (after == before) return 0;
+  if (after == CellState::Occupied) {
+    cells_[cell] = 1;
+    ++occupied_;
+    return 1;
+  }
+  if (before == CellState::Occupied) {
+    cells_[cell] = 0;
+    --occupied_;
+    return -1;
+  }
+  return 0;
+}
+
+// Amanatides and Woo's traversal in cell units, after clipping the segment to
+// the layout's box (Liang and Barsky).
+template <class Visit>
+void ScanMap::traverse(const Vec2& a, const Vec2& b, Visit&& visit) const {
+  const double inv = 1.0 / grid_.resolution();
+  double x0 = (a.x() - grid_.origin().x()) * inv, y0 = (a.y() - grid_.origin().y()) * inv;
+  const double dx = (b.x() - a.x()) * inv, dy = (b.y() - a.y()) * inv;
+  const double cols = grid_.cols(), rows = grid_.rows();
+  double t0 = 0.0, t1 = 1.0;
+  const auto clip = [&](double p, double q) {  // keeps the part where p t <= q
+    if (p == 0.0) return q >= 0.0;
+    const double r = q / p;
+    if (p < 0.0) t0 = std::max(t0, r);
+    else t1 = std::min(t1, r);
+    return t0 <= t1;
+  };
+  if (!(clip(-dx, x0) && clip(dx, cols - x0) && clip(-dy, y0) && clip(dy, rows - y0))) return;
+  const double sx = x0 + t0 * dx, sy = y0 + t0 * dy;
+  int col = std::min(static_cast<int>(std::floor(sx)), grid_.cols() - 1);
+  int row = std::min(static_cast<int>(std::floor(sy)), grid_.rows() - 1);
+  col = std::max(col, 0);
+  row = std::max(row, 0);
+  const int step_col = dx > 0 ? 1 : (dx < 0 ? -1 : 0), step_row = dy > 0 ? 1 : (dy < 0 ? -1 : 0);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // Parameter t (along a-b) of the next column and row boundary, and the t between boundaries.
+  double next_col = step_col > 0 ? (col + 1 - x0) / dx : (step_col < 0 ? (col - x0) / dx : kInf);
+  double next_row = step_row > 0 ? (row + 1 - y0) / dy : (step_row < 0 ? (row - y0) / dy : kInf);
+  const double delta_col = step_col ? std::abs(1.0 / dx) : kInf, delta_row = step_row ? std::abs(1.0 / dy) : kInf;
+  for (;;) {
+    visit(grid_.index(row, col));
+    if (std::min(next_col, next_row) >= t1) return;
+    if (next_col < next_row) {
+      col += step_col;
+      next_col += delta_col;
+    } else {
+      row += step_row;
+      next_row += delta_row;
+    }
+    if (!grid_.in_bounds(row, col)) return;
+  }
+}
+
+void ScanMap::next_scan() {
+  if (++scan_id_ == 0) {  // the stamps wrapped around: start them over
+    std::fill(passed_in_.begin(), passed_in_.end(), 0);
+    std::fill(hit_in_.begin(), hit_in_.end(), 0);
+    scan_id_ = 1;
+  }
+}
+
+std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit) {
+  if (keep_hit && keep_hit->size() != scan.ranges.size())
+    throw Error("ScanMap::integrate: keep_hit has " + std::to_string(keep_hit->size()) + " entries for a scan of " +
+                std::to_string(scan.ranges.size()) + " beams");
+  detail::require_finite("scan pose x", scan.pose.x);
+  detail::require_finite("scan pose y", scan.pose.y);
+  detail::require_finite("scan pose theta", scan.pose.theta);
+  next_scan();
   // A hit lies on an obstacle's surface, where rounding may put it in the free
-  // cell beside; a micrometre further along the beam it is inside. No more:
-  // a beam clipping a cell's corner stays in it for a short chord only.
-  const double push = 1e-6 * grid_.resolution();
-  std::size_t added = 0;
+  // cell beside; a micrometre further along the beam it is inside. Range
+  // noise pushes it further: two standard deviations.
+  const double depth = 2.0 * params_.range_std + 1e-6 * grid_.resolution();
+  const double short_of_hit = 3.0 * params_.range_std;
+  const Vec2 origin(scan.pose.x, scan.pose.y);
+  hit_cells_.clear();
+  std::size_t changed = 0;
+  // Hits first, so that a cell another beam passes this scan still counts as hit.
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     const double r = scan.ranges[i];
-    if (!std::isfinite(r)) continue;
+    if (!std::isfinite(r) || (keep_hit && !(*keep_hit)[i])) continue;
     const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-    added += mark_point(Vec2(scan.pose.x + (r + push) * std::cos(a), scan.pose.y + (r + push) * std::sin(a)));
+    std::size_t cell = 0;
+    if (cell_index(origin + (r + depth) * Vec2(std::cos(a), std::sin(a)), cell) && hit_in_[cell] != scan_id_) {
+      hit_in_[cell] = scan_id_;
+      hit_cells_.push_back(cell);
+    }
   }
-  return commit(added);
+  if (params_.clear) {
+    for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+      const double r = scan.ranges[i];
+      if (std::isnan(r)) continue;
+      const double reach = std::min(std::isfinite(r) ? r - short_of_hit : scan.max_range, params_.clear_range);
+      if (!(reach > 0.0)) continue;
+      const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+      traverse(origin, origin + reach * Vec2(std::cos(a), std::sin(a)), [&](std::size_t cell) {
+        if (passed_in_[cell] == scan_id_ || hit_in_[cell] == scan_id_) return;
+        passed_in_[cell] = scan_id_;
+        changed += update(cell, params_.miss) != 0;
+      });
+    }
+  }
+  for (const std::size_t cell : hit_cells_) changed += update(cell, params_.hit) != 0;
+  return commit(changed);
 }
 
 std::size_t ScanMap::mark(const std::vector<Vec2>& points) {
+  next_scan();
   std::size_t added = 0;
-  for (const Vec2& p : points) added += mark_point(p);
+  for (const Vec2& p : points) {
+    std::size_t cell = 0;
+    if (!cell_index(p, cell) || hit_in_[cell] == scan_id_) continue;
+    hit_in_[cell] = scan_id_;
+    added += update(cell, params_.hit) > 0;
+  }
   return commit(added);
 }
 
-std::size_t ScanMap::commit(std::size_t added) {
-  if (added) {
-    occupied_ += added;
+std::size_t ScanMap::commit(std::size_t changed) {
+  if (changed) {
     stale_ = true;
     grid_ = OccupancyGrid(grid_.rows(), grid_.cols(), grid_.resolution(), grid_.origin(), cells_);
   }
-  return added;
+  return changed;
 }
 
 std::shared_ptr<const DistanceField> ScanMap::field() {
   if (stale_) {
-    // After the first build, only the neighbourhoods of the new cells are recomputed.
+    // After the first build, only the neighbourhoods of the changed cells are recomputed.
     field_ = field_ ? std::make_shared<const DistanceField>(grid_, *field_) : std::make_shared<const DistanceField>(grid_);
     stale_ = false;
   }

@@ -55,6 +55,7 @@ void NavigatorParams::validate() const {
   detail::require_at_least("max_recoveries", max_recoveries, 0);
   detail::require_non_negative("progress_reset", progress_reset);
   detail::require_at_least("record_top_k", record_top_k, 0);
+  occupancy.validate();
 }
 
 namespace {
@@ -89,6 +90,7 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
       controller_(limits, footprint, planner, nullptr, std::move(policy), window) {
   params_.validate();
   lidar_.validate();
+  controller_.set_range_noise(lidar_.noise_std);
   if (terrain_ && !terrain_->matches(map))
     throw Error("terrain: its cells must lie exactly on the map's (same size, resolution and origin)");
   if (mode_ == MapMode::Known) {
@@ -96,7 +98,9 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
     known_field_ = std::make_shared<DistanceField>(map);
     controller_.set_map(known_field_);
   } else {
-    scan_map_ = std::make_unique<ScanMap>(map);
+    OccupancyParams occupancy = params_.occupancy;
+    occupancy.range_std = std::max(occupancy.range_std, lidar_.noise_std);
+    scan_map_ = std::make_unique<ScanMap>(map, occupancy);
   }
   if (terrain_) controller_.set_terrain(std::make_shared<TerrainGrid>(*terrain_), passing_factors);
   closed_.assign(static_cast<std::size_t>(map.rows()) * map.cols(), 0);

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -1202,40 +1202,95 @@ class Controller:
         """
         What the planner saw last cycle: the map's field, the sensed points and the discs.
         """
+class OccupancyParams:
+    """
+    The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).
+    """
+    def __init__(self, hit: typing.SupportsFloat | typing.SupportsIndex = 0.85, miss: typing.SupportsFloat | typing.SupportsIndex = -0.4, clamp_min: typing.SupportsFloat | typing.SupportsIndex = -2.0, clamp_max: typing.SupportsFloat | typing.SupportsIndex = 3.5, occupied: typing.SupportsFloat | typing.SupportsIndex = 0.5, free: typing.SupportsFloat | typing.SupportsIndex = -0.5, range_std: typing.SupportsFloat | typing.SupportsIndex = 0.0, clear_range: typing.SupportsFloat | typing.SupportsIndex = ..., clear: bool = True) -> None:
+        """
+        hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std short); clear_range (m): the farthest a beam clears; clear=False: hits only, nothing clears.
+        """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def clamp_max(self) -> float:
+        ...
+    @property
+    def clamp_min(self) -> float:
+        ...
+    @property
+    def clear(self) -> bool:
+        ...
+    @property
+    def clear_range(self) -> float:
+        ...
+    @property
+    def free(self) -> float:
+        ...
+    @property
+    def hit(self) -> float:
+        ...
+    @property
+    def miss(self) -> float:
+        ...
+    @property
+    def occupied(self) -> float:
+        ...
+    @property
+    def range_std(self) -> float:
+        ...
 class ScanMap:
     """
-    A map built from lidar hits: starts empty, each hit marks its cell occupied; cells are never cleared (static worlds).
+    A map built from lidar scans: log-odds per cell, beams ray-traced (the cells they pass are evidence of free space, the hit's cell of an obstacle), so spurious hits and moved objects fade.
     """
     @typing.overload
-    def __init__(self, like: OccupancyGrid) -> None:
+    def __init__(self, like: OccupancyGrid, params: OccupancyParams = ...) -> None:
         """
         An empty map with the layout of `like`.
         """
     @typing.overload
-    def __init__(self, rows: typing.SupportsInt | typing.SupportsIndex, cols: typing.SupportsInt | typing.SupportsIndex, resolution: typing.SupportsFloat | typing.SupportsIndex, origin: typing.Any) -> None:
+    def __init__(self, rows: typing.SupportsInt | typing.SupportsIndex, cols: typing.SupportsInt | typing.SupportsIndex, resolution: typing.SupportsFloat | typing.SupportsIndex, origin: typing.Any, params: OccupancyParams = ...) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def field(self) -> DistanceField:
         """
-        Its distance field, brought up to date (around the new cells only) on the first call after new cells.
+        Its distance field, brought up to date (incrementally) on the first call after changes.
         """
-    def integrate(self, scan: Scan) -> int:
+    def integrate(self, scan: Scan, keep_hit: typing.Any = None) -> int:
         """
-        Marks the cells of the scan's hits; returns how many cells became occupied.
+        One scan's evidence (each cell updated at most once, a hit winning over a pass); keep_hit (one flag per beam) says which hits to mark. Returns how many cells turned occupied or stopped being occupied.
         """
     def mark(self, points: typing.Any) -> int:
         """
-        Marks the cells holding (n, 2) points; returns how many became occupied.
+        One hit on each cell holding (n, 2) points; returns how many turned occupied.
         """
     @property
     def grid(self) -> OccupancyGrid:
         """
-        The map so far (a copy).
+        The map so far (a copy): occupied cells are obstacles.
+        """
+    @property
+    def known_count(self) -> int:
+        """
+        Cells observed at least once.
+        """
+    @property
+    def log_odds(self) -> numpy.typing.NDArray[numpy.float32]:
+        """
+        (rows, cols) float32 log-odds of each cell.
         """
     @property
     def occupied_count(self) -> int:
         ...
+    @property
+    def params(self) -> OccupancyParams:
+        ...
+    @property
+    def states(self) -> numpy.typing.NDArray[numpy.uint8]:
+        """
+        (rows, cols) uint8: 0 unknown, 1 free, 2 occupied.
+        """
 class NavigatorMode:
     """
     What the navigator is doing this cycle.
@@ -1352,9 +1407,9 @@ class NavigatorParams:
     """
     Replanning and recovery settings of a Navigator (SPEC 13).
     """
-    def __init__(self, path_margin: typing.SupportsFloat | typing.SupportsIndex = 0.3, replan_period: typing.SupportsFloat | typing.SupportsIndex = 0.5, stall_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, stall_distance: typing.SupportsFloat | typing.SupportsIndex = 0.1, give_up_length: typing.SupportsFloat | typing.SupportsIndex = 0.6, keep_clear: typing.SupportsFloat | typing.SupportsIndex = 0.3, sensed_close_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, backup_distance: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, rotate_limit_deg: typing.SupportsFloat | typing.SupportsIndex = 360.0, wait_time: typing.SupportsFloat | typing.SupportsIndex = 2.0, wait_radius: typing.SupportsFloat | typing.SupportsIndex = 1.5, max_recoveries: typing.SupportsInt | typing.SupportsIndex = 6, progress_reset: typing.SupportsFloat | typing.SupportsIndex = 1.0, record_top_k: typing.SupportsInt | typing.SupportsIndex = 5) -> None:
+    def __init__(self, path_margin: typing.SupportsFloat | typing.SupportsIndex = 0.3, replan_period: typing.SupportsFloat | typing.SupportsIndex = 0.5, stall_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, stall_distance: typing.SupportsFloat | typing.SupportsIndex = 0.1, give_up_length: typing.SupportsFloat | typing.SupportsIndex = 0.6, keep_clear: typing.SupportsFloat | typing.SupportsIndex = 0.3, sensed_close_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, backup_distance: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, rotate_limit_deg: typing.SupportsFloat | typing.SupportsIndex = 360.0, wait_time: typing.SupportsFloat | typing.SupportsIndex = 2.0, wait_radius: typing.SupportsFloat | typing.SupportsIndex = 1.5, max_recoveries: typing.SupportsInt | typing.SupportsIndex = 6, progress_reset: typing.SupportsFloat | typing.SupportsIndex = 1.0, record_top_k: typing.SupportsInt | typing.SupportsIndex = 5, occupancy: OccupancyParams = ...) -> None:
         """
-        path_margin: m kept beyond the footprint's radius by the global path where the map allows; replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance (m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed (m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; record_top_k: best rollouts kept in each CycleRecord.
+        path_margin: m kept beyond the footprint's radius by the global path where the map allows; replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance (m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed (m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std is at least the lidar's noise_std).
         """
     def __repr__(self) -> str:
         ...
@@ -1372,6 +1427,9 @@ class NavigatorParams:
         ...
     @property
     def max_recoveries(self) -> int:
+        ...
+    @property
+    def occupancy(self) -> OccupancyParams:
         ...
     @property
     def path_margin(self) -> float:

@@ -1,5 +1,6 @@
 // ScanMap and path_blocked: a map grown from scans sees what the lidar saw and
-// nothing else; a path is blocked only by obstacles ahead of the robot.
+// nothing else, forgets what went away, and is not fooled by range noise; a
+// path is blocked only by obstacles ahead of the robot.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -62,6 +63,129 @@ TEST(ScanMap, FieldIsRebuiltAfterNewCells) {
 TEST(ScanMap, BadLayoutIsAnError) {
   EXPECT_THROW(ScanMap(0, 10, 0.1, Vec2(0, 0)), Error);
   EXPECT_THROW(ScanMap(10, 10, -0.1, Vec2(0, 0)), Error);
+}
+
+Scan scan_of(const OccupancyGrid& truth, const Pose2& pose, double noise_std, std::uint64_t seed) {
+  LidarParams lidar;
+  lidar.noise_std = noise_std;
+  LaserScanner scanner(lidar, std::make_shared<const DistanceField>(truth));
+  std::mt19937_64 rng(seed);
+  Scan scan;
+  scanner.scan(pose, {}, 0.0, rng, scan);
+  return scan;
+}
+
+void expect_field_equals_fresh_build(const ScanMap& map, const DistanceField& field) {
+  const DistanceField fresh(map.grid());
+  ASSERT_EQ(field.cell_distances().size(), fresh.cell_distances().size());
+  for (std::size_t i = 0; i < fresh.cell_distances().size(); ++i)
+    ASSERT_EQ(field.cell_distances()[i], fresh.cell_distances()[i]) << "cell " << i;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> x(-0.5, 4.5), y(-0.5, 2.5);
+  for (int i = 0; i < 500; ++i) {
+    const Vec2 p(x(rng), y(rng));
+    ASSERT_EQ(field.distance(p), fresh.distance(p)) << p.transpose();
+  }
+}
+
+TEST(ScanMap, ARemovedObstacleClearsAndTheFieldFollows) {
+  // A wall farther back, so that the beams through the removed one end on something.
+  std::vector<std::uint8_t> back(20 * 40, 0);
+  for (int r = 0; r < 20; ++r) back[r * 40 + 38] = 1;
+  const OccupancyGrid behind(20, 40, 0.1, Vec2(0.0, 0.0), back);
+  std::vector<std::uint8_t> both = back;
+  for (int r = 5; r < 15; ++r) both[r * 40 + 25] = 1;
+  const OccupancyGrid before(20, 40, 0.1, Vec2(0.0, 0.0), both);
+
+  const Pose2 pose{1.0, 1.0, 0.0};
+  ScanMap map(before);
+  for (int k = 0; k < 3; ++k) map.integrate(scan_of(before, pose, 0.0, k));
+  for (int r = 5; r < 15; ++r) ASSERT_EQ(map.state(r, 25), CellState::Occupied) << "row " << r;
+  auto field = map.field();
+  EXPECT_NEAR(field->distance(Vec2(2.0, 1.0)), 0.5, 1e-12);
+
+  int scans = 0;
+  bool cleared = false;
+  while (!cleared && scans < 20) {
+    map.integrate(scan_of(behind, pose, 0.0, 100 + scans));
+    ++scans;
+    cleared = true;
+    for (int r = 6; r < 14; ++r) cleared = cleared && map.state(r, 25) == CellState::Free;
+  }
+  EXPECT_TRUE(cleared) << "the removed wall is still in the map after " << scans << " scans";
+  // Three hits put a cell at 3 x 0.85; each miss takes 0.4 off, down to the free threshold -0.5.
+  EXPECT_LE(scans, 9);
+  const auto after = map.field();
+  EXPECT_NE(after, field);
+  expect_field_equals_fresh_build(map, *after);
+  EXPECT_GT(after->distance(Vec2(2.0, 1.0)), 1.5);
+}
+
+TEST(ScanMap, RangeNoiseDoesNotNarrowTheFreeSide) {
+  // 3 cm noise: half the readings fall short of the wall's face, in the free
+  // cell before it. That cell must stay free, or every gap narrows by a cell.
+  const OccupancyGrid truth = wall_grid();
+  OccupancyParams params;
+  params.range_std = 0.03;
+  ScanMap map(truth, params);
+  for (int k = 0; k < 60; ++k) {
+    const Pose2 pose{0.8 + 0.01 * k, 0.6 + 0.013 * k, 0.1 * std::sin(0.3 * k)};
+    map.integrate(scan_of(truth, pose, 0.03, 1000 + k));
+  }
+  for (int r = 0; r < truth.rows(); ++r)
+    for (int c = 0; c < 25; ++c) EXPECT_NE(map.state(r, c), CellState::Occupied) << "cell " << r << ", " << c;
+  for (int r = 5; r < 15; ++r) EXPECT_EQ(map.state(r, 25), CellState::Occupied) << "row " << r;
+  expect_field_equals_fresh_build(map, *map.field());
+}
+
+TEST(ScanMap, HitsOnlyWithoutClearingAndUnmarkedBeamsStillClear) {
+  const OccupancyGrid truth = wall_grid();
+  const Scan scan = scan_of(truth, Pose2{1.0, 1.0, 0.0}, 0.0, 1);
+  OccupancyParams hits_only;
+  hits_only.clear = false;
+  ScanMap static_map(truth, hits_only);
+  static_map.integrate(scan);
+  EXPECT_EQ(static_map.state(10, 15), CellState::Unknown);  // passed by beams, but nothing clears
+  EXPECT_EQ(static_map.state(10, 25), CellState::Occupied);
+
+  ScanMap map(truth);
+  const std::vector<std::uint8_t> none(scan.ranges.size(), 0);
+  EXPECT_EQ(map.integrate(scan, &none), 0u);
+  EXPECT_EQ(map.occupied_count(), 0u);
+  EXPECT_EQ(map.state(10, 15), CellState::Free);
+  EXPECT_GT(map.known_count(), 100u);
+  const std::vector<std::uint8_t> wrong_size(3, 1);
+  EXPECT_THROW(map.integrate(scan, &wrong_size), Error);
+}
+
+TEST(ScanMap, ABeamWithNoReturnClearsUpToItsRange) {
+  ScanMap map(20, 40, 0.1, Vec2(0.0, 0.0));
+  EXPECT_EQ(map.mark({Vec2(3.05, 1.05)}), 1u);
+  Scan scan;
+  scan.pose = Pose2{1.0, 1.0, 0.0};
+  scan.angle_min = 0.0;
+  scan.angle_increment = 0.0;
+  scan.max_range = 10.0;
+  scan.ranges = {std::numeric_limits<double>::infinity()};
+  for (int k = 0; k < 4; ++k) map.integrate(scan);
+  EXPECT_EQ(map.state(10, 30), CellState::Free);
+  EXPECT_EQ(map.state(10, 39), CellState::Free);  // the beam is clipped to the layout
+  EXPECT_EQ(map.state(11, 30), CellState::Unknown);
+}
+
+TEST(OccupancyParams, BadValuesAreErrors) {
+  const auto bad = [](auto change) {
+    OccupancyParams p;
+    change(p);
+    return ScanMap(4, 4, 0.1, Vec2(0, 0), p);
+  };
+  EXPECT_THROW(bad([](OccupancyParams& p) { p.hit = -1.0; }), Error);
+  EXPECT_THROW(bad([](OccupancyParams& p) { p.miss = 0.1; }), Error);
+  EXPECT_THROW(bad([](OccupancyParams& p) { p.free = 1.0; }), Error);
+  EXPECT_THROW(bad([](OccupancyParams& p) { p.clamp_max = 0.1; }), Error);
+  EXPECT_THROW(bad([](OccupancyParams& p) { p.range_std = std::nan(""); }), Error);
+  EXPECT_THROW(bad([](OccupancyParams& p) { p.clear_range = -1.0; }), Error);
+  EXPECT_THROW(bad([](OccupancyParams& p) { p.hit = 0.2; }), Error);  // below the occupied threshold
 }
 
 TEST(PathBlocked, OnlyObstaclesAheadOfTheRobotBlock) {

@@ -39,6 +39,9 @@ class Controller {
   // cells; the next step() reads it.
   void set_map(std::shared_ptr<const DistanceField> map);
   const std::shared_ptr<const DistanceField>& map() const { return map_; }
+  // The lidar's range noise (m, std): a hit within half a cell plus three
+  // standard deviations of the map's obstacles is explained by them.
+  void set_range_noise(double std);
   // Slope terrain for the planner (LocalPlanner::set_terrain).
   void set_terrain(std::shared_ptr<const TerrainGrid> terrain, const PassingFactors& factors = kDefaultPassingFactors) {
     planner_.set_terrain(std::move(terrain), factors);
@@ -60,6 +63,7 @@ class Controller {
   std::shared_ptr<const DistanceField> map_;
   std::shared_ptr<const WeightPolicy> policy_;
   DetectWindowParams window_;
+  double range_noise_ = 0.0;
   FieldClearance world_;
   CycleReport report_;
   std::vector<Vec2> unexplained_;

@@ -1,15 +1,22 @@
 #pragma once
-// A map the robot builds as it goes: it starts empty and every lidar hit marks
-// its cell occupied. This is how a robot without a prior map (BARN's setting)
-// gives its global planner and its local planner the obstacles it has seen so
-// far, including those now behind it or hidden by nearer ones.
+// A map the robot builds as it goes (OctoMap's occupancy update, costmap_2d's
+// marking and clearing): every cell holds the log-odds of being occupied. Each
+// beam is ray-traced from the sensor to its hit: the cells it passes are
+// evidence of free space, the hit's cell of an obstacle, and a beam with no
+// return clears only. A spurious hit, or an object that moved away, fades
+// after a few scans see through it; a real surface is hit scan after scan.
+//
+// Range noise is allowed for: a hit is placed two standard deviations beyond
+// the reading (a reading short of a surface would otherwise mark the free cell
+// in front of it) and a beam clears only up to three short of it.
 //
 // Lifecycle: construct with the layout of the map to build; integrate() every
-// scan; field() when the planners need distances (updated around new cells only).
-// Cells are never cleared: the map suits static worlds.
+// scan; field() when the planners need distances (rebuilt incrementally after
+// cells change, whether they turned occupied or free).
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -20,34 +27,76 @@
 
 namespace fgdwa {
 
+// The log-odds update of each cell (defaults: OctoMap's probabilities).
+struct OccupancyParams {
+  double hit = 0.85;         // added to the cell of a hit (p = 0.7)
+  double miss = -0.4;        // added to each cell a beam passes (p = 0.4)
+  double clamp_min = -2.0;   // lowest log-odds a cell holds (p = 0.12): a free cell turns after 3 hits
+  double clamp_max = 3.5;    // highest (p = 0.97): an occupied cell turns free after 10 misses
+  double occupied = 0.5;     // a cell at or above this turns occupied
+  double free = -0.5;        // at or below this an occupied cell turns free (between them it keeps its state)
+  double range_std = 0.0;    // m, the lidar's range noise: hits placed 2 std beyond, clearing stops 3 std short
+  double clear_range = std::numeric_limits<double>::infinity();  // m, the farthest a beam clears
+  bool clear = true;         // false: hits only and nothing clears (static worlds; the map of earlier versions)
+  void validate() const;
+};
+
+enum class CellState : std::uint8_t { Unknown, Free, Occupied };
+const char* to_string(CellState state);
+
 class ScanMap {
  public:
-  ScanMap(int rows, int cols, double resolution, Vec2 origin);
+  ScanMap(int rows, int cols, double resolution, Vec2 origin, const OccupancyParams& params = {});
   // An empty map with the layout of `like`.
-  explicit ScanMap(const OccupancyGrid& like);
+  explicit ScanMap(const OccupancyGrid& like, const OccupancyParams& params = {});
 
-  // Marks the cells of the scan's hits (hits outside the layout are dropped);
-  // returns how many cells became occupied.
-  std::size_t integrate(const Scan& scan);
-  // Marks the cells holding these points; returns how many became occupied.
+  // One scan's evidence: each cell is updated at most once per scan, a hit
+  // winning over a pass. `keep_hit` (one entry per beam, or null for all)
+  // says which beams' hits to mark: a beam whose hit belongs to a moving
+  // obstacle still clears the cells before it. Hits outside the layout are
+  // dropped, and beams are clipped to it. Returns how many cells turned
+  // occupied or stopped being occupied.
+  std::size_t integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit = nullptr);
+  // One hit on each cell holding these points; returns how many cells turned occupied.
   std::size_t mark(const std::vector<Vec2>& points);
 
-  // The map so far.
+  // The map so far: occupied cells are obstacles, unknown and free cells are not.
   const OccupancyGrid& grid() const { return grid_; }
-  // Its distance field, brought up to date on the first call after new cells
-  // (only the cells near them are recomputed).
+  // Its distance field, brought up to date on the first call after changes
+  // (incrementally: equal to a fresh build of grid()).
   std::shared_ptr<const DistanceField> field();
-  // Cells marked since construction.
   std::size_t occupied_count() const { return occupied_; }
+  // Cells observed at least once.
+  std::size_t known_count() const { return known_; }
+  const OccupancyParams& params() const { return params_; }
+  CellState state(int row, int col) const { return static_cast<CellState>(states_[grid_.index(row, col)]); }
+  float log_odds(int row, int col) const { return log_odds_[grid_.index(row, col)]; }
+  // Row-major, one CellState per cell.
+  const std::vector<std::uint8_t>& states() const { return states_; }
+  const std::vector<float>& log_odds() const { return log_odds_; }
 
  private:
-  bool mark_point(const Vec2& p);
-  // Publishes the marked cells in grid(); returns `added`.
-  std::size_t commit(std::size_t added);
+  // Adds `delta` to the cell's log-odds; returns whether it turned occupied (+1), stopped being occupied (-1) or neither.
+  int update(std::size_t cell, double delta);
+  // Calls visit(cell) for the cells the segment a-b crosses, in order, clipped to the layout.
+  template <class Visit>
+  void traverse(const Vec2& a, const Vec2& b, Visit&& visit) const;
+  bool cell_index(const Vec2& p, std::size_t& cell) const;
+  // Starts a new update round: each cell is updated at most once in it.
+  void next_scan();
+  // Publishes the changed cells in grid(); returns `changed`.
+  std::size_t commit(std::size_t changed);
 
+  OccupancyParams params_;
   OccupancyGrid grid_;
   std::vector<std::uint8_t> cells_;
-  std::size_t occupied_ = 0;
+  std::vector<std::uint8_t> states_;
+  std::vector<float> log_odds_;
+  // Per cell, the last scan that passed it and the last that hit it: one update per scan.
+  std::vector<std::uint32_t> passed_in_, hit_in_;
+  std::uint32_t scan_id_ = 0;
+  std::vector<std::size_t> hit_cells_;
+  std::size_t occupied_ = 0, known_ = 0;
   bool stale_ = true;
   std::shared_ptr<const DistanceField> field_;
 };

@@ -74,6 +74,8 @@ struct NavigatorParams {
   int max_recoveries = 6;         // recoveries in a row without progress before Failed
   double progress_reset = 1.0;    // m from where the last recovery began that counts as progress
   int record_top_k = 5;           // best-scored rollouts kept in each CycleRecord
+  // The map built from scans (MapMode::Scan); its range_std is at least the lidar's noise_std.
+  OccupancyParams occupancy;
   void validate() const;
 };
 
@@ -115,7 +117,7 @@ struct CycleRecord {
   int path_version = 0;            // bumped on every new global path
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reject reason
   std::vector<int> critic_vetoes;  // per critic of the planner (PlanResult::critic_names): samples it vetoed
-  std::size_t new_cells = 0;       // map cells this scan marked occupied
+  std::size_t new_cells = 0;       // map cells this scan turned occupied or free
   int recoveries = 0;              // recoveries in a row without progress, this one included
   StageTimes times;
 };
@@ -199,7 +201,7 @@ class Navigator {
   Vec2 goal_ = Vec2::Zero();
   std::shared_ptr<const GlobalPath> path_;
   int path_version_ = 0;
-  int map_version_ = 0;  // bumped whenever scans add cells
+  int map_version_ = 0;  // bumped whenever scans change cells
   // The last blocked-path check that found the path clear: of which map and
   // path, and from which arc length (m) on.
   struct ClearCheck {
