@@ -17,7 +17,7 @@ void init_mapping(py::module_& m) {
   py::class_<OccupancyParams>(m, "OccupancyParams",
                               "The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).")
       .def(py::init([](double hit, double miss, double clamp_min, double clamp_max, double occupied, double free,
-                       double range_std, double clear_range, bool clear) {
+                       double range_std, double clear_range, double hit_share, bool clear) {
              OccupancyParams p;
              p.hit = hit;
              p.miss = miss;
@@ -27,17 +27,20 @@ void init_mapping(py::module_& m) {
              p.free = free;
              p.range_std = range_std;
              p.clear_range = clear_range;
+             p.hit_share = hit_share;
              p.clear = clear;
              p.validate();
              return p;
            }),
            py::arg("hit") = 0.85, py::arg("miss") = -0.4, py::arg("clamp_min") = -2.0, py::arg("clamp_max") = 3.5,
            py::arg("occupied") = 0.5, py::arg("free") = -0.5, py::arg("range_std") = 0.0,
-           py::arg("clear_range") = std::numeric_limits<double>::infinity(), py::arg("clear") = true,
+           py::arg("clear_range") = std::numeric_limits<double>::infinity(), py::arg("hit_share") = 0.2,
+           py::arg("clear") = true,
            "hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the "
            "range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; "
            "range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std "
-           "short); clear_range (m): the farthest a beam clears; clear=False: hits only, nothing clears.")
+           "short); clear_range (m): the farthest a beam clears; hit_share: a cell some beams of a scan end in and "
+           "others pass is hit when at least this share end in it; clear=False: hits only, nothing clears.")
       .def_readonly("hit", &OccupancyParams::hit)
       .def_readonly("miss", &OccupancyParams::miss)
       .def_readonly("clamp_min", &OccupancyParams::clamp_min)
@@ -46,6 +49,7 @@ void init_mapping(py::module_& m) {
       .def_readonly("free", &OccupancyParams::free)
       .def_readonly("range_std", &OccupancyParams::range_std)
       .def_readonly("clear_range", &OccupancyParams::clear_range)
+      .def_readonly("hit_share", &OccupancyParams::hit_share)
       .def_readonly("clear", &OccupancyParams::clear)
       .def("__repr__", [](const OccupancyParams& p) {
         std::ostringstream s;
@@ -76,7 +80,7 @@ void init_mapping(py::module_& m) {
             return map.integrate(scan, &flags);
           },
           py::arg("scan"), py::arg("keep_hit") = py::none(),
-          "One scan's evidence (each cell updated at most once, a hit winning over a pass); keep_hit (one flag per "
+          "One scan's evidence (each cell updated once, by the vote of the beams ending and passing in it); keep_hit (one flag per "
           "beam) says which hits to mark. Returns how many cells turned occupied or stopped being occupied.")
       .def(
           "mark", [](ScanMap& map, py::handle points) { return map.mark(to_points(points, "points")); },

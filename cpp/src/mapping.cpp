@@ -24,6 +24,8 @@ void OccupancyParams::validate() const {
   if (hit < occupied) throw Error("occupancy hit = " + std::to_string(hit) + ": must reach the occupied threshold (" +
                                   std::to_string(occupied) + ") so that a first hit marks an unknown cell");
   detail::require_non_negative("occupancy range_std", range_std);
+  if (!(hit_share > 0.0 && hit_share <= 1.0))
+    throw Error("occupancy hit_share = " + std::to_string(hit_share) + ": must be in (0, 1]");
   if (std::isnan(clear_range) || clear_range < 0.0)
     throw Error("occupancy clear_range = " + std::to_string(clear_range) + ": must be >= 0 (m, inf for no limit)");
 }
@@ -44,8 +46,7 @@ ScanMap::ScanMap(int rows, int cols, double resolution, Vec2 origin, const Occup
       cells_(grid_.cells()),
       states_(cells_.size(), static_cast<std::uint8_t>(CellState::Unknown)),
       log_odds_(cells_.size(), 0.0f),
-      passed_in_(cells_.size(), 0),
-      hit_in_(cells_.size(), 0) {
+      tallies_(cells_.size()) {
   params_.validate();
 }
 
@@ -127,10 +128,19 @@ void ScanMap::traverse(const Vec2& a, const Vec2& b, Visit&& visit) const {
 
 void ScanMap::next_scan() {
   if (++scan_id_ == 0) {  // the stamps wrapped around: start them over
-    std::fill(passed_in_.begin(), passed_in_.end(), 0);
-    std::fill(hit_in_.begin(), hit_in_.end(), 0);
+    std::fill(tallies_.begin(), tallies_.end(), Tally{});
     scan_id_ = 1;
   }
+  touched_.clear();
+}
+
+ScanMap::Tally& ScanMap::tally(std::size_t cell) {
+  Tally& t = tallies_[cell];
+  if (t.scan != scan_id_) {
+    t = Tally{scan_id_, 0, 0};
+    touched_.push_back(cell);
+  }
+  return t;
 }
 
 std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit) {
@@ -147,46 +157,39 @@ std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>
   const double depth = 2.0 * params_.range_std + 1e-6 * grid_.resolution();
   const double short_of_hit = 3.0 * params_.range_std;
   const Vec2 origin(scan.pose.x, scan.pose.y);
-  hit_cells_.clear();
-  std::size_t changed = 0;
-  // Hits first, so that a cell another beam passes this scan still counts as hit.
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     const double r = scan.ranges[i];
-    if (!std::isfinite(r) || (keep_hit && !(*keep_hit)[i])) continue;
+    if (std::isnan(r)) continue;
     const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-    std::size_t cell = 0;
-    if (cell_index(origin + (r + depth) * Vec2(std::cos(a), std::sin(a)), cell) && hit_in_[cell] != scan_id_) {
-      hit_in_[cell] = scan_id_;
-      hit_cells_.push_back(cell);
-    }
+    const Vec2 direction(std::cos(a), std::sin(a));
+    std::size_t hit = kNone;
+    if (std::isfinite(r) && (!keep_hit || (*keep_hit)[i]) && cell_index(origin + (r + depth) * direction, hit))
+      ++tally(hit).hits;
+    if (!params_.clear) continue;
+    const double reach = std::min(std::isfinite(r) ? r - short_of_hit : scan.max_range, params_.clear_range);
+    if (!(reach > 0.0)) continue;
+    traverse(origin, origin + reach * direction, [&](std::size_t cell) {
+      if (cell != hit) ++tally(cell).passes;
+    });
   }
-  if (params_.clear) {
-    for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-      const double r = scan.ranges[i];
-      if (std::isnan(r)) continue;
-      const double reach = std::min(std::isfinite(r) ? r - short_of_hit : scan.max_range, params_.clear_range);
-      if (!(reach > 0.0)) continue;
-      const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-      traverse(origin, origin + reach * Vec2(std::cos(a), std::sin(a)), [&](std::size_t cell) {
-        if (passed_in_[cell] == scan_id_ || hit_in_[cell] == scan_id_) return;
-        passed_in_[cell] = scan_id_;
-        changed += update(cell, params_.miss) != 0;
-      });
-    }
+  std::size_t changed = 0;
+  for (const std::size_t cell : touched_) {
+    const Tally& t = tallies_[cell];
+    const bool hit = t.hits > 0 && t.hits >= params_.hit_share * (t.hits + t.passes);
+    changed += update(cell, hit ? params_.hit : params_.miss) != 0;
   }
-  for (const std::size_t cell : hit_cells_) changed += update(cell, params_.hit) != 0;
   return commit(changed);
 }
 
 std::size_t ScanMap::mark(const std::vector<Vec2>& points) {
   next_scan();
-  std::size_t added = 0;
   for (const Vec2& p : points) {
     std::size_t cell = 0;
-    if (!cell_index(p, cell) || hit_in_[cell] == scan_id_) continue;
-    hit_in_[cell] = scan_id_;
-    added += update(cell, params_.hit) > 0;
+    if (cell_index(p, cell)) ++tally(cell).hits;
   }
+  std::size_t added = 0;
+  for (const std::size_t cell : touched_) added += update(cell, params_.hit) > 0;
   return commit(added);
 }
 

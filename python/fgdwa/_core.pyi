@@ -1206,9 +1206,9 @@ class OccupancyParams:
     """
     The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).
     """
-    def __init__(self, hit: typing.SupportsFloat | typing.SupportsIndex = 0.85, miss: typing.SupportsFloat | typing.SupportsIndex = -0.4, clamp_min: typing.SupportsFloat | typing.SupportsIndex = -2.0, clamp_max: typing.SupportsFloat | typing.SupportsIndex = 3.5, occupied: typing.SupportsFloat | typing.SupportsIndex = 0.5, free: typing.SupportsFloat | typing.SupportsIndex = -0.5, range_std: typing.SupportsFloat | typing.SupportsIndex = 0.0, clear_range: typing.SupportsFloat | typing.SupportsIndex = ..., clear: bool = True) -> None:
+    def __init__(self, hit: typing.SupportsFloat | typing.SupportsIndex = 0.85, miss: typing.SupportsFloat | typing.SupportsIndex = -0.4, clamp_min: typing.SupportsFloat | typing.SupportsIndex = -2.0, clamp_max: typing.SupportsFloat | typing.SupportsIndex = 3.5, occupied: typing.SupportsFloat | typing.SupportsIndex = 0.5, free: typing.SupportsFloat | typing.SupportsIndex = -0.5, range_std: typing.SupportsFloat | typing.SupportsIndex = 0.0, clear_range: typing.SupportsFloat | typing.SupportsIndex = ..., hit_share: typing.SupportsFloat | typing.SupportsIndex = 0.2, clear: bool = True) -> None:
         """
-        hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std short); clear_range (m): the farthest a beam clears; clear=False: hits only, nothing clears.
+        hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std short); clear_range (m): the farthest a beam clears; hit_share: a cell some beams of a scan end in and others pass is hit when at least this share end in it; clear=False: hits only, nothing clears.
         """
     def __repr__(self) -> str:
         ...
@@ -1229,6 +1229,9 @@ class OccupancyParams:
         ...
     @property
     def hit(self) -> float:
+        ...
+    @property
+    def hit_share(self) -> float:
         ...
     @property
     def miss(self) -> float:
@@ -1259,7 +1262,7 @@ class ScanMap:
         """
     def integrate(self, scan: Scan, keep_hit: typing.Any = None) -> int:
         """
-        One scan's evidence (each cell updated at most once, a hit winning over a pass); keep_hit (one flag per beam) says which hits to mark. Returns how many cells turned occupied or stopped being occupied.
+        One scan's evidence (each cell updated once, by the vote of the beams ending and passing in it); keep_hit (one flag per beam) says which hits to mark. Returns how many cells turned occupied or stopped being occupied.
         """
     def mark(self, points: typing.Any) -> int:
         """

@@ -69,22 +69,19 @@ class ReferenceMap:
         p = self.p
         origin = np.array([scan.pose.x, scan.pose.y])
         angles = scan.pose.theta + scan.angles
-        hits, passed = set(), set()
+        hits, passes = {}, {}
         for r, a in zip(scan.ranges, angles):
             direction = np.array([np.cos(a), np.sin(a)])
-            if np.isfinite(r):
-                cell = cell_of(origin + (r + 2 * p.range_std + 1e-6 * RES) * direction)
-                if cell is not None:
-                    hits.add(cell)
-        for r, a in zip(scan.ranges, angles):
-            direction = np.array([np.cos(a), np.sin(a)])
+            hit = cell_of(origin + (r + 2 * p.range_std + 1e-6 * RES) * direction) if np.isfinite(r) else None
+            if hit is not None:
+                hits[hit] = hits.get(hit, 0) + 1
             reach = min(r - 3 * p.range_std if np.isfinite(r) else scan.max_range, p.clear_range)
             if reach > 0:
-                passed |= crossed_cells(origin, origin + reach * direction)
-        for cell in passed - hits:
-            self.update(cell, p.miss)
-        for cell in hits:
-            self.update(cell, p.hit)
+                for cell in crossed_cells(origin, origin + reach * direction) - {hit}:
+                    passes[cell] = passes.get(cell, 0) + 1
+        for cell in set(hits) | set(passes):
+            h, n = hits.get(cell, 0), passes.get(cell, 0)
+            self.update(cell, p.hit if h > 0 and h >= p.hit_share * (h + n) else p.miss)
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
@@ -94,7 +91,8 @@ def test_log_odds_update_matches_the_reference_on_random_scans(seed):
     # Ranges of 2-5 m: beams leave the 4 m x 3 m layout, some with no return.
     lidar = fgdwa.LidarParams(beams=181, max_range=float(rng.uniform(2.0, 5.0)), noise_std=0.03)
     scanner = fgdwa.LaserScanner(lidar, fgdwa.DistanceField(truth))
-    params = fgdwa.OccupancyParams(range_std=0.03, clear_range=float(rng.uniform(1.5, 6.0)))
+    params = fgdwa.OccupancyParams(range_std=0.03, clear_range=float(rng.uniform(1.5, 6.0)),
+                                   hit_share=float(rng.uniform(0.1, 0.6)))
     scan_map = fgdwa.ScanMap(truth, params)
     reference = ReferenceMap(params)
     for k in range(8):

@@ -37,6 +37,11 @@ struct OccupancyParams {
   double free = -0.5;        // at or below this an occupied cell turns free (between them it keeps its state)
   double range_std = 0.0;    // m, the lidar's range noise: hits placed 2 std beyond, clearing stops 3 std short
   double clear_range = std::numeric_limits<double>::infinity();  // m, the farthest a beam clears
+  // A cell that some beams of one scan end in and others pass is hit when at
+  // least this share of them end in it. A surface's cell is where nearly every
+  // beam reaching it ends; the free cell before it catches only the few
+  // readings that noise puts short, however many beams cross it up close.
+  double hit_share = 0.2;
   bool clear = true;         // false: hits only and nothing clears (static worlds; the map of earlier versions)
   void validate() const;
 };
@@ -50,8 +55,8 @@ class ScanMap {
   // An empty map with the layout of `like`.
   explicit ScanMap(const OccupancyGrid& like, const OccupancyParams& params = {});
 
-  // One scan's evidence: each cell is updated at most once per scan, a hit
-  // winning over a pass. `keep_hit` (one entry per beam, or null for all)
+  // One scan's evidence: each cell is updated at most once per scan, by the
+  // vote of the beams ending and passing in it (hit_share). `keep_hit` (one entry per beam, or null for all)
   // says which beams' hits to mark: a beam whose hit belongs to a moving
   // obstacle still clears the cells before it. Hits outside the layout are
   // dropped, and beams are clipped to it. Returns how many cells turned
@@ -92,10 +97,15 @@ class ScanMap {
   std::vector<std::uint8_t> cells_;
   std::vector<std::uint8_t> states_;
   std::vector<float> log_odds_;
-  // Per cell, the last scan that passed it and the last that hit it: one update per scan.
-  std::vector<std::uint32_t> passed_in_, hit_in_;
+  // Per cell, the last scan that reached it and that scan's beams ending and
+  // passing in it: one update per cell and scan, decided by their vote.
+  struct Tally {
+    std::uint32_t scan = 0, hits = 0, passes = 0;
+  };
+  Tally& tally(std::size_t cell);
+  std::vector<Tally> tallies_;
   std::uint32_t scan_id_ = 0;
-  std::vector<std::size_t> hit_cells_;
+  std::vector<std::size_t> touched_;
   std::size_t occupied_ = 0, known_ = 0;
   bool stale_ = true;
   std::shared_ptr<const DistanceField> field_;
