@@ -14,14 +14,17 @@ using namespace fgdwa::py_convert;
 
 void init_clearance(py::module_& m) {
   py::class_<Disc>(m, "Disc", "A disc obstacle moving at constant velocity; radius 0 is a point.")
-      .def(py::init([](py::handle center, double radius, py::handle velocity) {
-             Disc d{to_vec2(center, "center"), radius, to_vec2(velocity, "velocity")};
+      .def(py::init([](py::handle center, double radius, py::handle velocity, double growth) {
+             Disc d{to_vec2(center, "center"), radius, to_vec2(velocity, "velocity"), growth};
              d.validate();
              return d;
            }),
-           py::arg("center"), py::arg("radius") = 0.0, py::arg("velocity") = py::make_tuple(0.0, 0.0))
+           py::arg("center"), py::arg("radius") = 0.0, py::arg("velocity") = py::make_tuple(0.0, 0.0),
+           py::arg("growth") = 0.0, "growth (m/s): radius added per second ahead, for a predicted obstacle.")
       .def_property_readonly("center", [](const Disc& d) { return py::make_tuple(d.center.x(), d.center.y()); })
       .def_readonly("radius", &Disc::radius)
+      .def_readonly("growth", &Disc::growth)
+      .def("radius_at", &Disc::radius_at, py::arg("t"))
       .def_property_readonly("velocity", [](const Disc& d) { return py::make_tuple(d.velocity.x(), d.velocity.y()); })
       .def("center_at", [](const Disc& d, double t) {
         const Vec2 c = d.center_at(t);
@@ -30,7 +33,9 @@ void init_clearance(py::module_& m) {
       .def("__repr__", [](const Disc& d) {
         std::ostringstream s;
         s << "Disc(center=(" << d.center.x() << ", " << d.center.y() << "), radius=" << d.radius << ", velocity=("
-          << d.velocity.x() << ", " << d.velocity.y() << "))";
+          << d.velocity.x() << ", " << d.velocity.y() << ")";
+        if (d.growth > 0.0) s << ", growth=" << d.growth;
+        s << ")";
         return s.str();
       });
 

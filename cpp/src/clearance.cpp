@@ -14,6 +14,7 @@ void Disc::validate() const {
   detail::require_non_negative("disc radius", radius);
   detail::require_finite("disc velocity x", velocity.x());
   detail::require_finite("disc velocity y", velocity.y());
+  detail::require_non_negative("disc growth", growth);
 }
 
 FieldClearance::FieldClearance(std::shared_ptr<const DistanceField> field, std::vector<Disc> discs)
@@ -22,7 +23,11 @@ FieldClearance::FieldClearance(std::shared_ptr<const DistanceField> field, std::
 }
 
 void FieldClearance::set_discs(std::vector<Disc> discs) {
-  for (const Disc& d : discs) d.validate();
+  obstacle_speed_ = 0.0;
+  for (const Disc& d : discs) {
+    d.validate();
+    obstacle_speed_ = std::max(obstacle_speed_, d.velocity.norm() + d.growth);
+  }
   discs_ = std::move(discs);
 }
 
@@ -180,14 +185,14 @@ void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Tr
   for (const Disc& disc : discs_)
     for (std::size_t k = 0; k < n; ++k)
       out[k] = std::min(out[k], (disc.center_at(static_cast<double>(k + 1) * dt) - poses[k].position()).norm() -
-                                    disc.radius - r);
+                                    disc.radius_at(static_cast<double>(k + 1) * dt) - r);
 }
 
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
   double best = field_clearance(field_.get(), footprint, pose);
   if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose));
   for (const Disc& disc : discs_)
-    best = std::min(best, footprint.signed_distance(pose, disc.center_at(t)) - disc.radius);
+    best = std::min(best, footprint.signed_distance(pose, disc.center_at(t)) - disc.radius_at(t));
   return best;
 }
 

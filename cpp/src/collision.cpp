@@ -148,6 +148,12 @@ void CollisionWorld::set_discs(std::vector<Disc> discs) {
 }
 
 const std::vector<Disc>& CollisionWorld::discs() const { return impl_->discs; }
+
+double CollisionWorld::obstacle_speed() const {
+  double fastest = 0.0;
+  for (const Disc& d : impl_->discs) fastest = std::max(fastest, d.velocity.norm() + d.growth);
+  return fastest;
+}
 const std::vector<CellRect>& CollisionWorld::boxes() const { return impl_->boxes; }
 
 double CollisionWorld::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
@@ -158,8 +164,11 @@ double CollisionWorld::clearance(const Footprint& footprint, const Pose2& pose, 
   std::unique_ptr<fcl::CollisionObjectd> disc;
   for (std::size_t i = 0; i < impl_->discs.size() && data.min_distance > 0.0; ++i) {
     impl_->disc_object(i, t, disc);
+    // A disc that grows is the disc of its radius now, reached growth x t sooner.
+    DistanceData one;
     double ignored;
-    distance_callback(&robot, disc.get(), &data, ignored);
+    distance_callback(&robot, disc.get(), &one, ignored);
+    data.min_distance = std::min(data.min_distance, std::max(0.0, one.min_distance - impl_->discs[i].growth * t));
   }
   return data.min_distance;
 }
@@ -172,7 +181,14 @@ bool CollisionWorld::in_collision(const Footprint& footprint, const Pose2& pose,
   std::unique_ptr<fcl::CollisionObjectd> disc;
   for (std::size_t i = 0; i < impl_->discs.size() && !hit; ++i) {
     impl_->disc_object(i, t, disc);
-    collision_callback(&robot, disc.get(), &hit);
+    if (impl_->discs[i].growth > 0.0 && t > 0.0) {
+      DistanceData one;
+      double ignored;
+      distance_callback(&robot, disc.get(), &one, ignored);
+      hit = one.min_distance <= impl_->discs[i].growth * t;
+    } else {
+      collision_callback(&robot, disc.get(), &hit);
+    }
   }
   return hit;
 }

@@ -257,6 +257,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const double clearance_now = world.clearance(footprint_, state.pose, 0.0);
   const double margin = std::clamp(clearance_now - 1e-3, 0.0, params_.safety_margin);
   const double start_clearance = clearance_now - margin;
+  const double obstacle_travel = world.obstacle_speed() * params_.dt;
   bounds_.resize(static_cast<std::size_t>(n_steps_));
   exact_.resize(static_cast<std::size_t>(n_steps_));
   // A footprint already over grade-4 cells may still leave: only its centre is held to them then.
@@ -272,7 +273,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     Trajectory& poses = rollouts_[i];
     rollout(state.pose, cmd.v * params_.dt, headings_[i % n_omega], poses);
     // Every step of the rollout turns and drives alike.
-    const detail::StepSweep step(footprint_, margin, cmd.omega * params_.dt, cmd.v * params_.dt);
+    const detail::StepSweep step(footprint_, margin, cmd.omega * params_.dt, cmd.v * params_.dt, obstacle_travel);
     // Cheap lower bounds first; exact clearances only where a bound cannot
     // settle contact or the minimum. The result is the same as evaluating
     // every pose exactly.

@@ -13,7 +13,7 @@ bool clear_along(const ClearanceSource& world, const Footprint& footprint, const
                  const PoseAt& pose, double t0, double dt, double f0, double c0, double f1, double c1, double sweep,
                  double margin) {
   if (c0 <= 0.0 || c1 <= 0.0) return false;
-  const double piece = (f1 - f0) * sweep;
+  const double piece = straight ? step.relative((f1 - f0) * sweep, f1 - f0) : (f1 - f0) * sweep;
   if (straight ? step.drive_covered(c0, c1, piece) : c0 + c1 > piece) return true;
   if (piece < 1e-3) return false;
   const double fm = 0.5 * (f0 + f1);

@@ -15,17 +15,26 @@ namespace fgdwa::detail {
 // alone can settle. The step turns in place by `turn` (rad), which moves no
 // footprint point farther than `turn_reach`, then drives `drive` metres
 // straight along the new heading. Clearances count from the safety margin.
+// Moving obstacles move during the step too: against a disc moving straight,
+// the footprint's motion relative to it is still a straight drive, at most
+// `obstacle_travel` longer (and no longer along the heading, so the polygon's
+// chord argument is dropped then).
 struct StepSweep {
   double turn_reach = 0.0;  // m, 0 for a circle, whose turns move nothing
-  double drive = 0.0;       // m
+  double drive = 0.0;       // m, the robot's own drive
+  double obstacle_travel = 0.0;  // m, the most an obstacle moves (or grows) in one step
   double rho = 0.0;         // m, a circle's radius plus the margin; 0 for a polygon
-  double chord = 0.0;       // m, the polygon's Footprint::heading_chord(); 0 for a circle
+  double chord = 0.0;       // m, the polygon's Footprint::heading_chord(); 0 for a circle or among moving obstacles
 
-  StepSweep(const Footprint& footprint, double margin, double turn, double drive_length)
+  StepSweep(const Footprint& footprint, double margin, double turn, double drive_length, double travel = 0.0)
       : turn_reach(footprint.is_circle() ? 0.0 : footprint.radius() * std::abs(wrap_angle(turn))),
         drive(drive_length),
+        obstacle_travel(travel),
         rho(footprint.is_circle() ? footprint.radius() + margin : 0.0),
-        chord(footprint.is_circle() ? 0.0 : footprint.heading_chord()) {}
+        chord(footprint.is_circle() || travel > 0.0 ? 0.0 : footprint.heading_chord()) {}
+
+  // The longest relative drive over the fraction `share` of the step's drive.
+  double relative(double length, double share) const { return length + share * obstacle_travel; }
 
   // Whether a straight drive of `length` between placements of clearance c0 and
   // c1 > 0 is clear. Each footprint point's path lies in the open discs of radii
@@ -50,9 +59,10 @@ struct StepSweep {
   // farther than that between them.
   bool covered(double c0, double c1) const {
     if (c0 <= 0.0 || c1 <= 0.0) return false;
-    if (turn_reach == 0.0) return drive_covered(c0, c1, drive);
-    const double turned = std::max(c0 - turn_reach, c1 - drive);
-    return turned > 0.0 && c0 + turned > turn_reach && drive_covered(turned, c1, drive);
+    const double length = relative(drive, 1.0);
+    if (turn_reach == 0.0) return drive_covered(c0, c1, length);
+    const double turned = std::max(c0 - turn_reach, c1 - length);
+    return turned > 0.0 && c0 + turned > turn_reach && drive_covered(turned, c1, length);
   }
 };
 

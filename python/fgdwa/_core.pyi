@@ -245,14 +245,21 @@ class Disc:
     """
     A disc obstacle moving at constant velocity; radius 0 is a point.
     """
-    def __init__(self, center: typing.Any, radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, velocity: typing.Any = (0.0, 0.0)) -> None:
-        ...
+    def __init__(self, center: typing.Any, radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, velocity: typing.Any = (0.0, 0.0), growth: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        """
+        growth (m/s): radius added per second ahead, for a predicted obstacle.
+        """
     def __repr__(self) -> str:
         ...
     def center_at(self, t: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
         ...
+    def radius_at(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        ...
     @property
     def center(self) -> tuple[float, float]:
+        ...
+    @property
+    def growth(self) -> float:
         ...
     @property
     def radius(self) -> float:

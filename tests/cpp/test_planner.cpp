@@ -577,6 +577,62 @@ TEST(LocalPlanner, RejectsNonFiniteInput) {
   expect_error_naming([&] { planner.plan(RobotState{}, Vec2(kInf, 1), empty); }, "goal x");
 }
 
+// Space-time clearance: pose k of a rollout meets each moving disc where the
+// disc will be then, and the motion between poses is checked against the
+// discs moving too. The first contact the planner reports is the one found by
+// walking every rollout on a 1 ms time axis, never later.
+TEST(LocalPlanner, SpaceTimeContactMatchesBruteForceOverTime) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), angle(-M_PI, M_PI);
+  PlannerParams params;
+  params.safety_margin = 0.0;
+  const Footprint footprint = Footprint::circle(0.25);
+  LocalPlanner planner(RobotLimits{}, footprint, params);
+  int checked = 0, exact_matches = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<Disc> discs;
+    for (int i = 0; i < 3; ++i) {
+      const double bearing = angle(rng), distance = 0.9 + 1.5 * unit(rng), heading = angle(rng);
+      const double speed = 0.3 + 0.9 * unit(rng);
+      Disc d{Vec2(distance * std::cos(bearing), distance * std::sin(bearing)), 0.2 + 0.3 * unit(rng),
+             speed * Vec2(std::cos(heading), std::sin(heading)), trial % 2 ? 0.1 * unit(rng) : 0.0};
+      discs.push_back(d);
+    }
+    const FieldClearance world(nullptr, discs);
+    if (world.clearance(footprint, Pose2{}, 0.0) <= 0.0) continue;
+    const PlanResult& result = planner.plan(RobotState{Pose2{0.0, 0.0, angle(rng)}, Twist{0.6, 0.3}}, Vec2(3, 0), world);
+    const auto& rollouts = planner.rollouts();
+    for (std::size_t i = 0; i < result.samples.size(); ++i) {
+      const Twist& cmd = result.samples[i];
+      if (cmd.v <= 0.0) continue;
+      // Brute force: step k drives from pose k - 1 (time k dt) to pose k ((k + 1) dt).
+      int first_contact = params.n_steps();
+      for (int k = 0; k < params.n_steps() && first_contact == params.n_steps(); ++k) {
+        const Vec2 from = k == 0 ? Vec2::Zero() : rollouts[i][static_cast<std::size_t>(k - 1)].position();
+        const Vec2 to = rollouts[i][static_cast<std::size_t>(k)].position();
+        for (int m = 0; m <= 100; ++m) {
+          const double f = m / 100.0;
+          const Vec2 p = from + f * (to - from);
+          if (world.clearance(footprint, Pose2{p.x(), p.y(), 0.0}, (k + f) * params.dt) <= 0.0) {
+            first_contact = k;
+            break;
+          }
+        }
+      }
+      const double step = cmd.v * params.dt;
+      const int planner_contact = std::isinf(result.free_distance[i])
+                                      ? params.n_steps()
+                                      : static_cast<int>(std::lround(result.free_distance[i] / step));
+      ASSERT_LE(planner_contact, first_contact) << "trial " << trial << ", sample " << i;
+      ++checked;
+      exact_matches += planner_contact == first_contact;
+    }
+  }
+  ASSERT_GT(checked, 5000);
+  // Finer than the brute force's 1 ms only where a contact lasts less than that.
+  EXPECT_GE(exact_matches, checked * 99 / 100);
+}
+
 // In open space nothing is rejected and every rollout is free for good.
 TEST(LocalPlanner, OpenSpaceAdmitsEverySample) {
   LocalPlanner planner(RobotLimits{}, Footprint::circle(0.25));
@@ -600,6 +656,7 @@ class WithoutBounds : public ClearanceSource {
   double clearance(const Footprint& fp, const Pose2& pose, double t) const override {
     return inner_.clearance(fp, pose, t);
   }
+  double obstacle_speed() const override { return inner_.obstacle_speed(); }
 
  private:
   const ClearanceSource& inner_;

@@ -13,11 +13,15 @@
 namespace fgdwa {
 
 // A disc obstacle moving at constant velocity; radius 0 is a point (a lidar hit).
+// A predicted obstacle (a track) is less certain the farther ahead it is
+// placed: its radius grows by `growth` every second.
 struct Disc {
   Vec2 center = Vec2::Zero();    // m, position now
   double radius = 0.0;           // m
   Vec2 velocity = Vec2::Zero();  // m/s
+  double growth = 0.0;           // m/s, radius added per second ahead
   Vec2 center_at(double t) const { return center + t * velocity; }
+  double radius_at(double t) const { return radius + growth * t; }
   void validate() const;
 };
 
@@ -35,6 +39,9 @@ class ClearanceSource {
     (void)footprint, (void)dt;
     std::fill(out, out + poses.size(), -std::numeric_limits<double>::infinity());
   }
+  // The fastest any obstacle moves or grows, m/s: how fast clearance can fall
+  // with the robot standing. 0 in a static world.
+  virtual double obstacle_speed() const { return 0.0; }
 };
 
 class FieldClearance : public ClearanceSource {
@@ -55,9 +62,11 @@ class FieldClearance : public ClearanceSource {
   double clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
   void clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
                               double* out) const override;
+  double obstacle_speed() const override { return obstacle_speed_; }
 
  private:
   std::shared_ptr<const DistanceField> field_;
+  double obstacle_speed_ = 0.0;
   std::shared_ptr<const DistanceField> sensed_;
   std::vector<Disc> discs_;
 };

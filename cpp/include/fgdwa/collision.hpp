@@ -42,6 +42,7 @@ class CollisionWorld : public ClearanceSource {
     return clearance(footprint, pose, t);
   }
   bool in_collision(const Footprint& footprint, const Pose2& pose, double t = 0.0) const;
+  double obstacle_speed() const override;
 
  private:
   struct Impl;
