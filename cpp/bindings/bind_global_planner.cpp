@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "convert.hpp"
+#include "fgdwa/error.hpp"
 #include "fgdwa/global_planner.hpp"
 
 namespace py = pybind11;
@@ -58,18 +59,31 @@ void init_global_planner(py::module_& m) {
                            "8-connected grid A* (octile heuristic, no corner cutting, inflated obstacles, optional "
                            "terrain cost = step length x (1 + w_risk x risk[grade])).")
       .def(py::init([](const OccupancyGrid& grid, double inflation_radius, bool simplify, const TerrainGrid* terrain,
-                       double w_risk, py::handle risk) {
+                       double w_risk, py::handle risk, double unknown_cost) {
              AStarParams params;
              params.inflation_radius = inflation_radius;
              params.simplify = simplify;
              params.terrain = terrain_cost(w_risk, risk);
+             params.unknown_cost = unknown_cost;
              std::optional<TerrainGrid> t;
              if (terrain) t = *terrain;
              return AStarPlanner(grid, params, t);
            }),
            py::arg("grid"), py::arg("inflation_radius") = 0.25, py::arg("simplify") = true,
            py::arg("terrain") = nullptr, py::arg("w_risk") = 1.0,
-           py::arg("risk") = py::make_tuple(0.0, 0.5, 1.0, 2.0))
+           py::arg("risk") = py::make_tuple(0.0, 0.5, 1.0, 2.0), py::arg("unknown_cost") = 0.0,
+           "unknown_cost: extra cost per metre through the cells set_unknown() marks (a step costs 1 + unknown_cost "
+           "times more).")
+      .def(
+          "set_unknown",
+          [](AStarPlanner& p, py::object unknown) {
+            if (unknown.is_none()) return p.set_unknown({});
+            const auto a = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(unknown);
+            if (!a || a.ndim() != 2 || a.shape(0) != p.grid().rows() || a.shape(1) != p.grid().cols())
+              throw Error("unknown: expected a (rows, cols) array of the grid's shape");
+            p.set_unknown(std::vector<std::uint8_t>(a.data(), a.data() + a.size()));
+          },
+          py::arg("unknown"), "Which cells are unknown ((rows, cols), nonzero = unknown; None for none).")
       .def(
           "plan",
           [](const AStarPlanner& p, py::handle start, py::handle goal) {

@@ -45,7 +45,8 @@ void init_navigator(py::module_& m) {
                        double give_up_length, double keep_clear, double sensed_close_radius, double backup_distance,
                        double backup_speed,
                        double rotate_limit_deg, double wait_time, double wait_radius, int max_recoveries,
-                       double progress_reset, int record_top_k, const OccupancyParams& occupancy) {
+                       double progress_reset, int record_top_k, const OccupancyParams& occupancy,
+                       double unknown_cost) {
              NavigatorParams p;
              p.path_margin = path_margin;
              p.replan_period = replan_period;
@@ -63,6 +64,7 @@ void init_navigator(py::module_& m) {
              p.progress_reset = progress_reset;
              p.record_top_k = record_top_k;
              p.occupancy = occupancy;
+             p.unknown_cost = unknown_cost;
              p.validate();
              return p;
            }),
@@ -72,7 +74,7 @@ void init_navigator(py::module_& m) {
            py::arg("rotate_limit_deg") = 360.0,
            py::arg("wait_time") = 2.0, py::arg("wait_radius") = 1.5, py::arg("max_recoveries") = 6,
            py::arg("progress_reset") = 1.0, py::arg("record_top_k") = 5,
-           py::arg("occupancy") = OccupancyParams(),
+           py::arg("occupancy") = OccupancyParams(), py::arg("unknown_cost") = 0.0,
            "path_margin: m kept beyond the footprint's radius by the global path where the map allows; "
            "replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance "
            "(m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after "
@@ -81,7 +83,8 @@ void init_navigator(py::module_& m) {
            "(m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle "
            "within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; "
            "record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std "
-           "is at least the lidar's noise_std).")
+           "is at least the lidar's noise_std); unknown_cost: extra cost per metre of the global path through cells the "
+           "scans have not observed (0: unknown is free).")
       .def_readonly("path_margin", &NavigatorParams::path_margin)
       .def_readonly("replan_period", &NavigatorParams::replan_period)
       .def_readonly("stall_time", &NavigatorParams::stall_time)
@@ -98,6 +101,7 @@ void init_navigator(py::module_& m) {
       .def_readonly("progress_reset", &NavigatorParams::progress_reset)
       .def_readonly("record_top_k", &NavigatorParams::record_top_k)
       .def_readonly("occupancy", &NavigatorParams::occupancy)
+      .def_readonly("unknown_cost", &NavigatorParams::unknown_cost)
       .def("__repr__", [](const NavigatorParams& p) {
         std::ostringstream s;
         s << "NavigatorParams(stall_time=" << p.stall_time << ", backup_distance=" << p.backup_distance

@@ -26,6 +26,7 @@ void TerrainCost::validate() const {
 
 void AStarParams::validate() const {
   detail::require_non_negative("inflation_radius", inflation_radius);
+  detail::require_non_negative("unknown_cost", unknown_cost);
   terrain.validate();
 }
 
@@ -58,6 +59,26 @@ AStarPlanner::AStarPlanner(const OccupancyGrid& grid, const AStarParams& params,
 }
 
 int AStarPlanner::grade(std::size_t cell) const { return terrain_ ? terrain_->grades()[cell] : 0; }
+
+double AStarPlanner::multiplier(std::size_t cell) const {
+  const double terrain = params_.terrain.multiplier(std::min(grade(cell), TerrainGrid::kMaxGrade - 1));
+  return !unknown_.empty() && unknown_[cell] ? terrain * (1.0 + params_.unknown_cost) : terrain;
+}
+
+void AStarPlanner::set_unknown(std::vector<std::uint8_t> unknown) {
+  const std::size_t n = static_cast<std::size_t>(grid_.rows()) * grid_.cols();
+  if (!unknown.empty() && unknown.size() != n)
+    throw Error("unknown: " + std::to_string(unknown.size()) + " cells for a " + std::to_string(grid_.rows()) + " x " +
+                std::to_string(grid_.cols()) + " grid");
+  unknown_ = std::move(unknown);
+}
+
+bool AStarPlanner::shortcut_clear(const Vec2& a, const Vec2& b, double dearest) const {
+  return segment_free(grid_, a, b, [&](int r, int c) {
+    const std::size_t i = grid_.index(r, c);
+    return !blocked_[i] && multiplier(i) <= dearest;
+  });
+}
 
 bool segment_free(const OccupancyGrid& layout, const Vec2& a, const Vec2& b,
                   const std::function<bool(int, int)>& free) {
@@ -180,7 +201,7 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
       if (closed[next] || !passable(next)) continue;
       if (k >= 4 && (!passable(grid_.index(r, nc)) || !passable(grid_.index(nr, c)))) continue;
       const double length = k >= 4 ? res * M_SQRT2 : res;
-      const double cost = g[node.cell] + length * params_.terrain.multiplier(grade(next));
+      const double cost = g[node.cell] + length * multiplier(next);
       if (cost < g[next]) {
         g[next] = cost;
         parent[next] = static_cast<std::int64_t>(node.cell);
@@ -199,24 +220,25 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
       cells.push_back(static_cast<std::size_t>(i));
     std::reverse(cells.begin(), cells.end());
     std::vector<Vec2> points;
-    std::vector<int> grades;
+    std::vector<double> multipliers;
     for (std::size_t i : cells) {
       points.push_back(grid_.cell_center(static_cast<int>(i / cols), static_cast<int>(i % cols)));
-      grades.push_back(grade(i));
+      multipliers.push_back(multiplier(i));
     }
     points.front() = start;
     points.back() = goal;
     if (params_.simplify && points.size() > 2) {
       // Greedy shortcut: from each kept vertex, jump as far along the path as the
-      // line of sight holds, over cells no steeper than those of the stretch it replaces.
+      // line of sight holds, over cells no dearer (steeper, or unknown where
+      // that costs) than those of the stretch it replaces.
       std::vector<Vec2> kept{points.front()};
       std::size_t i = 0;
       while (i + 1 < points.size()) {
         std::size_t best = i + 1;
-        int steepest = std::max(grades[i], grades[i + 1]);
+        double dearest = std::max(multipliers[i], multipliers[i + 1]);
         for (std::size_t j = i + 2; j < points.size(); ++j) {
-          steepest = std::max(steepest, grades[j]);
-          if (!line_of_sight(points[i], points[j], steepest)) break;
+          dearest = std::max(dearest, multipliers[j]);
+          if (!shortcut_clear(points[i], points[j], dearest)) break;
           best = j;
         }
         kept.push_back(points[best]);

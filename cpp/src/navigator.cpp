@@ -56,6 +56,7 @@ void NavigatorParams::validate() const {
   detail::require_non_negative("progress_reset", progress_reset);
   detail::require_at_least("record_top_k", record_top_k, 0);
   occupancy.validate();
+  detail::require_non_negative("unknown_cost", unknown_cost);
 }
 
 namespace {
@@ -158,12 +159,21 @@ bool Navigator::plan_path(const Vec2& from) {
     with_closed.emplace(base.rows(), base.cols(), base.resolution(), base.origin(), std::move(cells));
   }
   const OccupancyGrid& grid = with_closed ? *with_closed : base;
+  std::vector<std::uint8_t> unknown;
+  if (scan_map_ && params_.unknown_cost > 0.0) {
+    unknown.resize(scan_map_->states().size());
+    for (std::size_t i = 0; i < unknown.size(); ++i)
+      unknown[i] = scan_map_->states()[i] == static_cast<std::uint8_t>(CellState::Unknown);
+  }
   for (double radius : radii_) {
     AStarParams astar;
     astar.inflation_radius = radius;
+    astar.unknown_cost = params_.unknown_cost;
     GlobalPlan plan;
     try {
-      plan = AStarPlanner(grid, astar, terrain_).plan(from, goal_);
+      AStarPlanner planner(grid, astar, terrain_);
+      planner.set_unknown(unknown);
+      plan = planner.plan(from, goal_);
     } catch (const Error&) {
       continue;  // start or goal in a marked cell: no way from here on this map at this radius
     }

@@ -636,12 +636,18 @@ class AStarPlanner:
     """
     8-connected grid A* (octile heuristic, no corner cutting, inflated obstacles, optional terrain cost = step length x (1 + w_risk x risk[grade])).
     """
-    def __init__(self, grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing.SupportsIndex = 0.25, simplify: bool = True, terrain: TerrainGrid = None, w_risk: typing.SupportsFloat | typing.SupportsIndex = 1.0, risk: typing.Any = (0.0, 0.5, 1.0, 2.0)) -> None:
-        ...
+    def __init__(self, grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing.SupportsIndex = 0.25, simplify: bool = True, terrain: TerrainGrid = None, w_risk: typing.SupportsFloat | typing.SupportsIndex = 1.0, risk: typing.Any = (0.0, 0.5, 1.0, 2.0), unknown_cost: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        """
+        unknown_cost: extra cost per metre through the cells set_unknown() marks (a step costs 1 + unknown_cost times more).
+        """
     def __repr__(self) -> str:
         ...
     def plan(self, start: typing.Any, goal: typing.Any) -> GlobalPlan:
         ...
+    def set_unknown(self, unknown: typing.Any) -> None:
+        """
+        Which cells are unknown ((rows, cols), nonzero = unknown; None for none).
+        """
     @property
     def blocked(self) -> numpy.typing.NDArray[numpy.uint8]:
         ...
@@ -1417,9 +1423,9 @@ class NavigatorParams:
     """
     Replanning and recovery settings of a Navigator (SPEC 13).
     """
-    def __init__(self, path_margin: typing.SupportsFloat | typing.SupportsIndex = 0.3, replan_period: typing.SupportsFloat | typing.SupportsIndex = 0.5, stall_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, stall_distance: typing.SupportsFloat | typing.SupportsIndex = 0.1, give_up_length: typing.SupportsFloat | typing.SupportsIndex = 0.6, keep_clear: typing.SupportsFloat | typing.SupportsIndex = 0.3, sensed_close_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, backup_distance: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, rotate_limit_deg: typing.SupportsFloat | typing.SupportsIndex = 360.0, wait_time: typing.SupportsFloat | typing.SupportsIndex = 2.0, wait_radius: typing.SupportsFloat | typing.SupportsIndex = 1.5, max_recoveries: typing.SupportsInt | typing.SupportsIndex = 6, progress_reset: typing.SupportsFloat | typing.SupportsIndex = 1.0, record_top_k: typing.SupportsInt | typing.SupportsIndex = 5, occupancy: OccupancyParams = ...) -> None:
+    def __init__(self, path_margin: typing.SupportsFloat | typing.SupportsIndex = 0.3, replan_period: typing.SupportsFloat | typing.SupportsIndex = 0.5, stall_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, stall_distance: typing.SupportsFloat | typing.SupportsIndex = 0.1, give_up_length: typing.SupportsFloat | typing.SupportsIndex = 0.6, keep_clear: typing.SupportsFloat | typing.SupportsIndex = 0.3, sensed_close_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, backup_distance: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, rotate_limit_deg: typing.SupportsFloat | typing.SupportsIndex = 360.0, wait_time: typing.SupportsFloat | typing.SupportsIndex = 2.0, wait_radius: typing.SupportsFloat | typing.SupportsIndex = 1.5, max_recoveries: typing.SupportsInt | typing.SupportsIndex = 6, progress_reset: typing.SupportsFloat | typing.SupportsIndex = 1.0, record_top_k: typing.SupportsInt | typing.SupportsIndex = 5, occupancy: OccupancyParams = ..., unknown_cost: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         """
-        path_margin: m kept beyond the footprint's radius by the global path where the map allows; replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance (m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed (m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std is at least the lidar's noise_std).
+        path_margin: m kept beyond the footprint's radius by the global path where the map allows; replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance (m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed (m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std is at least the lidar's noise_std); unknown_cost: extra cost per metre of the global path through cells the scans have not observed (0: unknown is free).
         """
     def __repr__(self) -> str:
         ...
@@ -1464,6 +1470,9 @@ class NavigatorParams:
         ...
     @property
     def stall_time(self) -> float:
+        ...
+    @property
+    def unknown_cost(self) -> float:
         ...
     @property
     def wait_radius(self) -> float:

@@ -12,8 +12,10 @@ from conftest import random_block_grid
 RISK = np.array([0.0, 0.5, 1.0, 2.0])
 
 
-def grid_graph(blocked, grades, resolution, w_risk):
-    """The 8-connected graph A* searches: no corner cutting, cost = length x (1 + w_risk risk[grade of the cell entered])."""
+def grid_graph(blocked, grades, resolution, w_risk, unknown=None, unknown_cost=0.0):
+    """The 8-connected graph A* searches: no corner cutting, cost = length x (1 + w_risk risk[grade of the cell
+    entered]) x (1 + unknown_cost where that cell is unknown)."""
+    unknown = np.zeros_like(blocked) if unknown is None else unknown
     rows, cols = blocked.shape
     index = np.arange(rows * cols).reshape(rows, cols)
     src, dst, weight = [], [], []
@@ -28,7 +30,7 @@ def grid_graph(blocked, grades, resolution, w_risk):
         length = resolution * (np.sqrt(2.0) if dr and dc else 1.0)
         src.append(index[a][ok])
         dst.append(index[b][ok])
-        weight.append(length * (1.0 + w_risk * RISK[grades[b][ok]]))
+        weight.append(length * (1.0 + w_risk * RISK[grades[b][ok]]) * np.where(unknown[b][ok], 1.0 + unknown_cost, 1.0))
     n = rows * cols
     return csr_matrix((np.concatenate(weight), (np.concatenate(src), np.concatenate(dst))), shape=(n, n))
 
@@ -43,14 +45,24 @@ def test_astar_cost_equals_dijkstra(seed):
         grades[rng.random(cells.shape) < 0.7] = 0  # mostly flat, some steep patches
     grid = fgdwa.OccupancyGrid(cells, 0.1)
     terrain = fgdwa.TerrainGrid(grades, 0.1) if use_terrain else None
-    planner = fgdwa.AStarPlanner(grid, inflation_radius=0.12, terrain=terrain, w_risk=1.5, risk=RISK)
+    # Every third seed prices a few unknown patches.
+    unknown = np.zeros(cells.shape, dtype=bool)
+    if seed % 3 == 2:
+        for _ in range(6):
+            r, c = rng.integers(0, 35), rng.integers(0, 45)
+            unknown[r:r + rng.integers(3, 12), c:c + rng.integers(3, 12)] = True
+    unknown_cost = 2.0 if unknown.any() else 0.0
+    planner = fgdwa.AStarPlanner(grid, inflation_radius=0.12, terrain=terrain, w_risk=1.5, risk=RISK,
+                                 unknown_cost=unknown_cost)
+    planner.set_unknown(unknown)
     blocked = planner.blocked.astype(bool)
     free = np.argwhere(~blocked)
     start_cell, goal_cell = free[rng.integers(len(free))], free[rng.integers(len(free))]
     start = grid.cell_center(*start_cell)
     goal = grid.cell_center(*goal_cell)
     result = planner.plan(start, goal)
-    distances = dijkstra(grid_graph(blocked, grades, 0.1, 1.5), indices=start_cell[0] * 50 + start_cell[1])
+    distances = dijkstra(grid_graph(blocked, grades, 0.1, 1.5, unknown, unknown_cost),
+                         indices=start_cell[0] * 50 + start_cell[1])
     expected = distances[goal_cell[0] * 50 + goal_cell[1]]
     if np.isinf(expected):
         assert result.status == fgdwa.GlobalStatus.NoPath
@@ -69,6 +81,28 @@ def assert_path_clear(path, blocked, grid, spacing_cells=0.25):
         for p in np.linspace(a, b, n):
             row, col = int((p[1] - y0) // res), int((p[0] - x0) // res)
             assert not blocked[row, col], f"path crosses blocked cell ({row}, {col}) at {p}"
+
+
+def test_astar_detours_around_unknown_cells_when_they_cost():
+    grid = fgdwa.OccupancyGrid(np.zeros((20, 40), dtype=np.uint8), 0.1)
+    unknown = np.zeros((20, 40), dtype=bool)
+    unknown[2:18, 18:22] = True  # a band across the straight line, open above and below
+    straight = fgdwa.AStarPlanner(grid, inflation_radius=0.1)
+    straight.set_unknown(unknown)
+    through = straight.plan((0.5, 1.0), (3.5, 1.0))
+    priced = fgdwa.AStarPlanner(grid, inflation_radius=0.1, unknown_cost=3.0)
+    priced.set_unknown(unknown)
+    around = priced.plan((0.5, 1.0), (3.5, 1.0))
+    assert len(through.path) == 2 and through.cost == pytest.approx(3.0, abs=0.11)
+    x, y = around.path[:, 0], around.path[:, 1]
+    band = (x > 1.8) & (x < 2.2)
+    assert np.all(np.interp(np.linspace(1.8, 2.2, 20), x, y) < 0.2) or np.all(
+        np.interp(np.linspace(1.8, 2.2, 20), x, y) > 1.8), around.path
+    assert not band.any() or np.all((y[band] < 0.2) | (y[band] > 1.8))
+    with pytest.raises(fgdwa.FgdwaError, match="unknown"):
+        priced.set_unknown(np.zeros((3, 3)))
+    with pytest.raises(fgdwa.FgdwaError, match="unknown_cost"):
+        fgdwa.AStarPlanner(grid, unknown_cost=-1.0)
 
 
 def test_astar_simplified_path_never_crosses_the_inflated_grid(rng):

@@ -51,6 +51,9 @@ struct AStarParams {
   double inflation_radius = 0.25;  // m, usually the footprint's radius
   bool simplify = true;            // shortcut the cell path by line of sight
   TerrainCost terrain;
+  // Extra cost per metre through cells the map has not observed (set_unknown):
+  // a step into one costs (1 + unknown_cost) times more. 0: unknown is free.
+  double unknown_cost = 0.0;
   void validate() const;
 };
 
@@ -66,6 +69,9 @@ class AStarPlanner {
                std::optional<TerrainGrid> terrain = std::nullopt);
 
   GlobalPlan plan(const Vec2& start, const Vec2& goal) const;
+  // Which cells are unknown (row-major, 1 = unknown; empty for none), priced
+  // by AStarParams::unknown_cost. Throws fgdwa::Error on a size other than the grid's.
+  void set_unknown(std::vector<std::uint8_t> unknown);
 
   const OccupancyGrid& grid() const { return grid_; }
   const std::vector<std::uint8_t>& blocked() const { return blocked_; }
@@ -76,7 +82,12 @@ class AStarPlanner {
 
  private:
   int grade(std::size_t cell) const;
+  // The cost per metre of a step into the cell, relative to flat known ground.
+  double multiplier(std::size_t cell) const;
+  // Whether the segment a-b crosses only free cells no dearer than `dearest`.
+  bool shortcut_clear(const Vec2& a, const Vec2& b, double dearest) const;
   OccupancyGrid grid_;
+  std::vector<std::uint8_t> unknown_;
   AStarParams params_;
   std::optional<TerrainGrid> terrain_;
   std::vector<std::uint8_t> blocked_;

@@ -76,6 +76,9 @@ struct NavigatorParams {
   int record_top_k = 5;           // best-scored rollouts kept in each CycleRecord
   // The map built from scans (MapMode::Scan); its range_std is at least the lidar's noise_std.
   OccupancyParams occupancy;
+  // Extra cost per metre for the global path through cells the scans have not
+  // yet observed (MapMode::Scan; AStarParams::unknown_cost). 0: unknown is free.
+  double unknown_cost = 0.0;
   void validate() const;
 };
 
