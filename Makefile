@@ -57,10 +57,11 @@ test-python: setup
 	$(BIN)/python -m pytest -q tests/python
 
 bench: system-packages $(BUILD)/build.ninja
-	$(BIN)/cmake --build $(BUILD) -j $(JOBS) --target bench_planner bench_global bench_fgdwa
+	$(BIN)/cmake --build $(BUILD) -j $(JOBS) --target bench_planner bench_global bench_fgdwa bench_navigator
 	$(BUILD)/cpp/bench/bench_planner
 	$(BUILD)/cpp/bench/bench_global
 	$(BUILD)/cpp/bench/bench_fgdwa
+	$(BUILD)/cpp/bench/bench_navigator
 
 clean:
 	rm -rf build $(OUT) $(VENV)
