@@ -13,17 +13,20 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_perception(py::module_& m) {
-  py::class_<LidarParams>(m, "LidarParams", "A planar lidar: field of view (deg), beams, max range (m), range noise (m).")
-      .def(py::init([](double fov_deg, int beams, double max_range, double noise_std) {
-             LidarParams p{fov_deg * M_PI / 180.0, beams, max_range, noise_std};
+  py::class_<LidarParams>(m, "LidarParams", "A planar lidar: field of view (deg), beams, max range (m), range noise (m), "
+                                        "the probability a beam returns nothing (reads +inf).")
+      .def(py::init([](double fov_deg, int beams, double max_range, double noise_std, double dropout) {
+             LidarParams p{fov_deg * M_PI / 180.0, beams, max_range, noise_std, dropout};
              p.validate();
              return p;
            }),
-           py::arg("fov_deg") = 270.0, py::arg("beams") = 541, py::arg("max_range") = 10.0, py::arg("noise_std") = 0.0)
+           py::arg("fov_deg") = 270.0, py::arg("beams") = 541, py::arg("max_range") = 10.0, py::arg("noise_std") = 0.0,
+           py::arg("dropout") = 0.0)
       .def_property_readonly("fov_deg", [](const LidarParams& p) { return p.fov * 180.0 / M_PI; })
       .def_readonly("beams", &LidarParams::beams)
       .def_readonly("max_range", &LidarParams::max_range)
       .def_readonly("noise_std", &LidarParams::noise_std)
+      .def_readonly("dropout", &LidarParams::dropout)
       .def_property_readonly("angles", [](const LidarParams& p) {
         py::array_t<double> out(p.beams);
         for (int i = 0; i < p.beams; ++i) out.mutable_data()[i] = p.angle(i);
@@ -32,12 +35,15 @@ void init_perception(py::module_& m) {
       .def("__repr__", [](const LidarParams& p) {
         std::ostringstream s;
         s << "LidarParams(fov_deg=" << p.fov * 180.0 / M_PI << ", beams=" << p.beams << ", max_range=" << p.max_range
-          << ", noise_std=" << p.noise_std << ")";
+          << ", noise_std=" << p.noise_std << ", dropout=" << p.dropout << ")";
         return s.str();
       });
 
   py::class_<Scan>(m, "Scan", "One lidar scan: ranges (m, +inf for no hit) of beams from angle_min by angle_increment.")
-      .def_readonly("pose", &Scan::pose)
+      .def_property(
+          "pose", [](const Scan& s) { return s.pose; },
+          [](Scan& s, py::handle pose) { s.pose = to_pose(pose, "pose"); },
+          "Where the scan was taken, as the robot believes: hit_points and the map place the ranges from it.")
       .def_readonly("angle_min", &Scan::angle_min)
       .def_readonly("angle_increment", &Scan::angle_increment)
       .def_readonly("max_range", &Scan::max_range)
@@ -67,7 +73,8 @@ void init_perception(py::module_& m) {
             return out;
           },
           py::arg("pose"), py::arg("discs") = std::vector<Disc>{}, py::arg("t") = 0.0, py::arg("seed") = 0,
-          "One scan at pose; discs placed t seconds ahead; noise drawn from a generator seeded with seed.");
+          "One scan at pose; discs placed t seconds ahead; noise and dropped beams drawn from a generator "
+          "seeded with seed.");
 
   py::class_<DetectWindowParams>(m, "DetectWindowParams", "The detect window: +-half_angle_deg about the heading, radius R (m), base c of Eq. 13.")
       .def(py::init([](double half_angle_deg, double radius, double base) {

@@ -18,6 +18,8 @@ void LidarParams::validate() const {
   detail::require_at_least("lidar beams", beams, 1);
   detail::require_positive("lidar max_range", max_range);
   detail::require_non_negative("lidar noise_std", noise_std);
+  detail::require_non_negative("lidar dropout", dropout);
+  if (dropout >= 1.0) throw Error(detail::describe("lidar dropout", dropout, "must be < 1 (a probability)"));
 }
 
 std::vector<Vec2> Scan::hit_points() const {
@@ -106,7 +108,14 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
   out.max_range = params_.max_range;
   out.ranges.resize(static_cast<std::size_t>(params_.beams));
   std::normal_distribution<double> noise(0.0, params_.noise_std);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < params_.beams; ++i) {
+    // The drop is drawn for every beam, hit or not, so one beam's draws do not
+    // depend on what the others saw.
+    if (params_.dropout > 0.0 && uniform(rng) < params_.dropout) {
+      out.ranges[static_cast<std::size_t>(i)] = kInf;
+      continue;
+    }
     double r = cast(pose.position(), pose.theta + params_.angle(i), discs, t);
     if (std::isfinite(r) && params_.noise_std > 0.0) r = std::clamp(r + noise(rng), 0.0, params_.max_range);
     out.ranges[static_cast<std::size_t>(i)] = r;

@@ -463,9 +463,9 @@ class GlobalPath:
         ...
 class LidarParams:
     """
-    A planar lidar: field of view (deg), beams, max range (m), range noise (m).
+    A planar lidar: field of view (deg), beams, max range (m), range noise (m), the probability a beam returns nothing (reads +inf).
     """
-    def __init__(self, fov_deg: typing.SupportsFloat | typing.SupportsIndex = 270.0, beams: typing.SupportsInt | typing.SupportsIndex = 541, max_range: typing.SupportsFloat | typing.SupportsIndex = 10.0, noise_std: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, fov_deg: typing.SupportsFloat | typing.SupportsIndex = 270.0, beams: typing.SupportsInt | typing.SupportsIndex = 541, max_range: typing.SupportsFloat | typing.SupportsIndex = 10.0, noise_std: typing.SupportsFloat | typing.SupportsIndex = 0.0, dropout: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -476,6 +476,9 @@ class LidarParams:
         """
     @property
     def beams(self) -> int:
+        ...
+    @property
+    def dropout(self) -> float:
         ...
     @property
     def fov_deg(self) -> float:
@@ -511,6 +514,11 @@ class Scan:
         ...
     @property
     def pose(self) -> Pose2:
+        """
+        Where the scan was taken, as the robot believes: hit_points and the map place the ranges from it.
+        """
+    @pose.setter
+    def pose(self, arg1: typing.Any) -> None:
         ...
     @property
     def ranges(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -523,7 +531,7 @@ class LaserScanner:
         ...
     def scan(self, pose: typing.Any, discs: collections.abc.Sequence[Disc] = [], t: typing.SupportsFloat | typing.SupportsIndex = 0.0, seed: typing.SupportsInt | typing.SupportsIndex = 0) -> Scan:
         """
-        One scan at pose; discs placed t seconds ahead; noise drawn from a generator seeded with seed.
+        One scan at pose; discs placed t seconds ahead; noise and dropped beams drawn from a generator seeded with seed.
         """
     @property
     def params(self) -> LidarParams:

@@ -42,6 +42,20 @@ RUN_FIELDS = ("world", "planner", "mapping", "trial", "seed", "outcome", "succes
               "mileage", "min_clearance", "replans", "backing_up", "cycle_ms_mean", "cycle_ms_p95", "wall_time")
 
 
+def check_sensing(owner: str, noise_std, dropout, latency) -> None:
+    """Checks a benchmark's lidar range noise (m), dropped-beam rate and command latency (cycles)."""
+    def number(value) -> bool:
+        return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool) \
+            and math.isfinite(value)
+
+    if not (number(noise_std) and noise_std >= 0):
+        raise FgdwaError(f"{owner}.noise_std = {noise_std!r}: must be a finite number >= 0 (m)")
+    if not (number(dropout) and 0 <= dropout < 1):
+        raise FgdwaError(f"{owner}.dropout = {dropout!r}: must be in [0, 1) (a probability)")
+    if isinstance(latency, bool) or not isinstance(latency, (int, np.integer)) or latency < 0:
+        raise FgdwaError(f"{owner}.latency = {latency!r}: must be an integer >= 0 (control cycles)")
+
+
 @dataclass(frozen=True)
 class BarnSetup:
     """How every planner runs on BARN.
@@ -54,11 +68,12 @@ class BarnSetup:
     centimetres wider than the robot: a 3 s horizon at 1 m/s reaches through
     them into the next obstacle and leaves no curved rollout admissible.
     The lidar is the Jackal's Hokuyo UST-10LX class: 270 degrees, 0.5 degree
-    steps, 10 m, ``noise_std`` Gaussian range noise (drawn from the trial's seed;
-    without noise the simulator is deterministic and every trial repeats the
-    first). The default is noiseless: the robot's map marks each hit's cell, and
-    a hit that noise puts short of the surface marks a free cell, which narrows
-    BARN's gaps by a whole cell.
+    steps, 10 m, ``noise_std`` Gaussian range noise and a ``dropout`` share of
+    beams returning nothing, drawn from the trial's seed. A real scan is never
+    exact, so neither is the default one: the robot's map marks each hit's cell,
+    and a hit that noise puts short of the surface marks the free cell before
+    it, which narrows BARN's gaps as a real sensor would. ``latency`` control
+    cycles pass between a scan and its command reaching the wheels.
     """
 
     v_max: float = 1.0  # m/s
@@ -66,7 +81,9 @@ class BarnSetup:
     sim_time: float = 1.0  # s, rollout horizon
     lidar_beams: int = 541
     lidar_range: float = 10.0  # m
-    noise_std: float = 0.0  # m
+    noise_std: float = 0.03  # m, Gaussian range noise
+    dropout: float = 0.01  # probability a beam returns nothing
+    latency: int = 0  # control cycles from a scan to its command reaching the wheels
     replan_period: float = 0.5  # s between replans of a blocked path at most
     stall_time: float = 3.0  # s without 0.1 m of progress before a recovery
     # The challenge's time limit ends a run: the navigator keeps recovering until then.
@@ -77,8 +94,7 @@ class BarnSetup:
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
                 raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be a finite number > 0")
-        if not (math.isfinite(self.noise_std) and self.noise_std >= 0):
-            raise FgdwaError(f"BarnSetup.noise_std = {self.noise_std!r}: must be >= 0 (m)")
+        check_sensing("BarnSetup", self.noise_std, self.dropout, self.latency)
         for name in ("lidar_beams", "max_recoveries"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
@@ -97,7 +113,7 @@ class BarnSetup:
 
     def lidar(self) -> LidarParams:
         return LidarParams(fov_deg=270.0, beams=self.lidar_beams, max_range=self.lidar_range,
-                           noise_std=self.noise_std)
+                           noise_std=self.noise_std, dropout=self.dropout)
 
 
 @dataclass(frozen=True)
@@ -123,18 +139,26 @@ class BarnTask:
 
 @dataclass
 class BarnRun:
-    """One run's row of runs.csv, plus the trace failures.png draws."""
+    """One run's row of runs.csv, plus the trace failures.png draws (the
+    dynamic benchmark's runs too: they add the movers' routes and discs)."""
 
     row: dict
-    cells: np.ndarray  # (rows, cols) the world's grid
+    cells: np.ndarray  # (rows, cols) the world's grid (1: on the map, 2: missing from it)
     extent: tuple  # (x0, x1, y0, y1) m, the grid's
     poses: np.ndarray  # (steps + 1, 3)
     paths: list  # (cycle, (n, 2) points) per global path followed
     scan_map: Optional[np.ndarray] = None  # scan mode: the robot's map at the end
+    label: str = ""  # names the world in the figure; default "world <id>"
+    routes: list = field(default_factory=list)  # (k, 2) waypoints of each moving obstacle's route, closed
+    discs: list = field(default_factory=list)  # (x, y, radius) of each moving obstacle when the run ended
 
     @property
     def outcome(self) -> str:
         return self.row["outcome"]
+
+    @property
+    def title(self) -> str:
+        return self.label or f"world {self.row['world']}"
 
 
 def barn_tasks(dataset: BarnDataset, world_ids: Sequence[int], planners: Sequence[str], mapping: str,
@@ -185,7 +209,7 @@ def run_barn_task(task: BarnTask) -> BarnRun:
     result = run_episode(world, task.start, task.goal, limits=setup.limits(), footprint=robot.footprint,
                          params=params, max_steps=max_steps, goal_tolerance=task.goal_radius, lidar=setup.lidar(),
                          weight_policy=preset.weight_policy(), seed=task.seed, mapping=task.mapping,
-                         navigator=setup.navigator())
+                         navigator=setup.navigator(), latency=setup.latency)
     wall = time.perf_counter() - tic
     # The challenge knows three outcomes; running out of steps is its timeout.
     outcome = result.outcome if result.outcome in OUTCOMES else "timeout"
@@ -216,56 +240,75 @@ def run_barn(dataset: BarnDataset, worlds="all", planners: Sequence[str] = BARN_
                      runner=run_barn_task)
 
 
-def summarize(runs: Sequence[BarnRun]) -> dict:
-    """Per planner, in order of first appearance: n, the rates of success,
-    collision and timeout, mean_time (s, successful runs; NaN when none),
-    mean_score (all runs) and the mean planning cycle (ms)."""
+def summarize(runs: Sequence[BarnRun], outcomes: Sequence[str] = OUTCOMES) -> dict:
+    """Per planner, in order of first appearance: n, the rate of each outcome,
+    mean_time (s, successful runs; NaN when none), mean_score (all runs; when
+    the rows have a score) and the mean planning cycle (ms)."""
     table = {}
     for planner in dict.fromkeys(run.row["planner"] for run in runs):
         rows = [run.row for run in runs if run.row["planner"] == planner]
         n = len(rows)
         times = [r["time"] for r in rows if r["success"]]
-        table[planner] = {
+        entry = {
             "n": n,
-            **{outcome: sum(r["outcome"] == outcome for r in rows) / n for outcome in OUTCOMES},
+            **{outcome: sum(r["outcome"] == outcome for r in rows) / n for outcome in outcomes},
             "mean_time": float(np.mean(times)) if times else float("nan"),
-            "mean_score": float(np.mean([r["score"] for r in rows])),
-            "cycle_ms_mean": float(np.nanmean([r["cycle_ms_mean"] for r in rows])),
         }
+        if all("score" in r for r in rows):
+            entry["mean_score"] = float(np.mean([r["score"] for r in rows]))
+        entry["cycle_ms_mean"] = float(np.nanmean([r["cycle_ms_mean"] for r in rows]))
+        table[planner] = entry
     return table
 
 
-def format_summary(summary: dict, mapping: str) -> str:
-    """The terminal table."""
-    lines = [f"BARN, map {mapping}",
-             f"{'planner':<10} {'n':>5} {'success':>8} {'collision':>10} {'timeout':>8} {'mean time':>10} "
-             f"{'mean score':>11} {'cycle ms':>9}"]
+def format_table(summary: dict, title: str, outcomes: Sequence[str] = OUTCOMES) -> str:
+    """The terminal table of a :func:`summarize` summary: one line per planner."""
+    scored = all("mean_score" in s for s in summary.values())
+    header = f"{'planner':<14} {'n':>5}" + "".join(f" {o:>9}" for o in outcomes) + f" {'mean time':>10}"
+    header += f" {'mean score':>11}" * scored + f" {'cycle ms':>9}"
+    lines = [title, header]
     for planner, s in summary.items():
         mean_time = "-" if math.isnan(s["mean_time"]) else f"{s['mean_time']:.1f} s"
-        lines.append(f"{planner:<10} {s['n']:>5} {s['success']:>8.3f} {s['collision']:>10.3f} {s['timeout']:>8.3f} "
-                     f"{mean_time:>10} {s['mean_score']:>11.3f} {s['cycle_ms_mean']:>9.2f}")
+        line = f"{planner:<14} {s['n']:>5}" + "".join(f" {s[o]:>9.3f}" for o in outcomes) + f" {mean_time:>10}"
+        if scored:
+            line += f" {s['mean_score']:>11.3f}"
+        line += f" {s['cycle_ms_mean']:>9.2f}"
+        lines.append(line)
     return "\n".join(lines)
 
 
-def write_barn_outputs(runs: Sequence[BarnRun], out_dir, mapping: str, meta: Optional[dict] = None,
-                       figure: bool = True) -> dict:
-    """Write runs.csv, summary.json and (``figure``) failures.png into ``out_dir``;
+def format_summary(summary: dict, mapping: str) -> str:
+    """The BARN terminal table."""
+    return format_table(summary, f"BARN, map {mapping}")
+
+
+def write_run_outputs(runs: Sequence[BarnRun], out_dir, fields: Sequence[str], head: dict, figure: bool = True,
+                      outcomes: Sequence[str] = OUTCOMES) -> dict:
+    """Write runs.csv (columns ``fields``), summary.json (``head`` then the
+    per-planner summary) and (``figure``) failures.png into ``out_dir``;
     return the summary."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     with open(out / "runs.csv", "w", newline="") as handle:
-        writer = csv.DictWriter(handle, fieldnames=RUN_FIELDS)
+        writer = csv.DictWriter(handle, fieldnames=list(fields))
         writer.writeheader()
         for run in runs:
-            writer.writerow({k: _csv_value(run.row[k]) for k in RUN_FIELDS})
-    summary = summarize(runs)
-    document = {"mapping": mapping, **(meta or {}), "planners": json_safe(summary)}
+            writer.writerow({k: _csv_value(run.row[k]) for k in fields})
+    summary = summarize(runs, outcomes)
+    document = {**head, "planners": json_safe(summary)}
     (out / "summary.json").write_text(json.dumps(document, indent=2) + "\n")
     if figure:
         from fgdwa.barn_figures import plot_failures
 
         plot_failures(runs, out / "failures.png")
     return summary
+
+
+def write_barn_outputs(runs: Sequence[BarnRun], out_dir, mapping: str, meta: Optional[dict] = None,
+                       figure: bool = True) -> dict:
+    """Write runs.csv, summary.json and (``figure``) failures.png into ``out_dir``;
+    return the summary."""
+    return write_run_outputs(runs, out_dir, RUN_FIELDS, {"mapping": mapping, **(meta or {})}, figure)
 
 
 def _csv_value(value):
@@ -283,12 +326,14 @@ def barn_command(args) -> int:
     dataset = load_barn(find_barn_file(args.data))
     world_ids = dataset.select_ids(args.worlds)
     planners = check_planners(args.planners)
+    setup = BarnSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency)
     tic = time.perf_counter()
-    runs = run_barn(dataset, world_ids, planners, args.mapping, args.trials, args.seed, executor=args.executor,
-                    scheduler=args.scheduler, workers=args.workers, progress=not args.no_progress)
+    runs = run_barn(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup=setup,
+                    executor=args.executor, scheduler=args.scheduler, workers=args.workers,
+                    progress=not args.no_progress)
     wall = time.perf_counter() - tic
     meta = {"data": str(dataset.source), "worlds": world_ids, "trials": args.trials, "seed": args.seed,
-            "setup": dataclasses.asdict(BarnSetup()), "wall_time": wall}
+            "setup": dataclasses.asdict(setup), "wall_time": wall}
     summary = write_barn_outputs(runs, args.out, args.mapping, meta, figure=not args.no_figures)
     print(format_summary(summary, args.mapping))
     print(f"{len(runs)} runs in {wall:.1f} s; wrote {Path(args.out) / 'runs.csv'}, summary.json"

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 from typing import Optional
 
-from fgdwa.barn_benchmark import barn_command
+from fgdwa.barn_benchmark import BarnSetup, barn_command
 from fgdwa.datasets.barn import describe_world_ids, load_barn
 from fgdwa.datasets.barn_convert import convert_barn_worlds
+from fgdwa.experiments import EXECUTORS
 from fgdwa.mapping import MAPPING_MODES
 
 
@@ -19,6 +20,26 @@ def barn_import_command(world_dir: str, out: str, worlds: Optional[str] = None) 
     dataset = load_barn(out)  # what was written must load
     print(f"wrote {out}: {len(dataset)} BARN worlds ({describe_world_ids(dataset.world_ids)}) from {world_dir}")
     return 0
+
+
+def add_sensing_arguments(parser, defaults) -> None:
+    """--noise, --dropout and --latency, defaulting to ``defaults``' noise_std, dropout and latency."""
+    parser.add_argument("--noise", type=float, default=defaults.noise_std, metavar="STD",
+                        help=f"lidar range noise std, m (default {defaults.noise_std:g})")
+    parser.add_argument("--dropout", type=float, default=defaults.dropout, metavar="P",
+                        help=f"probability a lidar beam returns nothing (default {defaults.dropout:g})")
+    parser.add_argument("--latency", type=int, default=defaults.latency, metavar="CYCLES",
+                        help=f"control cycles from a scan to its command reaching the wheels "
+                             f"(default {defaults.latency})")
+
+
+def add_executor_arguments(parser) -> None:
+    """--executor, --scheduler and --workers, as fgdwa.experiments.run_tasks takes them."""
+    parser.add_argument("--executor", choices=list(EXECUTORS), default="local",
+                        help="local: a process pool (default); dask: a dask.distributed cluster; serial: this process")
+    parser.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                        help="dask scheduler address (default: a LocalCluster on this machine)")
+    parser.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
 
 
 def register_barn_commands(subparsers) -> None:
@@ -41,11 +62,8 @@ def register_barn_commands(subparsers) -> None:
                            "and replans on that (default known)")
     barn.add_argument("--trials", type=int, default=1, help="runs per world and planner (default 1)")
     barn.add_argument("--seed", type=int, default=0, help="base seed: trial i uses seed + i (lidar noise)")
-    barn.add_argument("--executor", choices=["local", "dask", "serial"], default="local",
-                      help="local: a process pool (default); dask: a dask.distributed cluster; serial: this process")
-    barn.add_argument("--scheduler", default=None, metavar="ADDRESS",
-                      help="dask scheduler address (default: a LocalCluster on this machine)")
-    barn.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
+    add_sensing_arguments(barn, BarnSetup())
+    add_executor_arguments(barn)
     barn.add_argument("--out", default="out/barn", metavar="DIR",
                       help="directory for runs.csv, summary.json, failures.png (default out/barn)")
     barn.add_argument("--no-figures", action="store_true", help="skip failures.png")

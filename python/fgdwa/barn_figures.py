@@ -1,4 +1,4 @@
-"""failures.png: the failed BARN runs, one small map each."""
+"""failures.png: the failed runs of ``fgdwa barn`` or ``fgdwa dynamic``, one small map each."""
 
 from __future__ import annotations
 
@@ -14,14 +14,16 @@ import numpy as np  # noqa: E402
 
 from fgdwa.plotting import save_figure  # noqa: E402
 
-OUTCOME_COLOURS = {"collision": "tab:red", "timeout": "tab:orange", "success": "tab:green"}
+OUTCOME_COLOURS = {"collision": "tab:red", "timeout": "tab:orange", "failed": "tab:brown", "success": "tab:green"}
 MAX_PANELS = 30
 
 
 def plot_failures(runs: Sequence, path, max_panels: int = MAX_PANELS) -> Path:
-    """Each failed run's map (grey; with ``--map scan`` what the robot had mapped
-    in blue over it), its last global path (dashed) and the executed path, ending
-    in a cross where it collided or stopped. At most ``max_panels`` runs, in run
+    """Each failed run's map (grey, obstacles missing from the map darker; with
+    ``--map scan`` what the robot had mapped in blue over it), its last global
+    path (dashed), the moving obstacles' routes (dotted) and discs where they
+    were at the end, and the executed path, ending in a cross where it collided
+    or stopped. At most ``max_panels`` runs, in run
     order; with none failed, one panel says so."""
     failed = [run for run in runs if run.outcome != "success"]
     if not failed:
@@ -56,6 +58,11 @@ def _draw_run(ax, run) -> None:
     if run.paths:
         points = np.asarray(run.paths[-1][1])
         ax.plot(points[:, 0], points[:, 1], "--", color="tab:purple", lw=0.8)
+    for route in run.routes:
+        route = np.asarray(route)
+        ax.plot(route[:, 0], route[:, 1], ":", color="tab:blue", lw=0.8)
+    for x, y, radius in run.discs:
+        ax.add_patch(plt.Circle((x, y), radius, color="tab:blue", alpha=0.5))
     poses = np.asarray(run.poses)
     colour = OUTCOME_COLOURS.get(row["outcome"], "k")
     ax.plot(poses[:, 0], poses[:, 1], color=colour, lw=1.2)
@@ -67,7 +74,7 @@ def _draw_run(ax, run) -> None:
     ax.set_xlim(extent[0], extent[1])
     ax.set_ylim(ys.min() - 0.3, ys.max() + 0.3)
     ax.set_aspect("equal")
-    ax.set_title(f"world {row['world']} {row['planner']}: {row['outcome']} ({row['time']:.0f} s)", fontsize=8)
+    ax.set_title(f"{run.title} {row['planner']}: {row['outcome']} ({row['time']:.0f} s)", fontsize=8)
     ax.axis("on")
     ax.set_xticks([])
     ax.set_yticks([])

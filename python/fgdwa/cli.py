@@ -58,6 +58,8 @@ def cmd_run(args: argparse.Namespace) -> int:
     scenario = resolve_scenario(args.scenario)
     planner = args.planner or scenario.planner
     options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
+    if args.latency:
+        options["latency"] = args.latency
     tic = time.perf_counter()
     if args.gif:
         # The GIF replays the cycles; a wider fan of scored rollouts than the default 5 shows the choice.
@@ -172,6 +174,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--gif", default=None, metavar="FILE", help="also write an animated GIF of the run")
     run.add_argument("--frames", type=_positive, default=150, help="at most this many GIF frames (default 150)")
     run.add_argument("--max-steps", type=_positive, default=None, help="override the scenario's max_steps")
+    run.add_argument("--latency", type=int, default=0, metavar="CYCLES",
+                     help="control cycles from a scan to its command reaching the wheels (default 0)")
     run.set_defaults(func=lambda args, argv: cmd_run(args))
 
     exp = sub.add_parser("experiment", help="run the paper's experiments (SPEC 10) and write tables, figures "
@@ -197,6 +201,9 @@ def build_parser() -> argparse.ArgumentParser:
     from fgdwa.barn_cli import register_barn_commands
 
     register_barn_commands(sub)
+    from fgdwa.dynamic_benchmark import register_dynamic_commands
+
+    register_dynamic_commands(sub)
     return parser
 
 

@@ -1,7 +1,8 @@
 """A scenario: a world, a robot, a task and how trials of it vary (SPEC 9, 10).
 
 ``run_scenario(scenario, planner, seed)`` runs one trial: the seed draws the
-start's jitter, the moving obstacles' phases and the lidar's noise, so the same
+start's jitter, the moving obstacles' phases, the lidar's noise and dropped beams (and any actuation noise or
+odometry drift asked of ``run_episode``), so the same
 seed gives the same episode, bit for bit.
 """
 
@@ -47,13 +48,16 @@ class Variability:
     start_xy_std: float = 0.05  # m, Gaussian jitter of the start position
     start_theta_std: float = 0.05  # rad, Gaussian jitter of the start heading
     mover_phase: bool = True  # start each moving obstacle at a random point of its route
-    lidar_noise_std: float = 0.01  # m, Gaussian range noise
+    lidar_noise_std: float = 0.03  # m, Gaussian range noise of every beam's hit
+    lidar_dropout: float = 0.01  # probability that a beam returns nothing (reads +inf)
 
     def __post_init__(self):
-        for name in ("start_xy_std", "start_theta_std", "lidar_noise_std"):
+        for name in ("start_xy_std", "start_theta_std", "lidar_noise_std", "lidar_dropout"):
             value = getattr(self, name)
             if not (np.isfinite(value) and value >= 0):
                 raise FgdwaError(f"variability {name} = {value!r}: must be a finite number >= 0")
+        if self.lidar_dropout >= 1:
+            raise FgdwaError(f"variability lidar_dropout = {self.lidar_dropout!r}: must be < 1 (a probability)")
 
 
 @dataclass(frozen=True)
@@ -119,9 +123,9 @@ def trial_variation(scenario: Scenario, seed: int) -> tuple:
                   for m in world.movers]
         world = dataclasses.replace(world, movers=tuple(movers))
     lidar = scenario.lidar
-    if v.lidar_noise_std > 0:
+    if v.lidar_noise_std > 0 or v.lidar_dropout > 0:
         lidar = LidarParams(fov_deg=lidar.fov_deg, beams=lidar.beams, max_range=lidar.max_range,
-                            noise_std=v.lidar_noise_std)
+                            noise_std=v.lidar_noise_std or lidar.noise_std, dropout=v.lidar_dropout or lidar.dropout)
     return start, world, lidar
 
 

@@ -362,7 +362,7 @@ class _Reader(MapReader, FeasibilityChecks):
     def variability(self, value: Any) -> Variability:
         key = "variability"
         self.mapping(value, key, ("start_xy_std", "start_theta_std_deg", "start_theta_std", "mover_phase",
-                                  "lidar_noise_std"))
+                                  "lidar_noise_std", "lidar_dropout"))
         default = Variability()
         if value.get("start_theta_std_deg") is not None and value.get("start_theta_std") is not None:
             self.fail(key, value, "give start_theta_std_deg (degrees) or start_theta_std (radians), not both")
@@ -372,10 +372,15 @@ class _Reader(MapReader, FeasibilityChecks):
                                                  low=0.0))
         elif value.get("start_theta_std") is not None:
             theta_std = self.number(value["start_theta_std"], join_key(key, "start_theta_std"), low=0.0)
+        dropout = self.number(value.get("lidar_dropout", default.lidar_dropout), join_key(key, "lidar_dropout"),
+                              low=0.0)
+        if dropout >= 1.0:
+            self.fail(join_key(key, "lidar_dropout"), dropout, "must be < 1 (the probability a beam returns nothing)")
         return Variability(
             start_xy_std=self.number(value.get("start_xy_std", default.start_xy_std), join_key(key, "start_xy_std"),
                                      low=0.0),
             start_theta_std=theta_std,
             mover_phase=self.boolean(value.get("mover_phase", default.mover_phase), join_key(key, "mover_phase")),
             lidar_noise_std=self.number(value.get("lidar_noise_std", default.lidar_noise_std),
-                                        join_key(key, "lidar_noise_std"), low=0.0))
+                                        join_key(key, "lidar_noise_std"), low=0.0),
+            lidar_dropout=dropout)

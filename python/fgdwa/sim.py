@@ -17,6 +17,7 @@ import numpy as np
 from fgdwa._core import (
     CollisionWorld,
     DetectWindowParams,
+    Disc,
     DistanceField,
     FgdwaError,
     Footprint,
@@ -31,6 +32,7 @@ from fgdwa._core import (
     PlannerPreset,
     PlannerParams,
     PlanResult,
+    Pose2,
     RobotLimits,
     RobotState,
     Twist,
@@ -38,6 +40,7 @@ from fgdwa._core import (
     step,
     wrap_angle,
 )
+from fgdwa.actuation import Body, body_settings, check_seed
 from fgdwa.global_planning import plan_global
 from fgdwa.mapping import check_mapping
 from fgdwa.metrics import DANGER_MARGIN, danger_point_clearance, danger_points, smoothness
@@ -70,8 +73,8 @@ class EpisodeResult:
     mileage: float  # m, length of the executed path
     min_clearance: float  # m, exact (FCL) clearance along the executed path
     mean_clearance: float  # m
-    poses: np.ndarray  # (steps + 1, 3) x, y, theta, start included
-    commands: np.ndarray  # (steps, 2) v, omega
+    poses: np.ndarray  # (steps + 1, 3) x, y, theta, start included: where the robot was
+    commands: np.ndarray  # (steps, 2) v, omega the wheels got (after latency, actuation noise, terrain)
     clearances: np.ndarray  # (steps + 1,) m
     danger_clearance: float = float("nan")  # m, mean obstacle distance at the global path's danger points
     mean_deviation: float = float("nan")  # m, from the global path
@@ -94,6 +97,8 @@ class EpisodeResult:
     scan_map: Optional[np.ndarray] = None  # (rows, cols) the robot's map at the end, with mapping="scan"
     paths: list = field(default_factory=list)  # (cycle, (n, 2) points) per global path followed, in order
     cycles: list = field(default_factory=list)  # CycleTrace per cycle, with record_cycles=True
+    twists: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))  # (steps, 2) mean v, omega driven per cycle
+    believed_poses: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))  # (steps + 1, 3) the odometry's
 
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
@@ -134,31 +139,62 @@ def path_length(points: np.ndarray) -> float:
     return float(np.sum(np.hypot(*np.diff(points[:, :2], axis=0).T)))
 
 
-def _along_step(before, after, spacing: float):
-    """(f, x, y) every ``spacing`` metres along the straight part of a step, f in (0, 1]."""
+def _along_step(before, after, spacing: float, other_travel: float = 0.0):
+    """(f, x, y) along the straight part of a step, f in (0, 1], in pieces short
+    enough that the robot and something else moving ``other_travel`` metres in
+    the same step close at most ``spacing`` metres between two samples."""
     x0, y0, x1, y1 = before[0], before[1], after[0], after[1]
-    pieces = max(1, int(np.ceil(np.hypot(x1 - x0, y1 - y0) / spacing)))
+    pieces = max(1, int(np.ceil((np.hypot(x1 - x0, y1 - y0) + other_travel) / spacing)))
     for i in range(1, pieces + 1):
         f = i / pieces
         yield f, x0 + f * (x1 - x0), y0 + f * (y1 - y0)
 
 
 def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, after, t: float, dt: float,
-                         spacing: float = 0.05) -> bool:
-    """Whether the footprint touches an obstacle anywhere along one step.
+                         spacing: float = 0.05, discs_at=None) -> bool:
+    """Whether the footprint touches an obstacle anywhere along one step,
+    whoever moves into whom.
 
     A step turns first and then moves straight along the new heading. The turn
     is swept at the start position (a polygon's outline moves; a circle's does
     not): each heading's exact clearance bounds how far the outline may turn
     before it could touch, so a contact deeper than ``TURN_RESOLUTION`` rad
-    times the footprint's radius is never missed. The positions of the drive
-    lie on the segment from ``before`` to ``after``; they are checked every
-    ``spacing`` metres, the discs moving with them.
+    times the footprint's radius is never missed. The drive is checked at
+    instants of the step close enough that neither the robot nor any disc moves
+    more than ``spacing`` metres between two of them together: the robot's
+    position lies on the segment from ``before`` to ``after``, and the discs are
+    where ``discs_at(time)`` puts them (the truth's own discs are restored
+    afterwards) or, without it, the truth's discs moved at their velocities.
     """
-    if not footprint.is_circle and _turn_collides(truth, footprint, before, after[2], t):
+    if discs_at is None:
+        discs = truth.discs
+        return _step_collides(truth, footprint, before, after, t, dt, spacing, _disc_travel(discs, dt), None)
+    # Copies: the truth hands out views of its own discs, which setting new ones overwrites.
+    kept = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
+    try:
+        travel = max(_disc_travel(discs_at(t), dt), _disc_travel(discs_at(t + dt), dt))
+        return _step_collides(truth, footprint, before, after, t, dt, spacing, travel, discs_at)
+    finally:
+        truth.discs = kept
+
+
+def _disc_travel(discs, dt: float) -> float:
+    """The farthest any of the discs moves in ``dt`` at its velocity, m."""
+    return max((float(np.hypot(*d.velocity)) * dt for d in discs), default=0.0)
+
+
+def _step_collides(truth, footprint, before, after, t, dt, spacing, disc_travel, discs_at) -> bool:
+    def clock(time: float) -> float:
+        """The time to query the truth at for the discs to be where they are at ``time``."""
+        if discs_at is None:
+            return time
+        truth.discs = discs_at(time)
+        return 0.0
+
+    if not footprint.is_circle and _turn_collides(truth, footprint, before, after[2], clock(t)):
         return True
-    return any(truth.in_collision(footprint, (x, y, after[2]), t + f * dt)
-               for f, x, y in _along_step(before, after, spacing))
+    return any(truth.in_collision(footprint, (x, y, after[2]), clock(t + f * dt))
+               for f, x, y in _along_step(before, after, spacing, disc_travel))
 
 
 TURN_RESOLUTION = 1e-3  # rad, the smallest heading step of the referee's turn sweep
@@ -192,11 +228,15 @@ class EpisodeOptions:
     lidar: Optional[LidarParams] = None  # None: no scans (known map only)
     window: Optional[DetectWindowParams] = None  # the detect window of I
     weight_policy: Optional[object] = None  # a WeightPolicy; needs a lidar
-    seed: int = 0  # the lidar's noise
+    seed: int = 0  # every random draw of the run: lidar noise and dropped beams, actuation noise, odometry drift
     danger_clearance: Optional[float] = None  # m; default footprint radius + 0.3 m
     mapping: str = "known"  # or "scan"
     navigator: Optional[NavigatorParams] = None  # default NavigatorParams()
     record_cycles: bool = False  # keep a CycleTrace per cycle
+    latency: int = 0  # cycles from a scan to its command reaching the wheels
+    actuation_noise: tuple = (0.0, 0.0)  # (m/s, rad/s) std of Gaussian noise on the command the wheels get
+    actuation_lag: float = 0.0  # s, time constant of the first-order lag of (v, omega) toward the command
+    odometry_drift: tuple = (0.0, 0.0)  # (m, rad) std of the believed pose's random walk after 1 m travelled, 1 rad turned
 
 
 EPISODE_OPTIONS = tuple(f.name for f in dataclasses.fields(EpisodeOptions))
@@ -213,7 +253,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     robot by the command and the discs by ``dt``, and referees. The episode
     ends on success (within ``goal_tolerance`` of the goal, default the
     planner's), collision (exact footprint contact anywhere along a step, the
-    turn included), a fall (the centre entering grade-4 terrain), the
+    turn included, whoever moves into whom), a fall (the centre entering grade-4 terrain), the
     navigator giving up ("failed"), or ``max_steps`` cycles (timeout).
 
     A path-following planner (``heading_target == "key_nodes"`` or a critic
@@ -225,7 +265,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     map when the path ahead is blocked or after a stall.
 
     With ``lidar`` the robot scans the true world every cycle (noise drawn from
-    ``seed``): hits the map does not explain become obstacles for the local
+    ``seed``; ``lidar.dropout`` of the beams read nothing): hits the map does not explain become obstacles for the local
     planner, and the obstacle density I of the detect window (``window``) is
     recorded with the path deviation D. A ``weight_policy`` (``FuzzyWeights``,
     ``FixedWeights`` or a Python subclass of ``WeightPolicy``) then sets the
@@ -242,6 +282,20 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     the same layout and marks what the lidar (``lidar``, default
     ``LidarParams()``) hits.
 
+    The robot's body is as honest as asked (all off by default; see
+    :class:`fgdwa.actuation.Body`): ``latency`` cycles pass before a command
+    reaches the wheels (they keep the previous one meanwhile),
+    ``actuation_noise`` (std_v m/s, std_omega rad/s) perturbs the command they
+    get, ``actuation_lag`` (s) is the time constant with which (v, omega)
+    follow it, and ``odometry_drift`` (std per metre travelled, per radian
+    turned) makes the pose the navigator believes wander from the true one: it
+    gets the believed pose, its scans are taken from the true pose but placed at
+    the believed one (so its map takes the error), while the referee (goal,
+    collision, fall, clearances, ``poses``) always uses the true pose;
+    ``believed_poses`` holds the odometry's. Every random draw (lidar noise and
+    dropped beams, actuation, odometry) comes from ``seed``: the same seed gives
+    the same episode, bit for bit.
+
     ``record_cycles`` keeps a :class:`CycleTrace` per cycle in ``cycles`` (the
     scored rollouts, the chosen one, the scan's hits): what the GIF replays.
     About 10 kB a cycle with a 541-beam lidar, so it is off for experiments.
@@ -253,7 +307,9 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     options = dataclasses.replace(options, **settings)
     limits, footprint, params, max_steps = options.limits, options.footprint, options.params, options.max_steps
     goal_tolerance, global_path, lidar, window = options.goal_tolerance, options.global_path, options.lidar, options.window
-    weight_policy, seed, mapping, navigator = options.weight_policy, options.seed, options.mapping, options.navigator
+    weight_policy, mapping, navigator = options.weight_policy, options.mapping, options.navigator
+    seed = check_seed(options.seed)
+    settings_of_body = body_settings(options)
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
     params = params if params is not None else PlannerParams()
@@ -293,9 +349,12 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         robot.set_global_path(given)
 
     dt = params.dt
-    state = RobotState(start_pose, (0.0, 0.0))
+    body = Body(settings_of_body, dt, seed)
+    pose = Pose2(*start_pose)  # where the robot is
+    believed = start_pose.copy()  # where its odometry says it is
     poses = [start_pose.copy()]
-    commands = []
+    believed_poses = [believed.copy()]
+    commands, twists = [], []
     clearances = [truth.clearance(footprint, start_pose, 0.0)]
     statuses, modes, cycle_times, targets = [], [], [], []
     density, deviation, betas, deltas = [], [], [], []
@@ -306,16 +365,19 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     outcome = "timeout"
     scan = None
     for k in range(max_steps):
-        position = np.array([state.pose.x, state.pose.y])
+        position = np.array([pose.x, pose.y])
         if np.hypot(*(position - goal_point)) <= tolerance:
             outcome = "success"
             break
         t = k * dt
         discs_now = world.discs_at(t)
         if scanner is not None:
-            scan = scanner.scan(state.pose, discs_now, 0.0, seed=int(seed) * SCAN_SEED_STRIDE + k)
+            # Taken from where the robot is, placed where it believes it is.
+            scan = scanner.scan(pose, discs_now, 0.0, seed=seed * SCAN_SEED_STRIDE + k)
+            if body.drifts:
+                scan.pose = tuple(believed)
         tic = time.perf_counter()
-        record = robot.step(state, scan, t, discs_now if world.discs_known else [])
+        record = robot.step(RobotState(believed, body.twist), scan, t, discs_now if world.discs_known else [])
         cycle_times.append(time.perf_counter() - tic)
         if record.mode == NavigatorMode.Failed:
             outcome = "failed"
@@ -333,25 +395,29 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         modes.append(record.mode.name)
         statuses.append(record.status.name if record.planned else record.mode.name)
         targets.append(record.target)
-        command = record.command
+        command = body.wheels(record.command)
         # Steep ground slows the robot whatever it was told.
         factor = world.passing_factors[world.grade_at(position)]
         command = Twist(min(command.v, factor * limits.v_max), command.omega)
-        pose = step(state.pose, command, dt)
-        state = RobotState(pose, command)
+        driven = body.drive(command)
+        pose = step(pose, driven, dt)
+        believed = body.odometry(believed, driven, pose)
         commands.append((command.v, command.omega))
+        twists.append((driven.v, driven.omega))
         poses.append(np.array([pose.x, pose.y, pose.theta]))
+        believed_poses.append(believed.copy())
         if world.has_moving:
-            truth.discs = discs_now
-        clearances.append(truth.clearance(footprint, pose, dt))
-        if collides_during_step(truth, footprint, poses[-2], poses[-1], 0.0, dt):
+            truth.discs = world.discs_at(t + dt)
+        clearances.append(truth.clearance(footprint, pose, 0.0))
+        if collides_during_step(truth, footprint, poses[-2], poses[-1], t, dt,
+                                discs_at=world.discs_at if world.has_moving else None):
             outcome = "collision"
             break
         if world.terrain is not None and _falls(world, poses[-2], poses[-1]):
             outcome = "fall"
             break
     else:
-        position = np.array([state.pose.x, state.pose.y])
+        position = np.array([pose.x, pose.y])
         if np.hypot(*(position - goal_point)) <= tolerance:
             outcome = "success"
 
@@ -382,6 +448,8 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         smoothness=smoothness(np.array(commands, dtype=float).reshape(-1, 2)),
         poses=poses_arr,
         commands=np.array(commands, dtype=float).reshape(-1, 2),
+        twists=np.array(twists, dtype=float).reshape(-1, 2),
+        believed_poses=np.array(believed_poses),
         clearances=clear_arr,
         statuses=statuses,
         modes=modes,

@@ -56,8 +56,10 @@ def test_fgdwa_reaches_the_goal_of_five_worlds(barn, mapping):
 def test_scan_map_knows_less_than_the_world(barn):
     task = barn_tasks(barn, [0], ["gdwa"], "scan")[0]
     run = run_barn_task(task)
-    # Obstacles far from the robot's way stay unknown.
-    assert 0 < run.scan_map.sum() < run.cells.sum()
+    # Obstacles far from the robot's way stay unknown. (With range noise the map
+    # also marks free cells just short of obstacles, so count the true ones.)
+    mapped_truth = (run.scan_map != 0) & (run.cells != 0)
+    assert 0 < mapped_truth.sum() < (run.cells != 0).sum()
 
 
 def test_summary_rates_and_means_on_hand_made_rows():
@@ -100,6 +102,30 @@ def test_command_writes_runs_summary_and_failures(barn_file, tmp_path, capsys):
         assert stats["success"] + stats["collision"] + stats["timeout"] == pytest.approx(1.0)
         assert set(stats) >= {"n", "success", "collision", "timeout", "mean_time", "mean_score"}
     assert (out / "failures.png").stat().st_size > 1000
+    # The lidar is noisy by default, and the command says so.
+    assert summary["setup"]["noise_std"] == 0.03 and summary["setup"]["dropout"] == 0.01
+    assert summary["setup"]["latency"] == 0
+
+
+def test_noise_dropout_and_latency_reach_the_runs(barn, barn_file, tmp_path):
+    from fgdwa.cli import main
+
+    assert BarnSetup().lidar().noise_std == 0.03 and BarnSetup().lidar().dropout == 0.01
+    setup = BarnSetup(noise_std=0.0, dropout=0.0, latency=2)
+    assert setup.lidar().noise_std == 0.0 and setup.lidar().dropout == 0.0
+    run = run_barn_task(barn_tasks(barn, [0], ["fgdwa"], "known", setup=setup)[0])
+    prompt = run_barn_task(barn_tasks(barn, [0], ["fgdwa"], "known", setup=BarnSetup(noise_std=0.0, dropout=0.0))[0])
+    # Two cycles pass before the first command reaches the wheels.
+    np.testing.assert_array_equal(run.poses[:3], np.repeat(run.poses[:1], 3, axis=0))
+    assert not np.array_equal(prompt.poses[1], prompt.poses[0])
+    out = tmp_path / "b"
+    assert main(["barn", "--data", str(barn_file), "--worlds", "0", "--planners", "dwa", "--noise", "0.05",
+                 "--dropout", "0.02", "--latency", "1", "--executor", "serial", "--no-progress", "--no-figures",
+                 "--out", str(out)]) == 0
+    written = json.loads((out / "summary.json").read_text())["setup"]
+    assert (written["noise_std"], written["dropout"], written["latency"]) == (0.05, 0.02, 1)
+    for args in (["--noise", "-0.1"], ["--dropout", "1.0"], ["--latency", "-2"]):
+        assert main(["barn", "--data", str(barn_file), "--worlds", "0", "--out", str(out), *args]) == 2
 
 
 def test_bad_requests_are_named(barn, barn_file, tmp_path):

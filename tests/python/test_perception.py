@@ -84,6 +84,24 @@ def test_discs_noise_and_determinism():
     assert abs(a[180] - 1.5) < 0.1
 
 
+def test_dropped_beams_read_inf_at_the_rate_asked():
+    # A wall 1 m ahead in every beam's way: without dropout each beam hits it.
+    field = wall_field(1.0)
+    lidar = fgdwa.LidarParams(fov_deg=90, beams=2001, dropout=0.1)
+    assert lidar.dropout == 0.1
+    assert "dropout=0.1" in repr(lidar)
+    scanner = fgdwa.LaserScanner(lidar, field)
+    ranges = scanner.scan((0.0, 0.0, 0.0), seed=5).ranges
+    dropped = np.isinf(ranges)
+    # Binomial(2001, 0.1): mean 200, std 13.4; six standard deviations either side.
+    assert 120 < dropped.sum() < 280
+    clean = fgdwa.LaserScanner(fgdwa.LidarParams(fov_deg=90, beams=2001), field).scan((0.0, 0.0, 0.0)).ranges
+    np.testing.assert_array_equal(ranges[~dropped], clean[~dropped])
+    np.testing.assert_array_equal(ranges, scanner.scan((0.0, 0.0, 0.0), seed=5).ranges)
+    assert not np.array_equal(dropped, np.isinf(scanner.scan((0.0, 0.0, 0.0), seed=6).ranges))
+    assert fgdwa.LidarParams().dropout == 0.0
+
+
 def test_scan_hits_are_sensed_as_obstacles():
     scan = fgdwa.LaserScanner(fgdwa.LidarParams(), wall_field(1.0)).scan((0.0, 0.0, 0.0))
     hits = scan.hit_points
@@ -104,6 +122,9 @@ def test_perception_bad_input():
         fgdwa.LidarParams(fov_deg=400.0)
     with pytest.raises(fgdwa.FgdwaError, match="noise_std"):
         fgdwa.LidarParams(noise_std=float("nan"))
+    for bad in (-0.1, 1.0, float("nan")):
+        with pytest.raises(fgdwa.FgdwaError, match="dropout"):
+            fgdwa.LidarParams(dropout=bad)
     with pytest.raises(fgdwa.FgdwaError, match="radius"):
         fgdwa.DetectWindowParams(radius=0.0)
     with pytest.raises(fgdwa.FgdwaError, match="pose"):

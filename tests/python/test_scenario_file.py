@@ -274,6 +274,7 @@ def test_bad_value(tmp_path):
     ("unknown_obstacles: [[1.0, 1.0, 0.5, 1.2]]\n", "unknown_obstacles[0]", "[1.0, 1.0, 0.5, 1.2]"),
     ("unknown_obstacles: [[1.0, 1.0, 9.0, 1.2]]\n", "unknown_obstacles[0]", "[1.0, 1.0, 9.0, 1.2]"),
     ("variability: {lidar_noise_std: -0.01}\n", "variability.lidar_noise_std", "-0.01"),
+    ("variability: {lidar_dropout: 1.0}\n", "variability.lidar_dropout", "1.0"),
 ])
 def test_bad_values_name_key_and_value(tmp_path, extra, key, value):
     path = write(tmp_path, TINY + extra)

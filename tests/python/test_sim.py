@@ -186,3 +186,129 @@ def test_episode_options_and_keyword_settings_agree():
     assert run_episode(scenario.world, scenario.start, scenario.goal, options, max_steps=5).steps == 5
     with pytest.raises(fgdwa.FgdwaError, match="max_step"):
         run_episode(scenario.world, scenario.start, scenario.goal, max_step=5)
+
+
+# ----------------------------------------------------------------------------- the robot's body
+
+
+def open_run(**settings):
+    """The classic DWA driving 8 m across an empty world."""
+    return run_episode(World(), (0.0, 0.0, 0.0), (8.0, 0.0), **settings)
+
+
+def test_latency_delays_every_command_by_its_cycles():
+    prompt = open_run(max_steps=12)
+    late = open_run(max_steps=12, latency=1)
+    # Nothing reaches the wheels in the first cycle: the robot stays at rest.
+    np.testing.assert_array_equal(late.commands[0], (0.0, 0.0))
+    np.testing.assert_array_equal(late.poses[1], late.poses[0])
+    # Still at rest in the second cycle, the navigator computes what it computed in the first,
+    # and that now reaches the wheels.
+    np.testing.assert_array_equal(late.commands[1], prompt.commands[0])
+    later = open_run(max_steps=12, latency=3)
+    np.testing.assert_array_equal(later.commands[:3], np.zeros((3, 2)))
+    assert later.commands[3, 0] > 0
+    assert later.mileage < late.mileage < prompt.mileage
+
+
+def test_actuation_lag_follows_the_command_as_a_first_order_lag():
+    tau, dt = 0.5, 0.15
+    lagging = open_run(max_steps=20, actuation_lag=tau)
+    # From rest toward the first command: the mean of v over the cycle is
+    # v_c (1 - tau / dt (1 - exp(-dt / tau))).
+    v_c = lagging.commands[0, 0]
+    assert v_c > 0
+    assert lagging.twists[0, 0] == pytest.approx(v_c * (1 - tau / dt * (1 - np.exp(-dt / tau))), rel=1e-12)
+    assert np.all(lagging.twists[:5, 0] < lagging.commands[:5, 0])
+    assert lagging.mileage < open_run(max_steps=20).mileage
+    # Without lag the robot moves exactly as commanded.
+    prompt = open_run(max_steps=20)
+    np.testing.assert_array_equal(prompt.twists, prompt.commands)
+
+
+def test_actuation_noise_has_the_asked_spread():
+    # A latency longer than the run: the wheels only ever get the noise on a standing command.
+    result = open_run(max_steps=400, latency=1000, actuation_noise=(0.05, 0.1), seed=2)
+    v, omega = result.commands.T
+    # 400 draws: the sample std lies within 15 % of the true one with odds far beyond 1e-5.
+    assert 0.85 * 0.05 < np.std(v) < 1.15 * 0.05
+    assert 0.85 * 0.1 < np.std(omega) < 1.15 * 0.1
+    assert abs(np.mean(v)) < 0.05 * 5 / np.sqrt(400)
+
+
+def test_odometry_drift_misleads_the_navigator_but_not_the_referee():
+    world = demo_scenario().world
+    start, goal = (1.2, 4.0, 0.0), (10.8, 4.0)
+    result = run_episode(world, start, goal, max_steps=40, lidar=fgdwa.LidarParams(beams=181),
+                         odometry_drift=(0.05, 0.05), seed=1)
+    assert result.outcome == "timeout"
+    np.testing.assert_array_equal(result.believed_poses[0], result.poses[0])
+    gap = np.hypot(*(result.believed_poses[:, :2] - result.poses[:, :2]).T)
+    assert gap[-1] > 1e-3
+    # The scans were placed where the robot believed it was when it took them ...
+    last_scan = result.last_scan
+    np.testing.assert_allclose((last_scan.pose.x, last_scan.pose.y, last_scan.pose.theta), result.believed_poses[-2])
+    # ... while the referee's poses follow the driven twists exactly, from the true start.
+    for k in range(result.steps):
+        pose = fgdwa.step(result.poses[k], result.twists[k], 0.15)
+        np.testing.assert_array_equal(result.poses[k + 1], (pose.x, pose.y, pose.theta))
+    truth = fgdwa.CollisionWorld(world.true_grid())
+    assert result.clearances[-1] == pytest.approx(truth.clearance(fgdwa.Footprint.circle(0.25), result.poses[-1]))
+    # Without drift the believed pose is the true one.
+    plain = run_episode(world, start, goal, max_steps=10, lidar=fgdwa.LidarParams(beams=181), seed=1)
+    np.testing.assert_array_equal(plain.believed_poses, plain.poses)
+
+
+def test_the_same_seed_repeats_a_noisy_episode_bit_for_bit():
+    scenario = demo_scenario()
+    noisy = dict(max_steps=60, lidar=fgdwa.LidarParams(beams=181, noise_std=0.03, dropout=0.02), latency=1,
+                 actuation_noise=(0.03, 0.05), actuation_lag=0.2, odometry_drift=(0.02, 0.02))
+    a = run_episode(scenario.world, scenario.start, scenario.goal, seed=11, **noisy)
+    b = run_episode(scenario.world, scenario.start, scenario.goal, seed=11, **noisy)
+    c = run_episode(scenario.world, scenario.start, scenario.goal, seed=12, **noisy)
+    for name in ("poses", "believed_poses", "commands", "twists", "clearances"):
+        np.testing.assert_array_equal(getattr(a, name), getattr(b, name))
+    np.testing.assert_array_equal(a.last_scan.ranges, b.last_scan.ranges)
+    assert a.outcome == b.outcome and a.steps == b.steps
+    assert not np.array_equal(a.poses[:20], c.poses[:20])
+
+
+def test_a_disc_driven_into_a_standing_robot_is_a_collision():
+    disc = fgdwa.Disc((3.0, 0.0), 0.3, velocity=(-1.0, 0.0))
+    # The robot is told to stand still throughout: no command reaches its wheels in time.
+    result = run_episode(World(discs=[disc]), (0.0, 0.0, 0.0), (-20.0, 0.0), max_steps=60, latency=60)
+    assert result.outcome == "collision"
+    assert np.all(result.poses == result.poses[0])
+    # The disc's edge reaches the robot's after 2.45 s: in cycle 17 of 0.15 s.
+    assert result.steps == 17
+
+
+def test_a_fast_disc_passing_a_standing_robot_within_one_step_is_a_collision():
+    robot = fgdwa.Footprint.circle(0.25)
+    standing = (0.0, 0.0, 0.0)
+    fast = fgdwa.Disc((-1.0, 0.0), 0.1, velocity=(20.0, 0.0))  # from x = -1 to x = +1 in 0.1 s
+    truth = fgdwa.CollisionWorld(None, [fast])
+    assert not truth.in_collision(robot, standing, 0.0) and not truth.in_collision(robot, standing, 0.1)
+    assert collides_during_step(truth, robot, standing, standing, 0.0, 0.1)
+    # The same disc 0.5 m aside passes clear.
+    aside = fgdwa.CollisionWorld(None, [fgdwa.Disc((-1.0, 0.5), 0.1, velocity=(20.0, 0.0))])
+    assert not collides_during_step(aside, robot, standing, standing, 0.0, 0.1)
+    # Discs given by where they are at each time: a mover along its route, restored afterwards.
+    mover = fgdwa.sim.MovingObstacle(radius=0.1, waypoints=np.array([[-1.0, 0.0], [1.0, 0.0]]), speed=20.0,
+                                     mode="once")
+    world = World(movers=[mover])
+    truth = fgdwa.CollisionWorld(None, world.discs_at(0.0))
+    assert collides_during_step(truth, robot, standing, standing, 0.0, 0.1, discs_at=world.discs_at)
+    assert truth.discs[0].center[0] == pytest.approx(-1.0)
+
+
+@pytest.mark.parametrize("setting, value", [
+    ("latency", -1), ("latency", 1.5), ("latency", True),
+    ("actuation_noise", (-0.1, 0.0)), ("actuation_noise", (0.1,)), ("actuation_noise", "ab"),
+    ("actuation_lag", -0.1), ("actuation_lag", float("nan")),
+    ("odometry_drift", (float("nan"), 0.0)), ("odometry_drift", None),
+    ("seed", -1), ("seed", 0.5),
+])
+def test_bad_body_settings_are_named(setting, value):
+    with pytest.raises(fgdwa.FgdwaError, match=setting):
+        open_run(max_steps=2, **{setting: value})

@@ -15,6 +15,7 @@ struct LidarParams {
   int beams = 541;                // beams, both ends of the field of view included
   double max_range = 10.0;        // m; a beam with no hit within it reads +inf
   double noise_std = 0.0;         // m, Gaussian noise added to each hit's range
+  double dropout = 0.0;           // probability in [0, 1) that a beam returns nothing and reads +inf
   void validate() const;
   double increment() const { return beams > 1 ? fov / (beams - 1) : 0.0; }
   // Beam i's angle relative to the heading, rad.
@@ -39,7 +40,8 @@ class LaserScanner {
   LaserScanner(const LidarParams& params, std::shared_ptr<const DistanceField> world);
   const LidarParams& params() const { return params_; }
 
-  // One scan at `pose`, the discs placed `t` seconds ahead; noise drawn from `rng`.
+  // One scan at `pose`, the discs placed `t` seconds ahead; noise and dropped
+  // beams drawn from `rng` (nothing is drawn when both are off).
   void scan(const Pose2& pose, const std::vector<Disc>& discs, double t, std::mt19937_64& rng, Scan& out) const;
   // Range of one ray from `origin` along `angle` (world frame), no noise.
   double cast(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const;

@@ -350,7 +350,8 @@ def describe_world_ids(ids: Sequence[int]) -> str:
 _RANGE = re.compile(r"(\d+)\s*-\s*(\d+)(?:\s*:\s*(\d+))?\Z")
 
 
-def parse_world_selection(text: str, available: Optional[Iterable[int]] = None) -> List[int]:
+def parse_world_selection(text: str, available: Optional[Iterable[int]] = None, what: str = "world selection",
+                          noun: str = "world id") -> List[int]:
     """World ids of a selection, in the order written, without repeats.
 
     ``text`` is ``all`` or comma-separated items, each a world id (``12``) or an
@@ -358,44 +359,45 @@ def parse_world_selection(text: str, available: Optional[Iterable[int]] = None) 
     challenge's local test set 0, 6, ..., 294). With ``available`` (the ids a data
     set holds), ``all`` means all of them, a range keeps those it holds (and must
     keep one), and a single id it does not hold is an error; without it, ``all`` is
-    an error.
+    an error. ``what`` and ``noun`` name the selection and its items in errors
+    (the dynamic benchmark's seeds use the same syntax).
     """
     if not isinstance(text, str):
-        raise FgdwaError(f"world selection {text!r}: expected a string such as 'all', '0,6,12' or '0-49'")
+        raise FgdwaError(f"{what} {text!r}: expected a string such as 'all', '0,6,12' or '0-49'")
     have = None if available is None else sorted(set(int(i) for i in available))
     have_set = None if have is None else set(have)
     spec = text.strip()
     if spec.lower() == "all":
         if have is None:
-            raise FgdwaError("world selection 'all': needs a data set to say which worlds there are")
+            raise FgdwaError(f"{what} 'all': needs a data set to say which worlds there are")
         return list(have)
     if not spec:
-        raise FgdwaError("world selection '': empty (use 'all', ids such as '0,6,12' or a range such as '0-49')")
+        raise FgdwaError(f"{what} '': empty (use ids such as '0,6,12' or a range such as '0-49')")
     ids: List[int] = []
     for item in spec.split(","):
         item = item.strip()
         if item.isdigit():
             wid = int(item)
             if have_set is not None and wid not in have_set:
-                raise FgdwaError(f"world selection {text!r}: world {wid} is not in the data set "
+                raise FgdwaError(f"{what} {text!r}: world {wid} is not in the data set "
                                  f"({describe_world_ids(have)})")
             ids.append(wid)
             continue
         match = _RANGE.match(item)
         if not match:
-            raise FgdwaError(f"world selection {text!r}: cannot read {item!r} (expected 'all', a world id such as "
+            raise FgdwaError(f"{what} {text!r}: cannot read {item!r} (expected 'all', a {noun} such as "
                              f"'12', or a range such as '0-49' or '0-299:6')")
         first, last = int(match.group(1)), int(match.group(2))
         step = int(match.group(3)) if match.group(3) else 1
         if last < first:
-            raise FgdwaError(f"world selection {text!r}: range {item!r} runs backwards")
+            raise FgdwaError(f"{what} {text!r}: range {item!r} runs backwards")
         if step < 1:
-            raise FgdwaError(f"world selection {text!r}: range {item!r} needs a step >= 1")
+            raise FgdwaError(f"{what} {text!r}: range {item!r} needs a step >= 1")
         chosen = range(first, last + 1, step)
         if have_set is not None:
             chosen = [wid for wid in chosen if wid in have_set]
             if not chosen:
-                raise FgdwaError(f"world selection {text!r}: no world of {item!r} is in the data set "
+                raise FgdwaError(f"{what} {text!r}: no world of {item!r} is in the data set "
                                  f"({describe_world_ids(have)})")
         ids.extend(chosen)
     return list(dict.fromkeys(ids))

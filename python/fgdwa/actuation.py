@@ -1,0 +1,142 @@
+"""The robot's body between the navigator's command and the ground: command
+latency, actuation noise and lag, and the odometry the navigator believes.
+
+``run_episode`` keeps one :class:`Body` per episode. Each cycle the navigator's
+command goes in (:meth:`Body.wheels`), the twist the robot really moves with
+comes out (:meth:`Body.drive`), and the pose the robot believes it reached is
+its odometry (:meth:`Body.odometry`). Every draw comes from generators seeded
+from the episode's seed, one stream for the actuators and one for odometry, so
+switching one on leaves the other's draws unchanged.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from dataclasses import dataclass
+import numpy as np
+
+from fgdwa._core import FgdwaError, Twist, step, wrap_angle
+
+ACTUATION_STREAM = 1  # the second word of the actuators' generator seed: (seed, ACTUATION_STREAM)
+ODOMETRY_STREAM = 2
+
+
+def _non_negative_pair(value, name: str, units: str) -> np.ndarray:
+    try:
+        pair = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        pair = None
+    if pair is None or pair.shape != (2,) or not np.all(np.isfinite(pair)) or np.any(pair < 0):
+        raise FgdwaError(f"{name} = {value!r}: expected two finite numbers >= 0 ({units})")
+    return pair
+
+
+def check_seed(seed) -> int:
+    """The episode's seed as a Python int; it must be an integer >= 0."""
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise FgdwaError(f"seed = {seed!r}: must be an integer >= 0")
+    return int(seed)
+
+
+@dataclass(frozen=True)
+class BodySettings:
+    """The episode options that shape the body, checked (see EpisodeOptions)."""
+
+    latency: int = 0  # cycles
+    actuation_noise: tuple = (0.0, 0.0)  # (m/s, rad/s)
+    actuation_lag: float = 0.0  # s
+    odometry_drift: tuple = (0.0, 0.0)  # (m per sqrt(m) travelled, rad per sqrt(rad) turned)
+
+    def __post_init__(self):
+        latency = self.latency
+        if isinstance(latency, bool) or not isinstance(latency, (int, np.integer)) or latency < 0:
+            raise FgdwaError(f"latency = {latency!r}: must be an integer >= 0 (control cycles)")
+        object.__setattr__(self, "actuation_noise",
+                           tuple(_non_negative_pair(self.actuation_noise, "actuation_noise", "std of v in m/s, "
+                                                    "std of omega in rad/s")))
+        object.__setattr__(self, "odometry_drift",
+                           tuple(_non_negative_pair(self.odometry_drift, "odometry_drift", "m per metre travelled, "
+                                                    "rad per rad turned")))
+        lag = self.actuation_lag
+        if isinstance(lag, bool) or not isinstance(lag, (int, float, np.floating, np.integer)) \
+                or not math.isfinite(lag) or lag < 0:
+            raise FgdwaError(f"actuation_lag = {lag!r}: must be a finite number >= 0 (s, time constant)")
+
+
+class Body:
+    """One episode's actuators and odometry (see the module's docstring).
+
+    * latency: the command computed in cycle k reaches the wheels in cycle
+      k + latency; until a computed command arrives the wheels keep the last
+      one they had (at rest at the start).
+    * actuation noise: Gaussian noise (std_v, std_omega) added to the command
+      the wheels get, every cycle.
+    * actuation lag: (v, omega) approach that command as a first-order lag of
+      time constant ``actuation_lag``; over a cycle the robot moves with the
+      lag's mean twist and ends it at the lag's end value.
+    * odometry drift: the believed pose follows the driven twist plus a random
+      walk whose std grows as ``drift[0] * sqrt(metres travelled)`` in x and y
+      and ``drift[1] * sqrt(radians turned)`` in heading; the heading's error
+      turns later motion, so the position's error grows beyond it.
+    """
+
+    def __init__(self, settings: BodySettings, dt: float, seed: int):
+        self.settings = settings
+        self.dt = float(dt)
+        self._pending = deque()
+        self._wheels = Twist(0.0, 0.0)  # the last command the wheels got
+        self.twist = Twist(0.0, 0.0)  # the robot's velocity now
+        self._actuation_rng = np.random.default_rng([seed, ACTUATION_STREAM])
+        self._odometry_rng = np.random.default_rng([seed, ODOMETRY_STREAM])
+        noise = settings.actuation_noise
+        self._noisy = noise[0] > 0 or noise[1] > 0
+        drift = settings.odometry_drift
+        self.drifts = drift[0] > 0 or drift[1] > 0
+
+    def wheels(self, computed: Twist) -> Twist:
+        """The command the wheels get this cycle, given the one the navigator computed."""
+        latency = self.settings.latency
+        if latency == 0:
+            command = computed
+        else:
+            self._pending.append(computed)
+            command = self._pending.popleft() if len(self._pending) > latency else self._wheels
+        self._wheels = command
+        if self._noisy:
+            std_v, std_omega = self.settings.actuation_noise
+            dv, domega = self._actuation_rng.normal(0.0, (std_v, std_omega))
+            command = Twist(command.v + dv, command.omega + domega)
+        return command
+
+    def drive(self, target: Twist) -> Twist:
+        """Move the velocity toward ``target`` for one cycle; the mean twist of the cycle."""
+        tau = self.settings.actuation_lag
+        if tau == 0:
+            self.twist = target
+            return target
+        keep = math.exp(-self.dt / tau)  # what remains of the gap to the target at the cycle's end
+        mean_keep = tau / self.dt * (1.0 - keep)  # its mean over the cycle
+        v0, w0 = self.twist.v, self.twist.omega
+        mean = Twist(target.v + (v0 - target.v) * mean_keep, target.omega + (w0 - target.omega) * mean_keep)
+        self.twist = Twist(target.v + (v0 - target.v) * keep, target.omega + (w0 - target.omega) * keep)
+        return mean
+
+    def odometry(self, believed, driven: Twist, true_pose) -> np.ndarray:
+        """The pose the robot believes after moving with ``driven`` for one cycle
+        from ``believed``; the true pose itself when odometry does not drift."""
+        if not self.drifts:
+            return np.array([true_pose.x, true_pose.y, true_pose.theta])
+        pose = step(believed, driven, self.dt)
+        std_xy, std_theta = self.settings.odometry_drift
+        travelled, turned = abs(driven.v) * self.dt, abs(driven.omega) * self.dt
+        ex, ey, etheta = self._odometry_rng.normal(
+            0.0, (std_xy * math.sqrt(travelled), std_xy * math.sqrt(travelled), std_theta * math.sqrt(turned)))
+        return np.array([pose.x + ex, pose.y + ey, wrap_angle(pose.theta + etheta)])
+
+
+def body_settings(options) -> BodySettings:
+    """The BodySettings of an EpisodeOptions."""
+    return BodySettings(latency=options.latency, actuation_noise=options.actuation_noise,
+                        actuation_lag=options.actuation_lag, odometry_drift=options.odometry_drift)
+

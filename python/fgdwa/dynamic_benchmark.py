@@ -1,0 +1,249 @@
+"""The dynamic benchmark ``fgdwa dynamic``: planners on DynaBARN-style fields
+of moving discs (:mod:`fgdwa.dynamic_fields`), scored by outcome and time.
+
+One run is one field (level, seed) and one planner label. Each run loads the
+field's scenario document exactly as ``fgdwa run FILE`` loads the file, and
+runs it with ``run_scenario(scenario, preset, seed)``: the seed that made the
+field also draws the start's jitter, the discs' phases and the lidar's noise,
+so ``fgdwa run FIELD.yaml --planner PRESET --seed SEED`` replays a run. The
+outputs are those of ``fgdwa barn`` (:func:`fgdwa.barn_benchmark.write_run_outputs`):
+runs.csv, summary.json, failures.png, plus the scenario file of every field a
+run failed on (``fields/``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import MappingProxyType
+from typing import Optional, Sequence
+
+import numpy as np
+
+from fgdwa._core import FgdwaError, NavigatorParams
+from fgdwa.barn_benchmark import BarnRun, check_sensing, format_table, write_run_outputs
+from fgdwa.datasets.barn import parse_world_selection
+from fgdwa.dynamic_fields import (DROPOUT, NOISE_STD, check_field_seed, check_level, closed_route, field_name,
+                                  generate_field, write_field)
+from fgdwa.experiments import run_tasks
+from fgdwa.scenario import run_scenario, trial_variation
+from fgdwa.scenario_file import scenario_from_dict
+
+# A planner label -> (planner preset, NavigatorParams overrides). A variant of a
+# preset is one more row, e.g. "fgdwa-slow-replan": ("fgdwa", {"replan_period": 2.0}).
+PLANNER_VARIANTS = MappingProxyType({
+    "dwa": ("dwa", {}),
+    "gdwa": ("gdwa", {}),
+    "sgdwa": ("sgdwa", {}),
+    "fgdwa": ("fgdwa", {}),
+    "dwb": ("dwb", {}),
+})
+OUTCOMES = ("success", "collision", "timeout", "failed")
+RUN_FIELDS = ("level", "seed", "planner", "outcome", "success", "time", "mileage", "min_clearance", "replans",
+              "backing_up", "cycle_ms_mean", "cycle_ms_p95", "wall_time")
+
+
+@dataclass(frozen=True)
+class DynamicSetup:
+    """What every run shares beyond its field: the lidar's range noise (m) and
+    dropped-beam rate (written into each field's variability) and the command
+    latency (control cycles)."""
+
+    noise_std: float = NOISE_STD
+    dropout: float = DROPOUT
+    latency: int = 0
+
+    def __post_init__(self):
+        check_sensing("DynamicSetup", self.noise_std, self.dropout, self.latency)
+
+
+@dataclass(frozen=True)
+class DynamicTask:
+    """One run, self-contained: the worker regenerates the field from (level, seed)."""
+
+    level: str
+    seed: int
+    planner: str  # a PLANNER_VARIANTS label
+    setup: DynamicSetup = field(default_factory=DynamicSetup)
+
+
+def check_variants(planners) -> list:
+    """The planner labels (a list or comma-separated text), checked against PLANNER_VARIANTS, without repeats."""
+    if isinstance(planners, str):
+        planners = [p.strip() for p in planners.split(",") if p.strip()]
+    planners = list(dict.fromkeys(planners))
+    if not planners:
+        raise FgdwaError("planners: name at least one (e.g. fgdwa,dwb)")
+    for name in planners:
+        if name not in PLANNER_VARIANTS:
+            raise FgdwaError(f"planner {name!r} unknown (known: {', '.join(PLANNER_VARIANTS)})")
+    return planners
+
+
+def parse_seeds(text) -> list:
+    """Seeds from '0-49', '3,7,9' or '0-99:10' (the syntax of BARN's world selections)."""
+    if isinstance(text, (int, np.integer)) and not isinstance(text, bool):
+        return [check_field_seed(text)]
+    return parse_world_selection(text, what="seeds", noun="seed")
+
+
+def describe_seeds(seeds: Sequence[int]) -> str:
+    seeds = sorted(seeds)
+    if len(seeds) <= 8:
+        return "seeds " + ", ".join(str(s) for s in seeds)
+    return f"{len(seeds)} seeds, {seeds[0]}..{seeds[-1]}"
+
+
+def dynamic_tasks(level: str, seeds: Sequence[int], planners: Sequence[str],
+                  setup: Optional[DynamicSetup] = None) -> list:
+    """One task per seed and planner (seed-major)."""
+    level = check_level(level)
+    planners = check_variants(planners)
+    setup = setup if setup is not None else DynamicSetup()
+    return [DynamicTask(level, check_field_seed(seed), planner, setup) for seed in seeds for planner in planners]
+
+
+def field_document(task: DynamicTask) -> dict:
+    return generate_field(task.level, task.seed, task.setup.noise_std, task.setup.dropout)
+
+
+def run_dynamic_task(task: DynamicTask) -> BarnRun:
+    """Run one task (in whatever process calls it)."""
+    scenario = scenario_from_dict(field_document(task), where=field_name(task.level, task.seed))
+    preset, overrides = PLANNER_VARIANTS[task.planner]
+    tic = time.perf_counter()
+    result = run_scenario(scenario, preset, task.seed, navigator=NavigatorParams(**overrides),
+                          latency=task.setup.latency)
+    wall = time.perf_counter() - tic
+    cycle_ms = 1e3 * result.cycle_times if len(result.cycle_times) else np.array([float("nan")])
+    row = {
+        "level": task.level, "seed": task.seed, "planner": task.planner, "outcome": result.outcome,
+        "success": int(result.outcome == "success"), "time": result.sim_time, "mileage": result.mileage,
+        "min_clearance": result.min_clearance, "replans": max(0, len(result.paths) - 1),
+        "backing_up": result.statuses.count("BackingUp"), "cycle_ms_mean": float(np.mean(cycle_ms)),
+        "cycle_ms_p95": float(np.percentile(cycle_ms, 95)), "wall_time": wall,
+    }
+    _, world, _ = trial_variation(scenario, task.seed)
+    grid = world.grid
+    cells = (np.asarray(grid.cells) != 0).astype(np.uint8)
+    if world.hidden is not None:
+        cells[(cells == 0) & (np.asarray(world.hidden.cells) != 0)] = 2
+    paths = result.paths if result.paths else ([] if result.global_path is None else [(0, result.global_path)])
+    return BarnRun(row=row, cells=cells, extent=tuple(grid.extent), poses=result.poses, paths=paths,
+                   label=f"{task.level} seed {task.seed}",
+                   routes=[closed_route(m.waypoints, m.mode) for m in world.movers],
+                   discs=[(d.center[0], d.center[1], d.radius) for d in world.discs_at(result.sim_time)])
+
+
+def run_dynamic(level: str, seeds: Sequence[int], planners: Sequence[str], setup: Optional[DynamicSetup] = None,
+                executor: str = "local", scheduler: Optional[str] = None, workers: int = 2,
+                progress: bool = True) -> list:
+    """Every run, in task order (:func:`fgdwa.experiments.run_tasks` runs them)."""
+    tasks = dynamic_tasks(level, seeds, planners, setup)
+    return run_tasks(tasks, executor=executor, scheduler=scheduler, workers=workers, progress=progress,
+                     runner=run_dynamic_task)
+
+
+def replay_command(path, planner: str, seed: int, latency: int) -> str:
+    """The ``fgdwa run`` command that replays a run of the field in ``path``."""
+    preset, overrides = PLANNER_VARIANTS[planner]
+    command = f"fgdwa run {path} --planner {preset} --seed {seed}"
+    if latency:
+        command += f" --latency {latency}"
+    if overrides:
+        command += f"  # with NavigatorParams({', '.join(f'{k}={v!r}' for k, v in overrides.items())})"
+    return command
+
+
+def write_failed_fields(runs: Sequence[BarnRun], out_dir, setup: DynamicSetup) -> list:
+    """Write the scenario file of every field a run failed on into ``out_dir``/fields;
+    return one entry per failed run: planner, seed, outcome, file, replay command."""
+    failed = []
+    written = set()
+    for run in runs:
+        row = run.row
+        if row["outcome"] == "success":
+            continue
+        task = DynamicTask(row["level"], row["seed"], row["planner"], setup)
+        path = Path(out_dir) / "fields" / f"{field_name(task.level, task.seed)}.yaml"
+        if path not in written:
+            write_field(field_document(task), path, command=f"fgdwa dynamic generate --level {task.level} "
+                        f"--seed {task.seed} --noise {setup.noise_std:g} --dropout {setup.dropout:g}")
+            written.add(path)
+        failed.append({"planner": row["planner"], "seed": row["seed"], "outcome": row["outcome"], "file": str(path),
+                       "replay": replay_command(path, row["planner"], row["seed"], setup.latency)})
+    return failed
+
+
+def dynamic_command(args) -> int:
+    """``fgdwa dynamic``: run, print the table, write the outputs."""
+    if args.scheduler is not None and args.executor != "dask":
+        raise FgdwaError("--scheduler needs --executor dask")
+    level = check_level(args.level)
+    seeds = parse_seeds(args.seeds)
+    planners = check_variants(args.planners)
+    setup = DynamicSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency)
+    tic = time.perf_counter()
+    runs = run_dynamic(level, seeds, planners, setup, executor=args.executor, scheduler=args.scheduler,
+                       workers=args.workers, progress=not args.no_progress)
+    wall = time.perf_counter() - tic
+    failed = write_failed_fields(runs, args.out, setup)
+    head = {"level": level, "seeds": seeds, "setup": dataclasses.asdict(setup), "wall_time": wall,
+            "failed": failed}
+    summary = write_run_outputs(runs, args.out, RUN_FIELDS, head, figure=not args.no_figures, outcomes=OUTCOMES)
+    print(format_table(summary, f"dynamic fields, level {level}, {describe_seeds(seeds)}", OUTCOMES))
+    print(f"{len(runs)} runs in {wall:.1f} s; wrote {Path(args.out) / 'runs.csv'}, summary.json"
+          + ("" if args.no_figures else ", failures.png")
+          + (f", {len({f['file'] for f in failed})} field file(s) of failed runs in {Path(args.out) / 'fields'}"
+             if failed else ""))
+    return 0
+
+
+def generate_command(args) -> int:
+    """``fgdwa dynamic generate``: write one field's scenario file."""
+    document = generate_field(check_level(args.level), check_field_seed(args.seed), args.noise, args.dropout)
+    path = write_field(document, args.out, command=f"fgdwa dynamic generate --level {args.level} --seed {args.seed} "
+                       f"--noise {args.noise:g} --dropout {args.dropout:g}")
+    print(f"wrote {path}: {document['description']}")
+    print(f"run it: fgdwa run {path} --seed {args.seed} --gif out/run/{document['name']}.gif")
+    return 0
+
+
+def register_dynamic_commands(subparsers) -> None:
+    """Add ``dynamic`` (run the benchmark) and ``dynamic generate`` to an argparse
+    sub-parser set; the handlers are stored as ``func(args, argv) -> int``."""
+    from fgdwa.barn_cli import add_executor_arguments, add_sensing_arguments
+    from fgdwa.dynamic_fields import LEVELS
+
+    dynamic = subparsers.add_parser(
+        "dynamic", help="run planners on DynaBARN-style fields of moving discs (or: dynamic generate)",
+        description="Run planners on fields of discs moving across the robot's way, unknown to the planner "
+                    "(seen only by the lidar), with boxes missing from the map; `fgdwa dynamic generate` writes "
+                    "one field as a scenario file.")
+    dynamic.add_argument("--level", choices=list(LEVELS), default="medium",
+                         help="easy: 2 discs at 0.2-0.4 m/s; medium: 4 at 0.3-0.6 m/s; hard: 6 at 0.4-0.8 m/s "
+                              "(default medium)")
+    dynamic.add_argument("--seeds", default="0-49", metavar="SPEC",
+                         help="field seeds: '0-49' (default), '3,7,9', '0-99:10'")
+    dynamic.add_argument("--planners", default="fgdwa,dwb", metavar="LIST",
+                         help=f"comma-separated planner labels (default fgdwa,dwb; known: "
+                              f"{', '.join(PLANNER_VARIANTS)})")
+    add_sensing_arguments(dynamic, DynamicSetup())
+    add_executor_arguments(dynamic)
+    dynamic.add_argument("--out", default="out/dynamic", metavar="DIR",
+                         help="directory for runs.csv, summary.json, failures.png and fields/ (default out/dynamic)")
+    dynamic.add_argument("--no-figures", action="store_true", help="skip failures.png")
+    dynamic.add_argument("--no-progress", action="store_true", help="no progress bar")
+    dynamic.set_defaults(func=lambda args, *_: dynamic_command(args))
+    sub = dynamic.add_subparsers(dest="dynamic_command", required=False, metavar="{generate}")
+    gen = sub.add_parser("generate", help="write one field (level, seed) as a scenario file for `fgdwa run`")
+    gen.add_argument("--level", choices=list(LEVELS), required=True)
+    gen.add_argument("--seed", type=int, required=True, help="field seed (an integer >= 0)")
+    gen.add_argument("--noise", type=float, default=NOISE_STD, metavar="STD",
+                     help=f"lidar range noise std written into the field, m (default {NOISE_STD:g})")
+    gen.add_argument("--dropout", type=float, default=DROPOUT, metavar="P",
+                     help=f"probability a lidar beam returns nothing, written into the field (default {DROPOUT:g})")
+    gen.add_argument("--out", required=True, metavar="FILE", help="the scenario YAML to write")
+    gen.set_defaults(func=lambda args, *_: generate_command(args))
