@@ -9,7 +9,7 @@
 // Navigator::step is timed (manual time); the scan and the motion are the world.
 //
 //   BM_NavigatorStep/circle    r 0.25 m circle, 1.2 m/s, on a 10 m x 10 m map at 0.1 m
-//   BM_NavigatorStep/jackal    the Jackal's rectangle, speed capped at 1 m/s as in BARN
+//   BM_NavigatorStep/jackal    the Jackal's rectangle, speed capped at 1 m/s and rollouts of 1 s as in BARN
 //
 // Arg 0: map known (obstacles the map lacks still come from the scans);
 // arg 1: map built from the scans. A table of medians and 95th percentiles
@@ -85,6 +85,8 @@ struct Loop {
         lidar(noisy_lidar()),
         scanner(lidar, world_field),
         mode(map_mode) {
+    // The Jackal runs as in BARN (BarnSetup): rollouts of 1 s at 0.1 s.
+    if (robot != "circle") preset.params.sim_time = 1.0;
     restart();
   }
 
@@ -130,6 +132,16 @@ std::map<std::string, std::vector<double>>& samples() {
   return all;
 }
 
+// Per configuration, the summed stage times (map, global, perception, plan) and the cycles that replanned.
+struct Stages {
+  double map = 0, global = 0, perception = 0, plan = 0;
+  int replans = 0;
+};
+std::map<std::string, Stages>& stages() {
+  static std::map<std::string, Stages> all;
+  return all;
+}
+
 void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
   const MapMode mode = bench.range(0) ? MapMode::Scan : MapMode::Known;
   std::mt19937 rng(3);
@@ -140,11 +152,21 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
     for (int c = 0; c < 100; ++c)
       if ((r < 15 && c < 15) || (r >= 85 && c >= 85)) cells[static_cast<std::size_t>(r) * 100 + c] = 0;
   Loop loop(robot, mode, OccupancyGrid(100, 100, 0.1, Vec2::Zero(), cells));
-  std::vector<double>& times = samples()[robot + (bench.range(0) ? " scan " : " known")];
+  const std::string name = robot + (bench.range(0) ? " scan " : " known");
+  std::vector<double>& times = samples()[name];
+  Stages& sum = stages()[name];
+  int path_version = 0;
   for (auto _ : bench) {
     const double seconds = loop.step();
     bench.SetIterationTime(seconds);
     times.push_back(seconds);
+    const CycleRecord& r = loop.navigator->record();
+    sum.map += r.times.map;
+    sum.global += r.times.global;
+    sum.perception += r.times.perception;
+    sum.plan += r.times.plan;
+    sum.replans += r.path_version != path_version;
+    path_version = r.path_version;
   }
 }
 
@@ -165,11 +187,16 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   std::printf("\nNavigator::step, 541 beams with %.0f cm range noise, moving discs tracked (ms):\n", 100 * fgdwa::kNoise);
-  std::printf("%-16s %8s %8s %8s %8s\n", "robot map", "cycles", "median", "p95", "max");
+  std::printf("%-16s %7s %7s %7s %7s | mean per stage: %6s %6s %6s %6s | %s\n", "robot map", "cycles", "median",
+              "p95", "max", "map", "global", "percep", "plan", "replans");
   for (const auto& [name, times] : fgdwa::samples()) {
     if (times.empty()) continue;
-    std::printf("%-16s %8zu %8.3f %8.3f %8.3f\n", name.c_str(), times.size(), 1e3 * fgdwa::percentile(times, 0.5),
-                1e3 * fgdwa::percentile(times, 0.95), 1e3 * *std::max_element(times.begin(), times.end()));
+    const fgdwa::Stages& s = fgdwa::stages()[name];
+    const double n = static_cast<double>(times.size());
+    std::printf("%-16s %7zu %7.3f %7.3f %7.3f | %22.3f %6.3f %6.3f %6.3f | %d\n", name.c_str(), times.size(),
+                1e3 * fgdwa::percentile(times, 0.5), 1e3 * fgdwa::percentile(times, 0.95),
+                1e3 * *std::max_element(times.begin(), times.end()), 1e3 * s.map / n, 1e3 * s.global / n,
+                1e3 * s.perception / n, 1e3 * s.plan / n, s.replans);
   }
   return 0;
 }
