@@ -20,6 +20,7 @@ void init_fuzzy(py::module_& m);
 void init_weights(py::module_& m);
 void init_controller(py::module_& m);
 void init_mapping(py::module_& m);
+void init_tracking(py::module_& m);
 void init_navigator(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
@@ -41,5 +42,6 @@ PYBIND11_MODULE(_core, m) {
   init_weights(m);
   init_controller(m);
   init_mapping(m);
+  init_tracking(m);
   init_navigator(m);
 }

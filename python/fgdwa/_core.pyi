@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplPlanner', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'Status', 'TerrainGrid', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'Status', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -1315,6 +1315,275 @@ class ScanMap:
         """
         (rows, cols) uint8: 0 unknown, 1 free, 2 occupied.
         """
+class SegmentParams:
+    """
+    How segment_scan cuts a scan into clusters: breakpoint gap (m, growing by range_gap_factor m per m of range), min_points, max_size (m), min_radius (m) of a fitted disc, range_noise (m) the disc fit assumes.
+    """
+    def __init__(self, base_gap: typing.SupportsFloat | typing.SupportsIndex = 0.15, range_gap_factor: typing.SupportsFloat | typing.SupportsIndex = 0.03, min_points: typing.SupportsInt | typing.SupportsIndex = 3, max_size: typing.SupportsFloat | typing.SupportsIndex = 1.6, min_radius: typing.SupportsFloat | typing.SupportsIndex = 0.05, range_noise: typing.SupportsFloat | typing.SupportsIndex = 0.03) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def base_gap(self) -> float:
+        ...
+    @property
+    def max_size(self) -> float:
+        ...
+    @property
+    def min_points(self) -> int:
+        ...
+    @property
+    def min_radius(self) -> float:
+        ...
+    @property
+    def range_gap_factor(self) -> float:
+        ...
+    @property
+    def range_noise(self) -> float:
+        ...
+class OrientedBox:
+    """
+    A box along the principal axes of a cluster's hits.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def angle(self) -> float:
+        """
+        rad, of the major axis.
+        """
+    @property
+    def center(self) -> tuple:
+        ...
+    @property
+    def half_extents(self) -> tuple:
+        """
+        m, along the major then the minor axis.
+        """
+class Cluster:
+    """
+    Neighbouring hits of one scan and the disc fitted to them (its centre behind the near side the lidar sees).
+    """
+    def __init__(self, center: typing.Any, radius: typing.SupportsFloat | typing.SupportsIndex = 0.3, occluded: bool = False) -> None:
+        """
+        A cluster of one point at its centre, e.g. to feed a Tracker detections made elsewhere.
+        """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def box(self) -> OrientedBox:
+        ...
+    @property
+    def center(self) -> tuple:
+        ...
+    @property
+    def first_beam(self) -> int:
+        ...
+    @property
+    def last_beam(self) -> int:
+        ...
+    @property
+    def occluded(self) -> bool:
+        """
+        A beam beside an end hit something nearer, or an end is the field of view's.
+        """
+    @property
+    def points(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 2) hits, m.
+        """
+    @property
+    def radius(self) -> float:
+        ...
+class TrackStatus:
+    """
+    Where a track is in its life.
+    
+    Members:
+    
+      Tentative
+    
+      Confirmed
+    
+      Lost
+    """
+    Confirmed: typing.ClassVar[TrackStatus]
+    Lost: typing.ClassVar[TrackStatus]
+    Tentative: typing.ClassVar[TrackStatus]
+    __members__: typing.ClassVar[dict[str, TrackStatus]]
+    @typing.overload
+    def __eq__(self, other: TrackStatus) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: TrackStatus) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class TrackerParams:
+    """
+    Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, moving_window s), max_speed (m/s), uncertainty_sigmas.
+    """
+    def __init__(self, gate: typing.SupportsFloat | typing.SupportsIndex = 1.0, gate_sigmas: typing.SupportsFloat | typing.SupportsIndex = 4.0, accel_std: typing.SupportsFloat | typing.SupportsIndex = 1.5, measurement_std: typing.SupportsFloat | typing.SupportsIndex = 0.03, confirm_hits: typing.SupportsInt | typing.SupportsIndex = 3, lost_time: typing.SupportsFloat | typing.SupportsIndex = 0.5, moving_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, moving_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, moving_window: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_speed: typing.SupportsFloat | typing.SupportsIndex = 3.0, uncertainty_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    @property
+    def accel_std(self) -> float:
+        ...
+    @property
+    def confirm_hits(self) -> int:
+        ...
+    @property
+    def gate(self) -> float:
+        ...
+    @property
+    def gate_sigmas(self) -> float:
+        ...
+    @property
+    def lost_time(self) -> float:
+        ...
+    @property
+    def max_speed(self) -> float:
+        ...
+    @property
+    def measurement_std(self) -> float:
+        ...
+    @property
+    def moving_sigmas(self) -> float:
+        ...
+    @property
+    def moving_speed(self) -> float:
+        ...
+    @property
+    def moving_window(self) -> float:
+        ...
+    @property
+    def uncertainty_sigmas(self) -> float:
+        ...
+class Track:
+    """
+    One followed object: constant-velocity Kalman state and its moving label.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def age(self) -> float:
+        ...
+    @property
+    def covariance(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (4, 4) covariance of (x, y, vx, vy).
+        """
+    @property
+    def hits(self) -> int:
+        ...
+    @property
+    def id(self) -> int:
+        ...
+    @property
+    def last_seen(self) -> float:
+        ...
+    @property
+    def moving(self) -> bool:
+        ...
+    @property
+    def position(self) -> tuple:
+        """
+        m, at the last update.
+        """
+    @property
+    def position_std(self) -> float:
+        ...
+    @property
+    def radius(self) -> float:
+        ...
+    @property
+    def speed_std(self) -> float:
+        ...
+    @property
+    def status(self) -> TrackStatus:
+        ...
+    @property
+    def velocity(self) -> tuple:
+        """
+        m/s, the filter's.
+        """
+    @property
+    def window_speed_std(self) -> float:
+        ...
+    @property
+    def window_velocity(self) -> tuple:
+        """
+        m/s, slope of the unoccluded centres over the last moving_window; moving_discs use it.
+        """
+class Tracker:
+    """
+    Follows segment_scan's clusters from scan to scan and says which move. update() with each scan's clusters and time; read tracks, moving_discs(), explains().
+    """
+    def __init__(self, params: TrackerParams = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def explains(self, point: typing.Any, margin: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> bool:
+        """
+        Whether the point lies within margin (m) of a confirmed moving track's grown disc.
+        """
+    def moving_discs(self) -> list[Disc]:
+        """
+        Moving tracks (confirmed or coasting) as Discs with their window velocity, radius grown by uncertainty_sigmas position std devs.
+        """
+    def reset(self) -> None:
+        """
+        Forgets every track; ids keep counting.
+        """
+    def update(self, clusters: collections.abc.Sequence[Cluster], time: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Predicts the tracks to time (s, never going back), assigns the clusters, corrects, starts, loses and removes tracks.
+        """
+    @property
+    def cluster_tracks(self) -> list[int]:
+        """
+        For each cluster of the last update, the id of the track that took it.
+        """
+    @property
+    def params(self) -> TrackerParams:
+        ...
+    @property
+    def time(self) -> float:
+        """
+        s, of the last update (NaN before the first).
+        """
+    @property
+    def tracks(self) -> list[Track]:
+        """
+        The tracks after the last update (a copy).
+        """
 class NavigatorMode:
     """
     What the navigator is doing this cycle.
@@ -1706,6 +1975,10 @@ def rollout(pose: typing.Any, twist: typing.Any, dt: typing.SupportsFloat | typi
 def sample_window(window: VelocityWindow, current: typing.Any, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21) -> numpy.typing.NDArray[numpy.float64]:
     """
     (n_v * n_omega, 2) sampled commands (v, omega), v-major.
+    """
+def segment_scan(scan: Scan, params: SegmentParams = ..., mask: typing.Any = None) -> list[Cluster]:
+    """
+    Clusters of the scan's neighbouring hits, each with a fitted disc and box; beams whose mask entry is false are skipped (mask: one flag per beam, or None).
     """
 def step(pose: typing.Any, twist: typing.Any, dt: typing.SupportsFloat | typing.SupportsIndex) -> Pose2:
     """

@@ -1,0 +1,151 @@
+#pragma once
+// Moving obstacles from lidar scans: a scan's hits are cut into clusters,
+// each fitted with a disc; a Tracker follows the discs from scan to scan with
+// a constant-velocity Kalman filter and says which tracks move, so that the
+// planner can predict them (moving_discs) and the static map can leave their
+// hits out (explains).
+//
+// Lifecycle: segment_scan() every scan; Tracker::update() with its clusters
+// and the scan's time (never going back); read tracks(), moving_discs(),
+// explains(); reset() to forget every track.
+#include <Eigen/Core>
+#include <cstdint>
+#include <deque>
+#include <utility>
+#include <vector>
+
+#include "fgdwa/clearance.hpp"
+#include "fgdwa/geometry.hpp"
+#include "fgdwa/perception.hpp"
+
+namespace fgdwa {
+
+struct SegmentParams {
+  double base_gap = 0.15;          // m: consecutive hits farther apart than base_gap + range_gap_factor * range start a new cluster
+  double range_gap_factor = 0.03;  // m per m of range: beams spread with range, so the gap does too
+  int min_points = 3;              // hits; smaller clusters are dropped as noise
+  double max_size = 1.6;           // m: clusters whose oriented box is longer (walls) are not objects to track
+  double min_radius = 0.05;        // m, smallest fitted disc radius (the largest is max_size / 2)
+  double range_noise = 0.03;       // m, range noise std the disc fit assumes when weighing hits against the apparent width
+  void validate() const;
+};
+
+// A box along the principal axes of a cluster's hits.
+struct OrientedBox {
+  Vec2 center = Vec2::Zero();        // m
+  Vec2 half_extents = Vec2::Zero();  // m, along the major then the minor axis
+  double angle = 0.0;                // rad, of the major axis
+};
+
+struct Cluster {
+  std::vector<Vec2> points;  // m, world frame, in beam order
+  int first_beam = 0;        // beam index of the first point
+  int last_beam = 0;         // beam index of the last point
+  // Fitted disc. A lidar sees only an object's near side, so the centre lies
+  // behind the hits, not at their centroid.
+  Vec2 center = Vec2::Zero();  // m
+  double radius = 0.0;         // m
+  OrientedBox box;
+  // A beam next to an end hit something nearer, or an end is the field of
+  // view's: part of the object may be hidden, so its disc is less certain.
+  bool occluded = false;
+};
+
+// Cuts the finite hits of `scan` into clusters of neighbouring hits, in beam
+// order; beams whose `mask` entry is 0 are skipped (e.g. hits on walls the map
+// already holds) when a mask of scan.ranges.size() entries is given. Clusters
+// with fewer than min_points hits or longer than max_size are dropped. A scan
+// covering the full circle joins the cluster across its seam.
+std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params = {},
+                                  const std::vector<std::uint8_t>* mask = nullptr);
+
+enum class TrackStatus : std::uint8_t {
+  Tentative,  // fewer than confirm_hits associations so far
+  Confirmed,  // seen in the latest update, or not seen for at most lost_time
+  Lost,       // not seen for more than lost_time; coasting until removed
+};
+const char* to_string(TrackStatus status);
+
+struct TrackerParams {
+  double gate = 1.0;                // m, largest distance between a track's prediction and a cluster it may take
+  double gate_sigmas = 4.0;         // the same in standard deviations of the prediction (Mahalanobis)
+  double accel_std = 1.5;           // m/s^2, white-noise acceleration of the constant-velocity model
+  double measurement_std = 0.03;    // m, std of an unoccluded cluster centre (and the least scatter the moving test assumes)
+  int confirm_hits = 3;             // associations before Tentative -> Confirmed
+  double lost_time = 0.5;           // s without association before Lost; removed after another lost_time
+  double moving_speed = 0.2;        // m/s: a confirmed track whose window speed, less moving_sigmas std, exceeds it is moving
+  double moving_sigmas = 2.0;       // std devs taken off the window speed before comparing it with moving_speed
+  double moving_window = 1.0;       // s: the window speed is the slope of a line fitted to the unoccluded centres this far back
+  double max_speed = 3.0;           // m/s; an association implying more is rejected
+  double uncertainty_sigmas = 2.0;  // position std devs added to a moving disc's radius
+  void validate() const;
+};
+
+struct Track {
+  int id = 0;  // unique over the tracker's life (reset() included)
+  TrackStatus status = TrackStatus::Tentative;
+  Vec2 position = Vec2::Zero();  // m, at the last update
+  Vec2 velocity = Vec2::Zero();  // m/s, the filter's: follows turns within a few scans, noisier
+  Eigen::Matrix4d covariance = Eigen::Matrix4d::Identity();  // of (x, y, vx, vy)
+  double radius = 0.0;     // m, smoothed over the clusters taken
+  bool moving = false;     // confirmed and fast enough with confidence (with hysteresis)
+  // m/s, slope of a line through the unoccluded centres of the last
+  // moving_window (as of the last association): steadier than `velocity`,
+  // half a window late through turns. The moving label and moving_discs use it.
+  Vec2 window_velocity = Vec2::Zero();
+  double window_speed_std = 0.0;  // m/s, its std (infinite until three such centres)
+  int hits = 0;            // associations, the first cluster included
+  double last_seen = 0.0;  // s, time of the last association
+  double age = 0.0;        // s since the first cluster
+  // m, std along the position's most uncertain direction.
+  double position_std() const;
+  // m/s, std of the speed (along the velocity; the largest when at rest).
+  double speed_std() const;
+};
+
+class Tracker {
+ public:
+  explicit Tracker(const TrackerParams& params = {});
+  const TrackerParams& params() const { return params_; }
+
+  // Predicts every track to `time` (s, not before the last update), assigns
+  // clusters to tracks (gated, optimal: confirmed and lost tracks first, then
+  // tentative ones), corrects the assigned tracks, starts tentative tracks
+  // from the clusters left, then marks tracks lost and removes the long lost.
+  void update(const std::vector<Cluster>& clusters, double time);
+  const std::vector<Track>& tracks() const { return tracks_; }
+  // For each cluster of the last update, the id of the track that took it.
+  const std::vector<int>& cluster_tracks() const { return cluster_tracks_; }
+  // s, time of the last update (NaN before the first).
+  double time() const { return time_; }
+
+  // Moving tracks, confirmed or lost (still coasting), as discs at the last
+  // update's time with their window velocity; the radius grown by
+  // uncertainty_sigmas position std devs.
+  std::vector<Disc> moving_discs() const;
+  // Whether `point` lies within `margin` (m) of the grown disc of a confirmed
+  // moving track, e.g. a hit the static map should not take.
+  bool explains(const Vec2& point, double margin = 0.0) const;
+  // Forgets every track; ids keep counting.
+  void reset();
+
+ private:
+  double measurement_variance(const Cluster& cluster) const;
+  void predict(double dt);
+  void correct(Track& track, const Cluster& cluster, double time);
+  void relabel(Track& track, const std::deque<std::pair<double, Vec2>>& centres) const;
+
+  // What a track remembers of its clusters.
+  struct Memory {
+    Vec2 seen_position;                             // m, after its last association
+    std::deque<std::pair<double, Vec2>> centres;    // (s, m) unoccluded centres within moving_window
+  };
+  TrackerParams params_;
+  std::vector<Track> tracks_;
+  std::vector<Memory> memory_;  // one per track
+  std::vector<int> cluster_tracks_;
+  double time_;
+  int next_id_ = 0;
+};
+
+}  // namespace fgdwa

@@ -1,0 +1,188 @@
+// segment_scan: breakpoint clustering of a scan's hits and the disc and box
+// fitted to each cluster.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "fgdwa/tracking.hpp"
+#include "validation.hpp"
+
+namespace fgdwa {
+
+void SegmentParams::validate() const {
+  detail::require_positive("segment base_gap", base_gap);
+  detail::require_non_negative("segment range_gap_factor", range_gap_factor);
+  detail::require_at_least("segment min_points", min_points, 1);
+  detail::require_positive("segment max_size", max_size);
+  detail::require_positive("segment min_radius", min_radius);
+  if (min_radius > 0.5 * max_size)
+    throw Error(detail::describe("segment min_radius", min_radius, "must be <= max_size / 2"));
+  detail::require_positive("segment range_noise", range_noise);
+}
+
+namespace {
+
+OrientedBox principal_box(const std::vector<Vec2>& points) {
+  Vec2 mean = Vec2::Zero();
+  for (const Vec2& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (const Vec2& p : points) scatter += (p - mean) * (p - mean).transpose();
+  // Major axis angle of a symmetric 2x2 matrix, in closed form.
+  const double angle = 0.5 * std::atan2(2.0 * scatter(0, 1), scatter(0, 0) - scatter(1, 1));
+  const Vec2 major(std::cos(angle), std::sin(angle)), minor(-major.y(), major.x());
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vec2& p : points) {
+    const Vec2 q((p - mean).dot(major), (p - mean).dot(minor));
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  const Vec2 mid = 0.5 * (lo + hi);
+  return OrientedBox{mean + mid.x() * major + mid.y() * minor, 0.5 * (hi - lo), angle};
+}
+
+// The disc of least squares distance to the hits, its radius pulled toward
+// the one the cluster's angular width implies. The width pins the radius
+// where the hits' curvature cannot (few hits, a far or flat-looking arc), so
+// the fit never runs off; with many hits the hits decide. Fitting the centre
+// rather than taking the centroid keeps it in place as the viewpoint moves.
+void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const SegmentParams& params) {
+  const std::vector<Vec2>& points = cluster.points;
+  const double max_radius = 0.5 * params.max_size;
+  Vec2 centroid = Vec2::Zero();
+  for (const Vec2& p : points) centroid += p;
+  centroid /= static_cast<double>(points.size());
+  const Vec2 ray = centroid - origin;
+  const double distance = ray.norm();
+  const Vec2 along = distance > 0.0 ? Vec2(ray / distance) : Vec2(1.0, 0.0);
+
+  // A disc of radius r at distance D spans 2 asin(r / D) of bearing, and its
+  // nearest point lies at D - r. The outermost beams fall on average half an
+  // increment inside its edges.
+  const double heading = std::atan2(along.y(), along.x());
+  double lo = 0.0, hi = 0.0, nearest = std::numeric_limits<double>::infinity();
+  for (const Vec2& p : points) {
+    const Vec2 d = p - origin;
+    const double bearing = angle_difference(std::atan2(d.y(), d.x()), heading);
+    lo = std::min(lo, bearing);
+    hi = std::max(hi, bearing);
+    nearest = std::min(nearest, d.norm());
+  }
+  const double s = std::sin(std::min(0.5 * (hi - lo + increment), 1.2));
+  const double apparent = std::clamp(nearest * s / (1.0 - s), params.min_radius, max_radius);
+  // How far the apparent radius may be off: a beam's spread at that range.
+  const double apparent_std = 0.5 * distance * increment + 0.02;
+
+  // Gauss-Newton on (cx, cy, r), started from the centroid pushed back along
+  // the ray by the mean depth of a visible half circle (2 / pi of its radius).
+  Eigen::Vector3d x(centroid.x() + 0.64 * apparent * along.x(), centroid.y() + 0.64 * apparent * along.y(),
+                    apparent);
+  const double w_point = 1.0 / (params.range_noise * params.range_noise);
+  const double w_prior = 1.0 / (apparent_std * apparent_std);
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
+    for (const Vec2& p : points) {
+      const Vec2 d = p - Vec2(x[0], x[1]);
+      const double n = std::max(d.norm(), 1e-9);
+      const Eigen::Vector3d J(-d.x() / n, -d.y() / n, -1.0);
+      normal += w_point * J * J.transpose();
+      gradient += w_point * J * (n - x[2]);
+    }
+    normal(2, 2) += w_prior;
+    gradient[2] += w_prior * (x[2] - apparent);
+    const Eigen::Vector3d step = normal.ldlt().solve(-gradient);
+    if (!step.allFinite()) break;
+    x += step;
+    x[2] = std::clamp(x[2], params.min_radius, max_radius);
+    if (step.cwiseAbs().maxCoeff() < 1e-6) break;
+  }
+  const Vec2 fitted(x[0], x[1]);
+  // A centre nearer the sensor than the hits would be a hollow; keep it behind.
+  if (fitted.allFinite() && (fitted - origin).dot(along) >= distance) {
+    cluster.center = fitted;
+    cluster.radius = x[2];
+  } else {
+    cluster.center = centroid + 0.64 * apparent * along;
+    cluster.radius = apparent;
+  }
+}
+
+}  // namespace
+
+std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params,
+                                  const std::vector<std::uint8_t>* mask) {
+  params.validate();
+  detail::require_finite("scan pose x", scan.pose.x);
+  detail::require_finite("scan pose y", scan.pose.y);
+  detail::require_finite("scan pose theta", scan.pose.theta);
+  detail::require_finite("scan angle_min", scan.angle_min);
+  detail::require_non_negative("scan angle_increment", scan.angle_increment);
+  const std::size_t n = scan.ranges.size();
+  if (mask && mask->size() != n)
+    throw Error(detail::describe("segment mask size", mask->size(), "must equal the scan's " + std::to_string(n) + " beams"));
+
+  const Vec2 origin = scan.pose.position();
+  std::vector<Cluster> clusters;
+  Cluster current;
+  double previous_range = 0.0;
+  const auto close = [&](bool keep) {
+    if (keep && !current.points.empty()) clusters.push_back(std::move(current));
+    current = Cluster{};
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = scan.ranges[i];
+    if (std::isnan(r) || r < 0.0) throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", r, "must be >= 0 or +inf"));
+    if (!std::isfinite(r) || (mask && (*mask)[i] == 0)) continue;
+    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+    const Vec2 p = origin + r * Vec2(std::cos(a), std::sin(a));
+    if (!current.points.empty() &&
+        (p - current.points.back()).norm() > params.base_gap + params.range_gap_factor * std::max(r, previous_range))
+      close(true);
+    if (current.points.empty()) current.first_beam = static_cast<int>(i);
+    current.points.push_back(p);
+    current.last_beam = static_cast<int>(i);
+    previous_range = r;
+  }
+  close(true);
+
+  // A full circle's last beam neighbours its first: one object across the seam.
+  const bool full_circle = scan.angle_increment * static_cast<double>(n) >= 2.0 * M_PI - 1e-9;
+  if (clusters.size() > 1 && full_circle) {
+    Cluster& first = clusters.front();
+    Cluster& last = clusters.back();
+    const double range_first = (first.points.front() - origin).norm(), range_last = (last.points.back() - origin).norm();
+    if ((first.points.front() - last.points.back()).norm() <=
+        params.base_gap + params.range_gap_factor * std::max(range_first, range_last)) {
+      last.points.insert(last.points.end(), first.points.begin(), first.points.end());
+      last.last_beam = first.last_beam;  // first_beam > last_beam: it wraps
+      clusters.erase(clusters.begin());
+    }
+  }
+
+  // Whether the beam beside `beam` (step -1 or +1) hides what lies beyond an
+  // end at `range`: it hit something nearer, or there is no such beam.
+  const auto hides = [&](int beam, int step, double range) {
+    int next = beam + step;
+    if (next < 0 || next >= static_cast<int>(n)) {
+      if (!full_circle) return true;
+      next = (next + static_cast<int>(n)) % static_cast<int>(n);
+    }
+    return scan.ranges[static_cast<std::size_t>(next)] < range;
+  };
+  std::vector<Cluster> kept;
+  for (Cluster& c : clusters) {
+    if (static_cast<int>(c.points.size()) < params.min_points) continue;
+    c.occluded = hides(c.first_beam, -1, (c.points.front() - origin).norm()) ||
+                 hides(c.last_beam, +1, (c.points.back() - origin).norm());
+    c.box = principal_box(c.points);
+    if (2.0 * c.box.half_extents.maxCoeff() > params.max_size) continue;
+    fit_disc(c, origin, scan.angle_increment, params);
+    kept.push_back(std::move(c));
+  }
+  return kept;
+}
+
+}  // namespace fgdwa

@@ -1,0 +1,283 @@
+// Tracker: constant-velocity Kalman tracks of the clusters' disc centres.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "assignment.hpp"
+#include "fgdwa/tracking.hpp"
+#include "validation.hpp"
+
+namespace fgdwa {
+
+const char* to_string(TrackStatus status) {
+  switch (status) {
+    case TrackStatus::Tentative: return "tentative";
+    case TrackStatus::Confirmed: return "confirmed";
+    case TrackStatus::Lost: return "lost";
+  }
+  return "?";
+}
+
+void TrackerParams::validate() const {
+  detail::require_positive("tracker gate", gate);
+  detail::require_positive("tracker gate_sigmas", gate_sigmas);
+  detail::require_positive("tracker accel_std", accel_std);
+  detail::require_positive("tracker measurement_std", measurement_std);
+  detail::require_at_least("tracker confirm_hits", confirm_hits, 1);
+  detail::require_positive("tracker lost_time", lost_time);
+  detail::require_non_negative("tracker moving_speed", moving_speed);
+  detail::require_non_negative("tracker moving_sigmas", moving_sigmas);
+  detail::require_positive("tracker moving_window", moving_window);
+  detail::require_positive("tracker max_speed", max_speed);
+  detail::require_non_negative("tracker uncertainty_sigmas", uncertainty_sigmas);
+}
+
+namespace {
+
+// Largest eigenvalue of a symmetric 2x2 matrix.
+double largest_eigenvalue(const Eigen::Matrix2d& m) {
+  const double mean = 0.5 * (m(0, 0) + m(1, 1)), half = 0.5 * (m(0, 0) - m(1, 1));
+  return mean + std::sqrt(half * half + m(0, 1) * m(0, 1));
+}
+
+// Weight of a new cluster's radius in a track's: radii of near-side fits
+// wobble with the viewpoint, so a track averages them.
+constexpr double kRadiusSmoothing = 0.3;
+// Std devs of measurement noise a cluster may lie beyond the reach of
+// max_speed before the association is rejected.
+constexpr double kSpeedCheckSigmas = 3.0;
+// How much less an occluded cluster's centre is trusted (std factor): its
+// disc was fitted to part of the object.
+constexpr double kOccludedStdFactor = 4.0;
+
+}  // namespace
+
+double Track::position_std() const {
+  return std::sqrt(std::max(largest_eigenvalue(covariance.topLeftCorner<2, 2>()), 0.0));
+}
+
+double Track::speed_std() const {
+  const Eigen::Matrix2d p = covariance.bottomRightCorner<2, 2>();
+  const double speed = velocity.norm();
+  if (speed < 1e-9) return std::sqrt(std::max(largest_eigenvalue(p), 0.0));
+  const Vec2 u = velocity / speed;
+  return std::sqrt(std::max(u.dot(p * u), 0.0));
+}
+
+Tracker::Tracker(const TrackerParams& params)
+    : params_(params), time_(std::numeric_limits<double>::quiet_NaN()) {
+  params_.validate();
+}
+
+void Tracker::reset() {
+  tracks_.clear();
+  memory_.clear();
+  cluster_tracks_.clear();
+  time_ = std::numeric_limits<double>::quiet_NaN();
+}
+
+void Tracker::predict(double dt) {
+  if (dt <= 0.0) return;
+  Eigen::Matrix4d F = Eigen::Matrix4d::Identity();
+  F(0, 2) = F(1, 3) = dt;
+  // Discrete white-noise acceleration.
+  const double q = params_.accel_std * params_.accel_std;
+  Eigen::Matrix4d Q = Eigen::Matrix4d::Zero();
+  Q.topLeftCorner<2, 2>() = Eigen::Matrix2d::Identity() * (0.25 * dt * dt * dt * dt * q);
+  Q.topRightCorner<2, 2>() = Q.bottomLeftCorner<2, 2>() = Eigen::Matrix2d::Identity() * (0.5 * dt * dt * dt * q);
+  Q.bottomRightCorner<2, 2>() = Eigen::Matrix2d::Identity() * (dt * dt * q);
+  for (Track& t : tracks_) {
+    t.position += dt * t.velocity;
+    t.covariance = F * t.covariance * F.transpose() + Q;
+    t.age += dt;
+  }
+}
+
+double Tracker::measurement_variance(const Cluster& cluster) const {
+  const double std = params_.measurement_std * (cluster.occluded ? kOccludedStdFactor : 1.0);
+  return std * std;
+}
+
+void Tracker::correct(Track& t, const Cluster& cluster, double time) {
+  const double r2 = measurement_variance(cluster);
+  const Eigen::Matrix2d S = t.covariance.topLeftCorner<2, 2>() + r2 * Eigen::Matrix2d::Identity();
+  const Eigen::Matrix<double, 4, 2> K = t.covariance.leftCols<2>() * S.inverse();
+  const Vec2 innovation = cluster.center - t.position;
+  Eigen::Vector4d x;
+  x << t.position, t.velocity;
+  x += K * innovation;
+  t.position = x.head<2>();
+  t.velocity = x.tail<2>();
+  // Joseph form: stays symmetric and positive under rounding.
+  Eigen::Matrix<double, 2, 4> H = Eigen::Matrix<double, 2, 4>::Zero();
+  H(0, 0) = H(1, 1) = 1.0;
+  const Eigen::Matrix4d I_KH = Eigen::Matrix4d::Identity() - K * H;
+  t.covariance = I_KH * t.covariance * I_KH.transpose() + r2 * K * K.transpose();
+  const double speed = t.velocity.norm();
+  if (speed > params_.max_speed) t.velocity *= params_.max_speed / speed;
+  t.radius += kRadiusSmoothing * (cluster.radius - t.radius);
+  ++t.hits;
+  t.last_seen = time;
+  t.status = t.hits >= params_.confirm_hits ? TrackStatus::Confirmed : TrackStatus::Tentative;
+}
+
+// A track is labelled moving once its window speed, less moving_sigmas std
+// devs, exceeds moving_speed, and keeps the label until that speed drops below
+// half of moving_speed. The window speed is a line fitted to a second of
+// centres, its std from their own scatter (never below measurement_std): it
+// does not hang on the filter's noise model, so static clutter whose centres
+// wobble more than modelled is not called moving, and a mover's label does not
+// flicker.
+void Tracker::relabel(Track& t, const std::deque<std::pair<double, Vec2>>& centres) const {
+  const std::size_t n = centres.size();
+  t.window_velocity = Vec2::Zero();
+  t.window_speed_std = std::numeric_limits<double>::infinity();
+  if (n >= 3) {
+    double t_mean = 0.0;
+    Vec2 p_mean = Vec2::Zero();
+    for (const auto& [time, p] : centres) t_mean += time, p_mean += p;
+    t_mean /= static_cast<double>(n);
+    p_mean /= static_cast<double>(n);
+    double stt = 0.0;
+    Vec2 stp = Vec2::Zero();
+    for (const auto& [time, p] : centres) {
+      stt += (time - t_mean) * (time - t_mean);
+      stp += (time - t_mean) * (p - p_mean);
+    }
+    if (stt > 0.0) {
+      t.window_velocity = stp / stt;
+      double scatter = 0.0;
+      for (const auto& [time, p] : centres) scatter += (p - p_mean - (time - t_mean) * t.window_velocity).squaredNorm();
+      const double point_std = std::max(std::sqrt(scatter / (2.0 * static_cast<double>(n - 2))), params_.measurement_std);
+      t.window_speed_std = point_std / std::sqrt(stt);
+    }
+  }
+  if (t.status == TrackStatus::Tentative) {
+    t.moving = false;
+    return;
+  }
+  if (t.status == TrackStatus::Lost) return;
+  const double speed = t.window_velocity.norm();
+  if (!t.moving)
+    t.moving = speed - params_.moving_sigmas * t.window_speed_std > params_.moving_speed;
+  else
+    t.moving = speed >= 0.5 * params_.moving_speed;
+}
+
+void Tracker::update(const std::vector<Cluster>& clusters, double time) {
+  detail::require_finite("tracker time", time);
+  if (time < time_)
+    throw Error(detail::describe("tracker time", time, "must not be before the last update's " + std::to_string(time_)));
+  for (std::size_t i = 0; i < clusters.size(); ++i) {
+    const std::string name = "cluster[" + std::to_string(i) + "] ";
+    detail::require_finite(name + "center x", clusters[i].center.x());
+    detail::require_finite(name + "center y", clusters[i].center.y());
+    detail::require_non_negative(name + "radius", clusters[i].radius);
+  }
+  predict(std::isnan(time_) ? 0.0 : time - time_);
+  time_ = time;
+  // Occluded centres stay out of the moving test: a partly hidden object's
+  // centre shifts as it is uncovered.
+  const auto remember = [&](Memory& memory, Track& track, const Cluster& cluster) {
+    memory.seen_position = track.position;
+    auto& centres = memory.centres;
+    if (!cluster.occluded) centres.emplace_back(time, cluster.center);
+    while (!centres.empty() && centres.front().first < time - params_.moving_window) centres.pop_front();
+    relabel(track, centres);
+  };
+
+  // Confirmed and lost tracks choose first, so a tentative track born of a
+  // stray cluster cannot take a known object's cluster.
+  cluster_tracks_.assign(clusters.size(), -1);
+  const double gate2 = params_.gate_sigmas * params_.gate_sigmas;
+  for (const bool tentative : {false, true}) {
+    std::vector<std::size_t> rows, cols;
+    for (std::size_t t = 0; t < tracks_.size(); ++t)
+      if ((tracks_[t].status == TrackStatus::Tentative) == tentative) rows.push_back(t);
+    for (std::size_t c = 0; c < clusters.size(); ++c)
+      if (cluster_tracks_[c] < 0) cols.push_back(c);
+    if (rows.empty() || cols.empty()) continue;
+    Eigen::MatrixXd cost(rows.size(), cols.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const Track& t = tracks_[rows[i]];
+      for (std::size_t j = 0; j < cols.size(); ++j) {
+        const Cluster& cluster = clusters[cols[j]];
+        const double r2 = measurement_variance(cluster);
+        const Eigen::Matrix2d S = t.covariance.topLeftCorner<2, 2>() + r2 * Eigen::Matrix2d::Identity();
+        const double reach = params_.max_speed * (time - t.last_seen) + kSpeedCheckSigmas * std::sqrt(r2);
+        const Vec2& z = cluster.center;
+        const Vec2 innovation = z - t.position;
+        const double d2 = innovation.dot(S.inverse() * innovation);
+        const bool allowed = innovation.norm() <= params_.gate && d2 <= gate2 &&
+                             (z - memory_[rows[i]].seen_position).norm() <= reach;
+        cost(i, j) = allowed ? d2 : std::numeric_limits<double>::infinity();
+      }
+    }
+    const std::vector<int> chosen = detail::assign(cost, std::vector<double>(rows.size(), gate2));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (chosen[i] < 0) continue;
+      const std::size_t c = cols[static_cast<std::size_t>(chosen[i])];
+      correct(tracks_[rows[i]], clusters[c], time);
+      remember(memory_[rows[i]], tracks_[rows[i]], clusters[c]);
+      cluster_tracks_[c] = tracks_[rows[i]].id;
+    }
+  }
+
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    if (cluster_tracks_[c] >= 0) continue;
+    Track t;
+    t.id = next_id_++;
+    t.position = clusters[c].center;
+    t.radius = clusters[c].radius;
+    // Nothing is known of the velocity yet but that it is below max_speed.
+    const double v_std = 0.5 * params_.max_speed;
+    const double p2 = measurement_variance(clusters[c]);
+    t.covariance = Eigen::Vector4d(p2, p2, v_std * v_std, v_std * v_std).asDiagonal();
+    t.hits = 1;
+    t.last_seen = time;
+    if (t.hits >= params_.confirm_hits) t.status = TrackStatus::Confirmed;
+    cluster_tracks_[c] = t.id;
+    memory_.emplace_back();
+    remember(memory_.back(), t, clusters[c]);
+    tracks_.push_back(t);
+  }
+
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    Track& t = tracks_[i];
+    const double unseen = time - t.last_seen;
+    if (unseen > 2.0 * params_.lost_time) continue;
+    if (unseen > params_.lost_time) t.status = TrackStatus::Lost;
+    if (kept != i) {
+      tracks_[kept] = std::move(t);
+      memory_[kept] = std::move(memory_[i]);
+    }
+    ++kept;
+  }
+  tracks_.resize(kept);
+  memory_.resize(kept);
+}
+
+std::vector<Disc> Tracker::moving_discs() const {
+  std::vector<Disc> discs;
+  for (const Track& t : tracks_) {
+    if (!t.moving || t.status == TrackStatus::Tentative) continue;
+    discs.push_back(Disc{t.position, t.radius + params_.uncertainty_sigmas * t.position_std(), t.window_velocity});
+  }
+  return discs;
+}
+
+bool Tracker::explains(const Vec2& point, double margin) const {
+  detail::require_finite("explains point x", point.x());
+  detail::require_finite("explains point y", point.y());
+  detail::require_non_negative("explains margin", margin);
+  for (const Track& t : tracks_) {
+    if (!t.moving || t.status != TrackStatus::Confirmed) continue;
+    if ((point - t.position).norm() <= t.radius + params_.uncertainty_sigmas * t.position_std() + margin) return true;
+  }
+  return false;
+}
+
+}  // namespace fgdwa

@@ -1,0 +1,486 @@
+// segment_scan and Tracker: clusters are the objects the lidar sees, their
+// discs sit where the objects are (not on their near side), movers are found
+// and followed at their speed, and static clutter is never called moving.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <random>
+
+#include "fgdwa/perception.hpp"
+#include "fgdwa/tracking.hpp"
+#include "test_support.hpp"
+
+namespace fgdwa::test {
+namespace {
+
+constexpr double kNoise = 0.03;  // m, lidar range noise of every scenario
+constexpr double kPeriod = 0.1;  // s, 10 Hz scans
+
+LidarParams noisy_lidar() {
+  LidarParams p;
+  p.noise_std = kNoise;
+  return p;
+}
+
+Scan scan_of(const LaserScanner& scanner, const Pose2& pose, const std::vector<Disc>& discs, double t,
+             std::mt19937_64& rng) {
+  Scan scan;
+  scanner.scan(pose, discs, t, rng, scan);
+  return scan;
+}
+
+// The cluster whose disc centre is nearest `p`.
+const Cluster& nearest_cluster(const std::vector<Cluster>& clusters, const Vec2& p) {
+  return *std::min_element(clusters.begin(), clusters.end(), [&](const Cluster& a, const Cluster& b) {
+    return (a.center - p).norm() < (b.center - p).norm();
+  });
+}
+
+const Track* nearest_track(const Tracker& tracker, const Vec2& p) {
+  const Track* best = nullptr;
+  for (const Track& t : tracker.tracks())
+    if (!best || (t.position - p).norm() < (best->position - p).norm()) best = &t;
+  return best;
+}
+
+Cluster cluster_at(const Vec2& center, double radius = 0.3) {
+  Cluster c;
+  c.points = {center};
+  c.center = center;
+  c.radius = radius;
+  return c;
+}
+
+Vec2 centroid(const Cluster& c) {
+  Vec2 sum = Vec2::Zero();
+  for (const Vec2& p : c.points) sum += p;
+  return sum / static_cast<double>(c.points.size());
+}
+
+// ---------------------------------------------------------------- segmentation
+
+TEST(Segment, DiscsApartAreTwoClustersDiscsTouchingOne) {
+  const LaserScanner scanner(LidarParams{}, nullptr);
+  std::mt19937_64 rng(1);
+  // Surfaces 0.4 m apart at 3 m: more than the 0.24 m gap there.
+  const std::vector<Disc> apart = {Disc{Vec2(3.0, -0.5), 0.3, Vec2::Zero()}, Disc{Vec2(3.0, 0.5), 0.3, Vec2::Zero()}};
+  const auto two = segment_scan(scan_of(scanner, Pose2{}, apart, 0.0, rng));
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_LT((nearest_cluster(two, Vec2(3.0, -0.5)).center - Vec2(3.0, -0.5)).norm(), 0.03);
+  EXPECT_LT((nearest_cluster(two, Vec2(3.0, 0.5)).center - Vec2(3.0, 0.5)).norm(), 0.03);
+  for (const Cluster& c : two) {
+    EXPECT_LE(c.first_beam, c.last_beam);
+    EXPECT_EQ(static_cast<int>(c.points.size()), c.last_beam - c.first_beam + 1);
+  }
+  // 0.1 m apart: one object as far as the lidar can tell.
+  const std::vector<Disc> touching = {Disc{Vec2(3.0, -0.35), 0.3, Vec2::Zero()},
+                                      Disc{Vec2(3.0, 0.35), 0.3, Vec2::Zero()}};
+  EXPECT_EQ(segment_scan(scan_of(scanner, Pose2{}, touching, 0.0, rng)).size(), 1u);
+}
+
+TEST(Segment, WallsAreDroppedBySize) {
+  // A 6 m wall across the view at x = 3.
+  std::vector<std::uint8_t> cells(60 * 60, 0);
+  for (int r = 0; r < 60; ++r) cells[r * 60 + 45] = 1;
+  const auto world = std::make_shared<const DistanceField>(OccupancyGrid(60, 60, 0.1, Vec2(-1.5, -3.0), cells));
+  const LaserScanner scanner(noisy_lidar(), world);
+  std::mt19937_64 rng(2);
+  const Scan scan = scan_of(scanner, Pose2{}, {Disc{Vec2(1.5, 0.0), 0.25, Vec2::Zero()}}, 0.0, rng);
+  const auto clusters = segment_scan(scan);
+  ASSERT_EQ(clusters.size(), 1u);  // the disc in front of it; the wall's two visible parts are too long
+  EXPECT_LT((clusters[0].center - Vec2(1.5, 0.0)).norm(), 0.05);
+  SegmentParams lenient;
+  lenient.max_size = 10.0;
+  EXPECT_EQ(segment_scan(scan, lenient).size(), 3u);
+}
+
+TEST(Segment, IsolatedHitsAreDroppedAsNoise) {
+  Scan scan;
+  scan.angle_min = -0.5 * M_PI;
+  scan.angle_increment = M_PI / 360.0;
+  scan.max_range = 10.0;
+  scan.ranges.assign(361, kInf);
+  for (int i : {40, 120, 300}) scan.ranges[i] = 2.0;    // lone hits
+  for (int i = 180; i < 186; ++i) scan.ranges[i] = 2.5;  // a small object
+  const auto clusters = segment_scan(scan);
+  ASSERT_EQ(clusters.size(), 1u);
+  EXPECT_EQ(clusters[0].first_beam, 180);
+  EXPECT_EQ(clusters[0].last_beam, 185);
+  SegmentParams every;
+  every.min_points = 1;
+  EXPECT_EQ(segment_scan(scan, every).size(), 4u);
+}
+
+TEST(Segment, MaskedBeamsAreSkipped) {
+  const LaserScanner scanner(LidarParams{}, nullptr);
+  std::mt19937_64 rng(3);
+  const std::vector<Disc> discs = {Disc{Vec2(3.0, -0.6), 0.3, Vec2::Zero()}, Disc{Vec2(3.0, 0.6), 0.3, Vec2::Zero()}};
+  const Scan scan = scan_of(scanner, Pose2{}, discs, 0.0, rng);
+  // Mask out the hits of the disc at y < 0 (a known static object, say).
+  std::vector<std::uint8_t> mask(scan.ranges.size(), 1);
+  const auto hits = scan.hit_points();
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i)
+    if (std::isfinite(scan.ranges[i]) && hits[k++].y() < 0.0) mask[i] = 0;
+  const auto clusters = segment_scan(scan, SegmentParams{}, &mask);
+  ASSERT_EQ(clusters.size(), 1u);
+  EXPECT_GT(clusters[0].center.y(), 0.0);
+  const std::vector<std::uint8_t> short_mask(10, 1);
+  expect_error_naming([&] { segment_scan(scan, SegmentParams{}, &short_mask); }, "mask");
+}
+
+TEST(Segment, DiscFitFindsTheCentreBehindTheNearSide) {
+  // The lidar sees the near half of a 0.3 m disc 3 m away, with 3 cm noise.
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  std::mt19937_64 rng(4);
+  const Vec2 truth(2.6, 1.5);  // 3 m at 30 deg
+  double sum_error = 0.0, sum_centroid_error = 0.0, worst = 0.0, worst_radius = 0.0;
+  constexpr int kScans = 50;
+  for (int k = 0; k < kScans; ++k) {
+    const auto clusters = segment_scan(scan_of(scanner, Pose2{}, {Disc{truth, 0.3, Vec2::Zero()}}, 0.0, rng));
+    ASSERT_EQ(clusters.size(), 1u);
+    const Cluster& c = clusters[0];
+    worst = std::max(worst, (c.center - truth).norm());
+    worst_radius = std::max(worst_radius, std::abs(c.radius - 0.3));
+    sum_error += (c.center - truth).norm();
+    sum_centroid_error += (centroid(c) - truth).norm();
+  }
+  std::cout << "disc fit at 3 m, 3 cm noise: mean centre error " << sum_error / kScans << " m, worst " << worst
+            << " m, worst radius error " << worst_radius << " m; centroid mean error " << sum_centroid_error / kScans
+            << " m\n";
+  EXPECT_LT(sum_error / kScans, 0.03);
+  EXPECT_LT(worst, 0.06);
+  EXPECT_LT(worst_radius, 0.05);
+  EXPECT_GT(sum_centroid_error / kScans, 0.15);  // what fitting the centre corrects
+}
+
+TEST(Segment, FitsAndBoxesAreSaneAcrossSizesAndRanges) {
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  std::mt19937_64 rng(5);
+  for (double radius : {0.1, 0.2, 0.4, 0.7}) {
+    for (double range : {1.0, 3.0, 6.0}) {
+      const Vec2 truth(range + radius, 0.2);
+      const auto clusters = segment_scan(scan_of(scanner, Pose2{}, {Disc{truth, radius, Vec2::Zero()}}, 0.0, rng));
+      ASSERT_EQ(clusters.size(), 1u) << "radius " << radius << ", range " << range;
+      const Cluster& c = clusters[0];
+      EXPECT_LT((c.center - truth).norm(), 0.1 + 0.5 * radius) << "radius " << radius << ", range " << range;
+      // The visible half of the disc: about a diameter across the ray, a radius deep.
+      EXPECT_NEAR(2.0 * c.box.half_extents.x(), 2.0 * radius, 0.15 + 0.2 * radius);
+      EXPECT_LE(c.box.half_extents.y(), radius + 0.05);
+      // The major axis runs across the ray (loosely when a few noisy hits make it).
+      const double across = std::atan2(truth.y(), truth.x()) + 0.5 * M_PI;
+      EXPECT_LT(std::abs(std::sin(c.box.angle - across)), c.points.size() >= 10 ? 0.3 : 0.6)
+          << "radius " << radius << ", range " << range << ", " << c.points.size() << " points";
+    }
+  }
+}
+
+TEST(Segment, AFullCircleScanJoinsTheObjectOnItsSeam) {
+  LidarParams circle;
+  circle.fov = 2.0 * M_PI;
+  circle.beams = 720;
+  const LaserScanner scanner(circle, nullptr);
+  std::mt19937_64 rng(6);
+  // Straight behind the sensor, where the first and last beams meet.
+  const auto clusters = segment_scan(scan_of(scanner, Pose2{}, {Disc{Vec2(-2.0, 0.0), 0.3, Vec2::Zero()}}, 0.0, rng));
+  ASSERT_EQ(clusters.size(), 1u);
+  EXPECT_GT(clusters[0].first_beam, clusters[0].last_beam);  // it wraps
+  EXPECT_LT((clusters[0].center - Vec2(-2.0, 0.0)).norm(), 0.03);
+}
+
+TEST(Segment, BadInputIsAnError) {
+  Scan scan;
+  scan.angle_increment = 0.01;
+  scan.ranges = {1.0, 1.0, NAN, 1.0};
+  expect_error_naming([&] { segment_scan(scan); }, "ranges[2]");
+  scan.ranges = {1.0, -1.0};
+  expect_error_naming([&] { segment_scan(scan); }, "ranges[1]");
+  scan.ranges = {1.0};
+  scan.pose.x = NAN;
+  expect_error_naming([&] { segment_scan(scan); }, "pose x");
+  scan.pose.x = 0.0;
+  SegmentParams p;
+  p.base_gap = -0.1;
+  expect_error_naming([&] { segment_scan(scan, p); }, "base_gap");
+  p = SegmentParams{};
+  p.min_points = 0;
+  expect_error_naming([&] { p.validate(); }, "min_points");
+  p = SegmentParams{};
+  p.min_radius = 1.0;  // above max_size / 2
+  expect_error_naming([&] { p.validate(); }, "min_radius");
+}
+
+// -------------------------------------------------------------------- tracking
+
+// Runs a tracker over `seconds` of 10 Hz scans of `discs` (placed at time t)
+// taken from `sensor(t)`; calls `each(t, tracker)` after every update.
+template <typename Sensor, typename Each>
+void run(Tracker& tracker, const std::vector<Disc>& discs, double seconds, std::uint64_t seed, Sensor sensor,
+         Each each) {
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  std::mt19937_64 rng(seed);
+  const int steps = static_cast<int>(std::lround(seconds / kPeriod));
+  for (int k = 0; k <= steps; ++k) {
+    const double t = k * kPeriod;
+    tracker.update(segment_scan(scan_of(scanner, sensor(t), discs, t, rng)), t);
+    each(t, tracker);
+  }
+}
+
+const auto kStill = [](double) { return Pose2{}; };
+
+TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
+  const Disc mover{Vec2(3.0, -1.0), 0.3, Vec2(0.1, 0.49)};  // 0.5 m/s
+  double worst = 0.0, worst_filter = 0.0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    Tracker tracker;
+    run(tracker, {mover}, 1.0, seed, kStill, [](double, const Tracker&) {});
+    ASSERT_EQ(tracker.tracks().size(), 1u) << "seed " << seed;
+    const Track& t = tracker.tracks()[0];
+    EXPECT_EQ(t.status, TrackStatus::Confirmed);
+    EXPECT_TRUE(t.moving) << "seed " << seed;
+    EXPECT_LT((t.position - mover.center_at(1.0)).norm(), 0.05) << "seed " << seed;
+    const auto discs = tracker.moving_discs();
+    ASSERT_EQ(discs.size(), 1u);
+    EXPECT_GT(discs[0].radius, t.radius);  // grown by the position's uncertainty
+    EXPECT_EQ(discs[0].velocity, t.window_velocity);
+    worst = std::max(worst, (discs[0].velocity - mover.velocity).norm());
+    worst_filter = std::max(worst_filter, (t.velocity - mover.velocity).norm());
+  }
+  std::cout << "0.5 m/s disc after 1 s at 10 Hz, 3 cm noise, worst over 5 seeds: velocity error " << worst
+            << " m/s (the filter's: " << worst_filter << " m/s)\n";
+  EXPECT_LT(worst, 0.05);
+  EXPECT_LT(worst_filter, 0.15);
+}
+
+TEST(Tracker, AStaticDiscIsNeverMovingAndSettlesAtRest) {
+  double worst_window = 0.0, worst_filter = 0.0, sum_filter = 0.0;
+  int samples = 0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    Tracker tracker;
+    run(tracker, {Disc{Vec2(3.0, 0.5), 0.2, Vec2::Zero()}}, 10.0, seed, kStill, [&](double t, const Tracker& tr) {
+      ASSERT_EQ(tr.tracks().size(), 1u);
+      const Track& track = tr.tracks()[0];
+      EXPECT_FALSE(track.moving) << "seed " << seed << ", t " << t;
+      if (t >= 1.0) {
+        worst_window = std::max(worst_window, track.window_velocity.norm());
+        worst_filter = std::max(worst_filter, track.velocity.norm());
+        sum_filter += track.velocity.norm();
+        ++samples;
+      }
+    });
+    EXPECT_TRUE(tracker.moving_discs().empty());
+  }
+  std::cout << "static disc after 1 s, 5 seeds: fastest window speed " << worst_window << " m/s; filter speed mean "
+            << sum_filter / samples << ", fastest " << worst_filter << " m/s\n";
+  EXPECT_LT(worst_window, 0.08);
+  EXPECT_LT(sum_filter / samples, 0.06);
+}
+
+TEST(Tracker, AStaticDiscSeenFromAMovingSensorIsNeverMoving) {
+  // The sensor circles a 0.6 m disc 1.6 m from its centre at 1 m/s, facing it:
+  // the side it sees turns at 0.6 rad/s, which moves the hits' centroid at
+  // about 0.25 m/s while the disc stands still.
+  const Vec2 pillar(0.0, 0.0);
+  const double orbit = 1.6, omega = 1.0 / orbit;
+  const auto sensor = [&](double t) {
+    const double a = omega * t;
+    return Pose2{pillar.x() + orbit * std::cos(a), pillar.y() + orbit * std::sin(a), a + M_PI};
+  };
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  double worst_fit = 0.0, worst_centroid = 0.0;
+  bool centroid_moving = false;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    Tracker fitted, centroids;
+    std::mt19937_64 rng(seed);
+    for (int k = 0; k <= 100; ++k) {
+      const double t = k * kPeriod;
+      auto clusters = segment_scan(scan_of(scanner, sensor(t), {Disc{pillar, 0.6, Vec2::Zero()}}, t, rng));
+      fitted.update(clusters, t);
+      for (Cluster& c : clusters) c.center = centroid(c);
+      centroids.update(clusters, t);
+      centroid_moving = centroid_moving || !centroids.moving_discs().empty();
+      // Grazing hits at the disc's edges may split off as small fragments of
+      // their own: no track at all may be called moving.
+      for (const Track& track : fitted.tracks()) EXPECT_FALSE(track.moving) << "seed " << seed << ", t " << t;
+      if (t >= 2.0) {
+        worst_fit = std::max(worst_fit, nearest_track(fitted, pillar)->window_velocity.norm());
+        worst_centroid = std::max(worst_centroid, nearest_track(centroids, pillar)->window_velocity.norm());
+      }
+    }
+  }
+  std::cout << "static 0.6 m disc from a circling sensor: fastest window speed after 2 s " << worst_fit
+            << " m/s (with centroids: " << worst_centroid << " m/s)\n";
+  EXPECT_LT(worst_fit, 0.1);
+  // The bias the fit removes: centroids would call the pillar moving.
+  EXPECT_GT(worst_centroid, 0.2);
+  EXPECT_TRUE(centroid_moving);
+}
+
+TEST(Tracker, CrossingMoversKeepTheirIds) {
+  // Two discs on crossing paths pass each other 0.8 m apart at t = 5 s, the
+  // second behind the first as seen from the sensor (partly hidden for about
+  // a second).
+  const Disc a{Vec2(3.0, -2.5), 0.25, Vec2(0.1, 0.5)};
+  const Disc b{Vec2(3.8, 2.5), 0.25, Vec2(0.1, -0.5)};
+  constexpr double kSeconds = 8.0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    Tracker tracker;
+    int id_a = -1, id_b = -1;
+    run(tracker, {a, b}, kSeconds, seed, kStill, [&](double t, const Tracker& tr) {
+      if (std::abs(t - 1.5) < 1e-9) {
+        id_a = nearest_track(tr, a.center_at(t))->id;
+        id_b = nearest_track(tr, b.center_at(t))->id;
+        ASSERT_NE(id_a, id_b);
+      }
+      if (t > 1.5) {
+        // Each id stays with its disc the whole way.
+        for (const Track& track : tr.tracks()) {
+          const Disc* own = track.id == id_a ? &a : track.id == id_b ? &b : nullptr;
+          if (own) {
+            EXPECT_LT((track.position - own->center_at(t)).norm(), 0.3) << "seed " << seed << ", t " << t;
+          }
+        }
+      }
+    });
+    const Track* end_a = nearest_track(tracker, a.center_at(kSeconds));
+    const Track* end_b = nearest_track(tracker, b.center_at(kSeconds));
+    EXPECT_EQ(end_a->id, id_a) << "seed " << seed;
+    EXPECT_EQ(end_b->id, id_b) << "seed " << seed;
+    EXPECT_TRUE(end_a->moving && end_b->moving) << "seed " << seed;
+  }
+}
+
+TEST(Tracker, TracksAreConfirmedThenLostThenRemoved) {
+  TrackerParams p;  // confirm_hits 3, lost_time 0.5
+  Tracker tracker(p);
+  const Vec2 at(2.0, 1.0);
+  tracker.update({cluster_at(at)}, 0.0);
+  ASSERT_EQ(tracker.tracks().size(), 1u);
+  const int id = tracker.tracks()[0].id;
+  EXPECT_EQ(tracker.tracks()[0].status, TrackStatus::Tentative);
+  EXPECT_EQ(tracker.cluster_tracks(), std::vector<int>{id});
+  tracker.update({cluster_at(at)}, 0.1);
+  EXPECT_EQ(tracker.tracks()[0].status, TrackStatus::Tentative);
+  tracker.update({cluster_at(at)}, 0.2);
+  EXPECT_EQ(tracker.tracks()[0].status, TrackStatus::Confirmed);
+  EXPECT_EQ(tracker.tracks()[0].hits, 3);
+  EXPECT_NEAR(tracker.tracks()[0].age, 0.2, 1e-12);
+  tracker.update({}, 0.65);  // unseen 0.45 s
+  EXPECT_EQ(tracker.tracks()[0].status, TrackStatus::Confirmed);
+  tracker.update({}, 0.75);  // unseen 0.55 s
+  EXPECT_EQ(tracker.tracks()[0].status, TrackStatus::Lost);
+  EXPECT_NEAR(tracker.tracks()[0].last_seen, 0.2, 1e-12);
+  tracker.update({}, 1.15);  // unseen 0.95 s: still coasting
+  ASSERT_EQ(tracker.tracks().size(), 1u);
+  tracker.update({}, 1.25);  // unseen 1.05 s: gone
+  EXPECT_TRUE(tracker.tracks().empty());
+
+  // A lost track found again is the same track, confirmed again.
+  tracker.update({cluster_at(at)}, 2.0);
+  tracker.update({cluster_at(at)}, 2.1);
+  tracker.update({cluster_at(at)}, 2.2);
+  const int second = tracker.tracks()[0].id;
+  EXPECT_NE(second, id);
+  tracker.update({}, 2.8);
+  EXPECT_EQ(tracker.tracks()[0].status, TrackStatus::Lost);
+  tracker.update({cluster_at(at)}, 2.9);
+  ASSERT_EQ(tracker.tracks().size(), 1u);
+  EXPECT_EQ(tracker.tracks()[0].id, second);
+  EXPECT_EQ(tracker.tracks()[0].status, TrackStatus::Confirmed);
+
+  tracker.reset();
+  EXPECT_TRUE(tracker.tracks().empty());
+  tracker.update({cluster_at(at)}, 0.0);  // time may start over after reset
+  EXPECT_GT(tracker.tracks()[0].id, second);  // ids are never reused
+}
+
+TEST(Tracker, AssignmentIsGloballyOptimal) {
+  // Two tracks at x = 0 and x = 1; next scan clusters at x = 0.55 and 1.5. The
+  // nearest pair (the track at 1 and 0.55) would leave 1.5 beyond the other's
+  // reach; the best assignment gives each track the cluster on its side.
+  TrackerParams p;
+  p.gate_sigmas = 100.0;
+  p.max_speed = 10.0;
+  Tracker tracker(p);
+  for (int k = 0; k < 3; ++k) tracker.update({cluster_at(Vec2(0.0, 0.0)), cluster_at(Vec2(1.0, 0.0))}, 0.1 * k);
+  const std::vector<int> ids = tracker.cluster_tracks();
+  tracker.update({cluster_at(Vec2(0.55, 0.0)), cluster_at(Vec2(1.5, 0.0))}, 0.3);
+  EXPECT_EQ(tracker.cluster_tracks(), ids);
+  EXPECT_EQ(tracker.tracks().size(), 2u);
+}
+
+TEST(Tracker, ImpossiblyFastAssociationsAreRejected) {
+  TrackerParams p;
+  p.gate_sigmas = 100.0;  // leave it to max_speed
+  Tracker tracker(p);
+  for (int k = 0; k < 3; ++k) tracker.update({cluster_at(Vec2(2.0, 0.0))}, 0.1 * k);
+  // 0.8 m in 0.1 s is 8 m/s: a different object.
+  tracker.update({cluster_at(Vec2(2.8, 0.0))}, 0.3);
+  ASSERT_EQ(tracker.tracks().size(), 2u);
+  EXPECT_NE(tracker.cluster_tracks()[0], tracker.tracks()[0].id);
+  p.max_speed = 10.0;
+  Tracker lenient(p);
+  for (int k = 0; k < 3; ++k) lenient.update({cluster_at(Vec2(2.0, 0.0))}, 0.1 * k);
+  lenient.update({cluster_at(Vec2(2.8, 0.0))}, 0.3);
+  EXPECT_EQ(lenient.tracks().size(), 1u);
+}
+
+TEST(Tracker, MovingDiscsExplainTheirHitsOnly) {
+  Tracker tracker;
+  const Disc mover{Vec2(3.0, -1.0), 0.3, Vec2(0.0, 0.6)};
+  const Disc pillar{Vec2(2.0, 1.5), 0.2, Vec2::Zero()};
+  run(tracker, {mover, pillar}, 1.5, 7, kStill, [](double, const Tracker&) {});
+  ASSERT_EQ(tracker.moving_discs().size(), 1u);
+  const Vec2 now = mover.center_at(1.5);
+  EXPECT_TRUE(tracker.explains(now + Vec2(-0.3, 0.0)));   // its near surface
+  EXPECT_FALSE(tracker.explains(now + Vec2(-0.8, 0.0)));  // half a metre in front
+  EXPECT_TRUE(tracker.explains(now + Vec2(-0.8, 0.0), 0.6));
+  EXPECT_FALSE(tracker.explains(pillar.center + Vec2(-0.2, 0.0)));  // static: the map's
+}
+
+TEST(Tracker, BadInputIsAnError) {
+  TrackerParams p;
+  p.gate = -1.0;
+  expect_error_naming([&] { Tracker{p}; }, "gate");
+  p = TrackerParams{};
+  p.confirm_hits = 0;
+  expect_error_naming([&] { Tracker{p}; }, "confirm_hits");
+  p = TrackerParams{};
+  p.measurement_std = NAN;
+  expect_error_naming([&] { Tracker{p}; }, "measurement_std");
+  Tracker tracker;
+  expect_error_naming([&] { tracker.update({}, NAN); }, "time");
+  tracker.update({}, 1.0);
+  expect_error_naming([&] { tracker.update({}, 0.5); }, "time");
+  expect_error_naming([&] { tracker.update({cluster_at(Vec2(NAN, 0.0))}, 1.0); }, "cluster[0] center x");
+  expect_error_naming([&] { tracker.update({cluster_at(Vec2(0.0, 0.0), -0.1)}, 1.0); }, "cluster[0] radius");
+  expect_error_naming([&] { tracker.explains(Vec2(0.0, NAN)); }, "point y");
+  expect_error_naming([&] { tracker.explains(Vec2(0.0, 0.0), -1.0); }, "margin");
+  EXPECT_TRUE(tracker.tracks().empty());  // a rejected update changes nothing
+}
+
+TEST(Tracker, CostOfOneScan) {
+  // Printed, not asserted: segment + update for a 541-beam scan with two movers
+  // and a pillar.
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  std::mt19937_64 rng(8);
+  const std::vector<Disc> discs = {Disc{Vec2(3.0, -1.5), 0.3, Vec2(0.0, 0.4)},
+                                   Disc{Vec2(5.0, 3.0), 0.25, Vec2(-0.3, 0.0)}, Disc{Vec2(2.0, -2.5), 0.2, Vec2::Zero()}};
+  std::vector<Scan> scans;
+  constexpr int kScans = 80;  // all three stay in view
+  for (int k = 0; k < kScans; ++k) scans.push_back(scan_of(scanner, Pose2{}, discs, k * kPeriod, rng));
+  Tracker tracker;
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 0; k < kScans; ++k) tracker.update(segment_scan(scans[k]), k * kPeriod);
+  const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "segment_scan + Tracker::update, 541 beams, 3 objects: " << us / kScans << " us per scan\n";
+  EXPECT_EQ(tracker.moving_discs().size(), 2u);
+}
+
+}  // namespace
+}  // namespace fgdwa::test
