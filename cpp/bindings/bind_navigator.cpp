@@ -46,7 +46,8 @@ void init_navigator(py::module_& m) {
                        double backup_speed,
                        double rotate_limit_deg, double wait_time, double wait_radius, int max_recoveries,
                        double progress_reset, int record_top_k, const OccupancyParams& occupancy,
-                       double unknown_cost) {
+                       double unknown_cost, bool track_moving, const SegmentParams& segment,
+                       const TrackerParams& tracker) {
              NavigatorParams p;
              p.path_margin = path_margin;
              p.replan_period = replan_period;
@@ -65,6 +66,9 @@ void init_navigator(py::module_& m) {
              p.record_top_k = record_top_k;
              p.occupancy = occupancy;
              p.unknown_cost = unknown_cost;
+             p.track_moving = track_moving;
+             p.segment = segment;
+             p.tracker = tracker;
              p.validate();
              return p;
            }),
@@ -74,7 +78,8 @@ void init_navigator(py::module_& m) {
            py::arg("rotate_limit_deg") = 360.0,
            py::arg("wait_time") = 2.0, py::arg("wait_radius") = 1.5, py::arg("max_recoveries") = 6,
            py::arg("progress_reset") = 1.0, py::arg("record_top_k") = 5,
-           py::arg("occupancy") = OccupancyParams(), py::arg("unknown_cost") = 0.0,
+           py::arg("occupancy") = OccupancyParams(), py::arg("unknown_cost") = 0.0, py::arg("track_moving") = true,
+           py::arg("segment") = SegmentParams(), py::arg("tracker") = TrackerParams(),
            "path_margin: m kept beyond the footprint's radius by the global path where the map allows; "
            "replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance "
            "(m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after "
@@ -84,7 +89,9 @@ void init_navigator(py::module_& m) {
            "within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; "
            "record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std "
            "is at least the lidar's noise_std); unknown_cost: extra cost per metre of the global path through cells the "
-           "scans have not observed (0: unknown is free).")
+           "scans have not observed (0: unknown is free); track_moving: segment and track moving obstacles in the scans, "
+           "predict them in the planner and keep their hits out of the map (False: every hit is static where it is, "
+           "the ablation); segment, tracker: their settings.")
       .def_readonly("path_margin", &NavigatorParams::path_margin)
       .def_readonly("replan_period", &NavigatorParams::replan_period)
       .def_readonly("stall_time", &NavigatorParams::stall_time)
@@ -102,6 +109,9 @@ void init_navigator(py::module_& m) {
       .def_readonly("record_top_k", &NavigatorParams::record_top_k)
       .def_readonly("occupancy", &NavigatorParams::occupancy)
       .def_readonly("unknown_cost", &NavigatorParams::unknown_cost)
+      .def_readonly("track_moving", &NavigatorParams::track_moving)
+      .def_readonly("segment", &NavigatorParams::segment)
+      .def_readonly("tracker", &NavigatorParams::tracker)
       .def("__repr__", [](const NavigatorParams& p) {
         std::ostringstream s;
         s << "NavigatorParams(stall_time=" << p.stall_time << ", backup_distance=" << p.backup_distance
@@ -145,9 +155,11 @@ void init_navigator(py::module_& m) {
       .def_readonly("critic_vetoes", &CycleRecord::critic_vetoes,
                     "Per critic of the planner (in PlannerParams.critics order): samples it vetoed this cycle.")
       .def_readonly("new_cells", &CycleRecord::new_cells)
+      .def_readonly("tracked", &CycleRecord::tracked, "The moving tracks the planner predicted (Discs now, with velocity).")
       .def_readonly("recoveries", &CycleRecord::recoveries)
       .def_property_readonly("times", [](const CycleRecord& r) {
         py::dict out;
+        out["tracking"] = r.times.tracking;
         out["map"] = r.times.map;
         out["global"] = r.times.global;
         out["perception"] = r.times.perception;
@@ -198,6 +210,7 @@ void init_navigator(py::module_& m) {
                              "The local planner's last result, every sample included.")
       .def_property_readonly("planner", &Navigator::planner, py::return_value_policy::reference_internal)
       .def_property_readonly("controller", &Navigator::controller, py::return_value_policy::reference_internal)
+      .def_property_readonly("tracker", &Navigator::tracker, py::return_value_policy::reference_internal)
       .def_property_readonly("map", &Navigator::map, py::return_value_policy::copy, "The navigator's map now (a copy).")
       .def_property_readonly("mapping", [](const Navigator& n) { return std::string(to_string(n.map_mode())); })
       .def_property_readonly("params", &Navigator::params, py::return_value_policy::copy)

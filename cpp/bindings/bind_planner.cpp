@@ -60,18 +60,20 @@ void init_planner(py::module_& m) {
   py::enum_<Status>(m, "Status", "Outcome of one control cycle.")
       .value("Ok", Status::Ok)
       .value("NoAdmissibleVelocity", Status::NoAdmissibleVelocity)
-      .value("GoalReached", Status::GoalReached);
+      .value("GoalReached", Status::GoalReached)
+      .value("Evading", Status::Evading);
   py::enum_<RejectReason>(m, "RejectReason", "Why a sampled command was rejected.")
       .value("None_", RejectReason::None)
       .value("Collision", RejectReason::Collision)
       .value("Terrain", RejectReason::Terrain)
-      .value("Critic", RejectReason::Critic);
+      .value("Critic", RejectReason::Critic)
+      .value("Moving", RejectReason::Moving);
 
   py::class_<PlannerParams>(m, "PlannerParams", "Parameters of the local planner (SI units).")
       .def(py::init([](double dt, double sim_time, int n_v, int n_omega, const std::string& normalization,
                        const std::string& braking, double goal_tolerance, py::object critics,
                        const std::string& heading_target, double key_node_angle_deg, double key_node_radius,
-                       double safety_margin, bool key_node_sight) {
+                       double safety_margin, bool key_node_sight, double moving_horizon) {
              PlannerParams p;
              p.dt = dt;
              p.sim_time = sim_time;
@@ -85,6 +87,7 @@ void init_planner(py::module_& m) {
              p.key_nodes.reach_radius = key_node_radius;
              p.key_nodes.require_sight = key_node_sight;
              p.safety_margin = safety_margin;
+             p.moving_horizon = moving_horizon;
              if (!critics.is_none()) {
                p.critics.clear();
                for (auto item : critics) p.critics.push_back(critic_from_python(item));
@@ -95,7 +98,7 @@ void init_planner(py::module_& m) {
            py::arg("dt") = 0.15, py::arg("sim_time") = 3.0, py::arg("n_v") = 21, py::arg("n_omega") = 21,
            py::arg("normalization") = "sum", py::arg("braking") = "discrete", py::arg("goal_tolerance") = 0.3, py::arg("critics") = py::none(),
            py::arg("heading_target") = "goal", py::arg("key_node_angle_deg") = 10.0, py::arg("key_node_radius") = 1.0,
-           py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = false,
+           py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = false, py::arg("moving_horizon") = 2.0,
            "dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample "
            "counts; normalization: 'sum', 'minmax' or 'none' (raw terms, as Nav2's DWB adds them); braking: 'discrete' (stop within the free distance "
            "with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts "
@@ -104,7 +107,9 @@ void init_planner(py::module_& m) {
            "reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this "
            "near is reached; safety_margin (m): a rollout closer than this to an obstacle counts as in contact "
            "(never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as "
-           "reached only once the next one is in sight (default False: SPEC 5 as written).")
+           "reached only once the next one is in sight (default False: SPEC 5 as written); moving_horizon (s): a rollout "
+           "predicted to meet a moving obstacle this soon is rejected, standing still included (0: moving obstacles "
+           "count only as the braking rule counts them).")
       .def_readonly("dt", &PlannerParams::dt)
       .def_readonly("sim_time", &PlannerParams::sim_time)
       .def_property_readonly("n_v", [](const PlannerParams& p) { return p.window.n_v; })
@@ -116,6 +121,7 @@ void init_planner(py::module_& m) {
       .def_property_readonly("key_node_angle_deg", [](const PlannerParams& p) { return p.key_nodes.min_turn * 180.0 / M_PI; })
       .def_property_readonly("key_node_radius", [](const PlannerParams& p) { return p.key_nodes.reach_radius; })
       .def_readonly("safety_margin", &PlannerParams::safety_margin)
+      .def_readonly("moving_horizon", &PlannerParams::moving_horizon)
       .def_property_readonly("key_node_sight", [](const PlannerParams& p) { return p.key_nodes.require_sight; })
       .def_readonly("critics", &PlannerParams::critics)
       .def_property_readonly("n_steps", &PlannerParams::n_steps)
@@ -163,6 +169,8 @@ void init_planner(py::module_& m) {
                              })
       .def_property_readonly("min_clearance", [](const PlanResult& r) { return py::array_t<double>(r.min_clearance.size(), r.min_clearance.data()); })
       .def_property_readonly("free_distance", [](const PlanResult& r) { return py::array_t<double>(r.free_distance.size(), r.free_distance.data()); })
+      .def_property_readonly("moving_contact", [](const PlanResult& r) { return py::array_t<double>(r.moving_contact.size(), r.moving_contact.data()); },
+                             "s, per sample: first predicted contact with a moving obstacle within moving_horizon (inf: none).")
       .def_readonly("raw", &PlanResult::raw, "(n, critics) raw terms; 0 for rejected samples.")
       .def_readonly("normalized", &PlanResult::normalized, "(n, critics) normalised terms; 0 for rejected samples.")
       .def_readonly("total", &PlanResult::total, "(n,) weighted totals; -inf for rejected samples.")

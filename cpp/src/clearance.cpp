@@ -188,6 +188,23 @@ void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Tr
                                     disc.radius_at(static_cast<double>(k + 1) * dt) - r);
 }
 
+double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose, double t) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Disc& disc : discs) {
+    if (disc.growth <= 0.0 && disc.velocity.isZero()) continue;
+    const Vec2 centre = disc.center_at(t);
+    const double radius = disc.radius_at(t);
+    // The circumscribed circle settles the far ones.
+    if ((centre - pose.position()).norm() - radius - footprint.radius() >= best) continue;
+    best = std::min(best, footprint.signed_distance(pose, centre) - radius);
+  }
+  return best;
+}
+
+double FieldClearance::moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const {
+  return moving_disc_clearance(discs_, footprint, pose, t);
+}
+
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
   double best = field_clearance(field_.get(), footprint, pose);
   if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose));

@@ -149,6 +149,10 @@ void CollisionWorld::set_discs(std::vector<Disc> discs) {
 
 const std::vector<Disc>& CollisionWorld::discs() const { return impl_->discs; }
 
+double CollisionWorld::moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const {
+  return moving_disc_clearance(impl_->discs, footprint, pose, t);
+}
+
 double CollisionWorld::obstacle_speed() const {
   double fastest = 0.0;
   for (const Disc& d : impl_->discs) fastest = std::max(fastest, d.velocity.norm() + d.growth);

@@ -56,6 +56,8 @@ void NavigatorParams::validate() const {
   detail::require_non_negative("progress_reset", progress_reset);
   detail::require_at_least("record_top_k", record_top_k, 0);
   occupancy.validate();
+  segment.validate();
+  tracker.validate();
   detail::require_non_negative("unknown_cost", unknown_cost);
 }
 
@@ -88,7 +90,8 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
       mode_(mode),
       dt_(planner.dt),
       terrain_(std::move(terrain)),
-      controller_(limits, footprint, planner, nullptr, std::move(policy), window) {
+      controller_(limits, footprint, planner, nullptr, std::move(policy), window),
+      tracker_(params.tracker) {
   params_.validate();
   lidar_.validate();
   controller_.set_range_noise(lidar_.noise_std);
@@ -292,6 +295,38 @@ double Navigator::open_heading(const Pose2& pose) const {
   return best_heading;
 }
 
+void Navigator::track(const Scan& scan, double time) {
+  const std::size_t n = scan.ranges.size();
+  // A hit on an obstacle the map holds is not segmented: the known map's
+  // obstacles are static, and so are a scan map's cells hit scan after scan
+  // (log-odds near the top), unless a moving track passes over them.
+  const std::shared_ptr<const DistanceField>& field = controller_.map();
+  const double tolerance = 0.5 * map().resolution() + 3.0 * lidar_.noise_std;
+  const double settled = params_.occupancy.clamp_max - params_.occupancy.hit;
+  segment_mask_.assign(n, 1);
+  keep_hit_.assign(n, 1);
+  std::vector<Vec2> hits(n, Vec2::Zero());
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = scan.ranges[i];
+    if (!std::isfinite(r)) continue;
+    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+    hits[i] = Vec2(scan.pose.x + r * std::cos(a), scan.pose.y + r * std::sin(a));
+    if (!field || !field->has_obstacles() || field->distance(hits[i]) > tolerance) continue;
+    if (scan_map_) {
+      int row = 0, col = 0;
+      if (!map().cell_of(hits[i], row, col) || scan_map_->log_odds(row, col) < settled ||
+          tracker_.explains(hits[i], tolerance))
+        continue;
+    }
+    segment_mask_[i] = 0;
+  }
+  tracker_.update(segment_scan(scan, params_.segment, &segment_mask_), time);
+  record_.tracked = tracker_.moving_discs();
+  if (record_.tracked.empty()) return;
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::isfinite(scan.ranges[i]) && tracker_.explains(hits[i], tolerance)) keep_hit_[i] = 0;
+}
+
 void Navigator::start_recovery(const RobotState& state, const std::vector<Disc>& discs) {
   const Vec2 position = state.pose.position();
   ++recoveries_;
@@ -382,8 +417,18 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   const Vec2 position = state.pose.position();
 
   Clock::time_point tic = Clock::now();
+  discs_now_ = discs;
+  record_.tracked.clear();
+  const bool tracking = params_.track_moving && scan;
+  if (tracking) {
+    track(*scan, time);
+    discs_now_.insert(discs_now_.end(), record_.tracked.begin(), record_.tracked.end());
+  }
+  record_.times.tracking = seconds_since(tic);
+
+  tic = Clock::now();
   if (scan_map_ && scan) {
-    record_.new_cells = scan_map_->integrate(*scan);
+    record_.new_cells = scan_map_->integrate(*scan, tracking ? &keep_hit_ : nullptr);
     if (record_.new_cells) {
       controller_.set_map(scan_map_->field());
       ++map_version_;
@@ -407,7 +452,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
     case NavigatorMode::Following:
     case NavigatorMode::Replanning:
       if (stalled(state)) {
-        start_recovery(state, discs);
+        start_recovery(state, discs_now_);
         if (mode_now_ == NavigatorMode::Failed) {
           command = braking_command(limits_, state.twist, dt_);
           break;
@@ -468,7 +513,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   record_.times.global = seconds_since(tic);
 
   if (run_planner) {
-    const PlanResult& plan = controller_.step(state, goal_, scan, discs);
+    const PlanResult& plan = controller_.step(state, goal_, scan, discs_now_);
     const CycleReport& report = controller_.report();
     record_.times.perception = report.perception_time;
     record_.times.plan = report.plan_time;

@@ -13,6 +13,7 @@ const char* to_string(Status status) {
   switch (status) {
     case Status::Ok: return "Ok";
     case Status::NoAdmissibleVelocity: return "NoAdmissibleVelocity";
+    case Status::Evading: return "Evading";
     case Status::GoalReached: return "GoalReached";
   }
   return "?";
@@ -32,6 +33,7 @@ const char* to_string(RejectReason reason) {
     case RejectReason::Collision: return "Collision";
     case RejectReason::Terrain: return "Terrain";
     case RejectReason::Critic: return "Critic";
+    case RejectReason::Moving: return "Moving";
   }
   return "?";
 }
@@ -70,6 +72,7 @@ void PlannerParams::validate() const {
   window.validate();
   detail::require_non_negative("goal_tolerance", goal_tolerance);
   detail::require_non_negative("safety_margin", safety_margin);
+  detail::require_non_negative("moving_horizon", moving_horizon);
   key_nodes.validate();
   if (critics.empty()) throw Error("critics: at least one critic is needed");
   for (std::size_t i = 0; i < critics.size(); ++i)
@@ -201,6 +204,7 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
     result_.reasons.clear();
     result_.min_clearance.clear();
     result_.free_distance.clear();
+    result_.moving_contact.clear();
     result_.vetoed_by.clear();
     result_.critic_vetoes.assign(critics_.size(), 0);
     result_.raw.resize(0, static_cast<Eigen::Index>(critics_.size()));
@@ -231,7 +235,12 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   context.footprint = &footprint_;
   score_and_choose(context);
 
-  if (result_.best_index < 0) {
+  const int evasion = result_.best_index < 0 ? latest_moving_contact() : -1;
+  if (evasion >= 0) {
+    result_.best_index = evasion;
+    result_.status = Status::Evading;
+    result_.command = result_.samples[static_cast<std::size_t>(evasion)];
+  } else if (result_.best_index < 0) {
     result_.status = Status::NoAdmissibleVelocity;
     result_.command = braking_command(limits_, state.twist, params_.dt);
   } else {
@@ -246,6 +255,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   rollouts_.resize(n);
   result_.reasons.resize(n);
   result_.min_clearance.resize(n);
+  result_.moving_contact.resize(n);
   result_.free_distance.resize(n);
   const double inf = std::numeric_limits<double>::infinity();
   // A start already in contact is not held against the first step, so the robot can still leave.
@@ -258,6 +268,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const double margin = std::clamp(clearance_now - 1e-3, 0.0, params_.safety_margin);
   const double start_clearance = clearance_now - margin;
   const double obstacle_travel = world.obstacle_speed() * params_.dt;
+  const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
   bounds_.resize(static_cast<std::size_t>(n_steps_));
   exact_.resize(static_cast<std::size_t>(n_steps_));
   // A footprint already over grade-4 cells may still leave: only its centre is held to them then.
@@ -333,9 +344,44 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       if (k < n_steps_ && !is_admissible(cmd, k * cmd.v * params_.dt, limits_, params_.dt, params_.braking))
         reason = RejectReason::Terrain;
     }
+    result_.moving_contact[i] = std::numeric_limits<double>::infinity();
+    if (reason == RejectReason::None && moving_world) {
+      result_.moving_contact[i] = first_moving_contact(state.pose, cmd, poses, world, margin);
+      if (std::isfinite(result_.moving_contact[i])) reason = RejectReason::Moving;
+    }
     result_.reasons[i] = reason;
     ++result_.reject_counts[static_cast<std::size_t>(result_.reasons[i])];
   }
+}
+
+double LocalPlanner::first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
+                                          const ClearanceSource& world, double margin) const {
+  // A contact between two poses leaves one of them within half the relative
+  // motion of the step: the robot's drive and turn and the obstacle's travel.
+  const double half_step = 0.5 * params_.dt *
+                           (std::abs(cmd.v) + footprint_.radius() * std::abs(cmd.omega) + world.obstacle_speed());
+  if (world.moving_clearance(footprint_, start, 0.0) - margin <= 0.0) return 0.0;
+  for (int k = 0; k < n_steps_; ++k) {
+    const double t = (k + 1) * params_.dt;
+    if (t - params_.dt >= params_.moving_horizon) break;
+    if (world.moving_clearance(footprint_, poses[static_cast<std::size_t>(k)], t) - margin <= half_step) return t;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+int LocalPlanner::latest_moving_contact() const {
+  int best = -1;
+  for (std::size_t i = 0; i < result_.samples.size(); ++i) {
+    if (result_.reasons[i] != RejectReason::Moving) continue;
+    if (best < 0) {
+      best = static_cast<int>(i);
+      continue;
+    }
+    const std::size_t b = static_cast<std::size_t>(best);
+    const double ti = result_.moving_contact[i], tb = result_.moving_contact[b];
+    if (ti > tb || (ti == tb && result_.min_clearance[i] > result_.min_clearance[b])) best = static_cast<int>(i);
+  }
+  return best;
 }
 
 void LocalPlanner::score_and_choose(const CriticContext& context) {

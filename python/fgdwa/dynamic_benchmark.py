@@ -38,6 +38,8 @@ PLANNER_VARIANTS = MappingProxyType({
     "gdwa": ("gdwa", {}),
     "sgdwa": ("sgdwa", {}),
     "fgdwa": ("fgdwa", {}),
+    # The ablation: every hit a static obstacle where it is now, nothing tracked or predicted.
+    "fgdwa-notrack": ("fgdwa", {"track_moving": False}),
     "dwb": ("dwb", {}),
 })
 OUTCOMES = ("success", "collision", "timeout", "failed")

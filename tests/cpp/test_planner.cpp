@@ -657,6 +657,9 @@ class WithoutBounds : public ClearanceSource {
     return inner_.clearance(fp, pose, t);
   }
   double obstacle_speed() const override { return inner_.obstacle_speed(); }
+  double moving_clearance(const Footprint& fp, const Pose2& pose, double t) const override {
+    return inner_.moving_clearance(fp, pose, t);
+  }
 
  private:
   const ClearanceSource& inner_;

@@ -42,7 +42,16 @@ class ClearanceSource {
   // The fastest any obstacle moves or grows, m/s: how fast clearance can fall
   // with the robot standing. 0 in a static world.
   virtual double obstacle_speed() const { return 0.0; }
+  // Distance from the footprint at `pose` to the moving obstacles alone (those
+  // with a velocity or a growth), placed `t` seconds ahead; +inf without any.
+  virtual double moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const {
+    (void)footprint, (void)pose, (void)t;
+    return std::numeric_limits<double>::infinity();
+  }
 };
+
+// The footprint's distance to those of `discs` that move or grow, placed `t` seconds ahead.
+double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose, double t);
 
 class FieldClearance : public ClearanceSource {
  public:
@@ -63,6 +72,7 @@ class FieldClearance : public ClearanceSource {
   void clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
                               double* out) const override;
   double obstacle_speed() const override { return obstacle_speed_; }
+  double moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
 
  private:
   std::shared_ptr<const DistanceField> field_;

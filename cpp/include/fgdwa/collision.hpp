@@ -43,6 +43,7 @@ class CollisionWorld : public ClearanceSource {
   }
   bool in_collision(const Footprint& footprint, const Pose2& pose, double t = 0.0) const;
   double obstacle_speed() const override;
+  double moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
 
  private:
   struct Impl;

@@ -3,8 +3,9 @@
 // on it, the controller, and the recovery behaviours, in one object a robot
 // program steps every control period.
 //
-// Per step the data flows one way: scan -> map (built from scans, or the known
-// one) -> (re)plan the global path when needed (no path yet, a new goal, the
+// Per step the data flows one way: scan -> moving obstacles (segmented,
+// tracked, predicted) -> map (built from scans, the movers' hits left out, or
+// the known one) -> (re)plan the global path when needed (no path yet, a new goal, the
 // path ahead blocked, after a recovery) over a ladder of inflation radii ->
 // density I and deviation D -> weights -> local planner (terrain inside) ->
 // recovery -> command. Everything the cycle decided is in its CycleRecord.
@@ -27,6 +28,7 @@
 #include "fgdwa/path.hpp"
 #include "fgdwa/perception.hpp"
 #include "fgdwa/planner.hpp"
+#include "fgdwa/tracking.hpp"
 #include "fgdwa/weights.hpp"
 
 namespace fgdwa {
@@ -76,6 +78,14 @@ struct NavigatorParams {
   int record_top_k = 5;           // best-scored rollouts kept in each CycleRecord
   // The map built from scans (MapMode::Scan); its range_std is at least the lidar's noise_std.
   OccupancyParams occupancy;
+  // Moving obstacles from the scans: hits the map does not hold as static are
+  // segmented and tracked; the moving tracks are predicted by the planner
+  // (space-time clearance), count in the detect window's density, can make a
+  // stalled robot wait, and their hits stay out of the map built from scans.
+  // false: every hit is a static obstacle where it is now (the ablation).
+  bool track_moving = true;
+  SegmentParams segment;
+  TrackerParams tracker;
   // Extra cost per metre for the global path through cells the scans have not
   // yet observed (MapMode::Scan; AStarParams::unknown_cost). 0: unknown is free.
   double unknown_cost = 0.0;
@@ -92,11 +102,12 @@ struct ScoredRollout {
 
 // Wall-clock time of each stage of the cycle, s.
 struct StageTimes {
+  double tracking = 0.0;    // segmenting the scan, updating the tracks
   double map = 0.0;         // scan into the map, distance field update
   double global = 0.0;      // path-blocked checks and global planning
   double perception = 0.0;  // sensed points, density I, deviation D, weights
   double plan = 0.0;        // the local planner
-  double total() const { return map + global + perception + plan; }
+  double total() const { return tracking + map + global + perception + plan; }
 };
 
 struct CycleRecord {
@@ -121,6 +132,7 @@ struct CycleRecord {
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reject reason
   std::vector<int> critic_vetoes;  // per critic of the planner (PlanResult::critic_names): samples it vetoed
   std::size_t new_cells = 0;       // map cells this scan turned occupied or free
+  std::vector<Disc> tracked;       // the moving tracks the planner predicted this cycle (discs now, with velocity)
   int recoveries = 0;              // recoveries in a row without progress, this one included
   StageTimes times;
 };
@@ -155,6 +167,7 @@ class Navigator {
   const PlanResult& plan_result() const { return controller_.planner().last_result(); }
   const LocalPlanner& planner() const { return controller_.planner(); }
   const Controller& controller() const { return controller_; }
+  const Tracker& tracker() const { return tracker_; }
   const OccupancyGrid& map() const;
   MapMode map_mode() const { return mode_; }
   const NavigatorParams& params() const { return params_; }
@@ -186,6 +199,9 @@ class Navigator {
   Twist rotate_command(const RobotState& state);
   double open_heading(const Pose2& pose) const;
   void finish_record(const RobotState& state);
+  // Segments and tracks the scan's hits the map does not hold as static; sets
+  // tracked_ and, per beam, whether its hit goes into the map (keep_hit_).
+  void track(const Scan& scan, double time);
 
   RobotLimits limits_;
   Footprint footprint_;
@@ -195,6 +211,9 @@ class Navigator {
   double dt_;
   std::optional<TerrainGrid> terrain_;
   Controller controller_;
+  Tracker tracker_;
+  std::vector<Disc> discs_now_;                // the known discs and the tracked movers, this cycle
+  std::vector<std::uint8_t> segment_mask_, keep_hit_;  // per beam
   std::unique_ptr<ScanMap> scan_map_;                    // MapMode::Scan
   std::unique_ptr<OccupancyGrid> known_map_;             // MapMode::Known
   std::shared_ptr<const DistanceField> known_field_;

@@ -25,6 +25,8 @@ enum class Status : std::uint8_t {
   Ok,                    // a command was chosen among admissible samples
   NoAdmissibleVelocity,  // every sample was rejected: the command brakes
   GoalReached,           // within goal_tolerance of the goal: the command brakes
+  Evading,               // every sample meets a moving obstacle soon, standing still too: the command is the
+                         // one that meets it latest (among those the static obstacles admit)
 };
 
 enum class RejectReason : std::uint8_t {
@@ -32,8 +34,9 @@ enum class RejectReason : std::uint8_t {
   Collision,  // the rollout touches an obstacle before the robot could stop
   Terrain,    // the footprint enters grade-4 terrain before the robot could stop
   Critic,     // a critic vetoed it (PlanResult::vetoed_by names which)
+  Moving,     // a moving obstacle is predicted to meet it within moving_horizon (braking cannot help)
 };
-constexpr std::size_t kRejectReasonCount = 4;
+constexpr std::size_t kRejectReasonCount = 5;
 
 // How slope grades 0-4 (SPEC 7) limit the robot: each grade's passing factor
 // scales v_max on its cells; grade 4 cannot be entered at all.
@@ -72,6 +75,10 @@ struct PlannerParams {
   BrakingModel braking = BrakingModel::Discrete;  // admissibility (Eq. 3); Continuous is the paper's literal form
   double goal_tolerance = 0.3;  // m, GoalReached within this distance of the goal
   double safety_margin = 0.02;  // m, clearance below which a rollout counts as in contact (at most the robot's own)
+  // s: a rollout predicted to meet a moving obstacle this soon is rejected,
+  // standing still included: a robot that brakes is still hit by what moves
+  // into it. 0: moving obstacles count only as the braking rule counts them.
+  double moving_horizon = 2.0;
   HeadingTarget heading_target = HeadingTarget::Goal;
   KeyNodeParams key_nodes;      // key-node angle and reach radius, for HeadingTarget::KeyNodes
   std::vector<CriticConfig> critics = {
@@ -96,6 +103,8 @@ struct PlanResult {
   std::vector<RejectReason> reasons;            // per sample
   std::vector<double> min_clearance;            // m, per sample
   std::vector<double> free_distance;            // m, per sample (+inf: never touches)
+  std::vector<double> moving_contact;           // s, per sample: first predicted contact with a moving obstacle
+                                                // within moving_horizon (+inf: none)
   std::vector<int> vetoed_by;                   // per sample: the critic that vetoed it, -1 for none
   std::vector<int> critic_vetoes;               // per critic: samples it vetoed this cycle
   std::vector<CriticSense> senses;              // per critic
@@ -166,6 +175,13 @@ class LocalPlanner {
   // The first pose at which the footprint enters grade-4 terrain, n_steps_ if
   // none; `centre_only` holds only the centre to it (a footprint already over it).
   int first_terrain_contact(const Trajectory& poses, bool centre_only) const;
+  // Time (s) at which the rollout from `start` first comes into contact with a
+  // moving obstacle of `world`, within moving_horizon; +inf if it does not.
+  double first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
+                              const ClearanceSource& world, double margin) const;
+  // Among the samples rejected only for a moving obstacle, the one that meets
+  // it latest (then the clearest); -1 if there is none.
+  int latest_moving_contact() const;
 
   std::shared_ptr<const TerrainGrid> terrain_;
   PassingFactors passing_factors_ = kDefaultPassingFactors;
