@@ -108,12 +108,12 @@ void init_tracking(py::module_& m) {
   py::class_<TrackerParams>(m, "TrackerParams",
                             "Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), "
                             "confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, "
-                            "moving_window s), max_speed (m/s), uncertainty_sigmas.")
+                            "moving_window s, free_margin m), max_speed (m/s), uncertainty_sigmas.")
       .def(py::init([](double gate, double gate_sigmas, double accel_std, double measurement_std, int confirm_hits,
                        double lost_time, double moving_speed, double moving_sigmas, double moving_window,
-                       double max_speed, double uncertainty_sigmas) {
-             TrackerParams p{gate,        gate_sigmas,  accel_std,     measurement_std, confirm_hits,      lost_time,
-                             moving_speed, moving_sigmas, moving_window, max_speed,       uncertainty_sigmas};
+                       double free_margin, double max_speed, double uncertainty_sigmas) {
+             TrackerParams p{gate,          gate_sigmas, accel_std, measurement_std, confirm_hits,      lost_time,
+                             moving_speed,  moving_sigmas, moving_window, free_margin, max_speed, uncertainty_sigmas};
              p.validate();
              return p;
            }),
@@ -121,7 +121,7 @@ void init_tracking(py::module_& m) {
            py::arg("measurement_std") = td.measurement_std, py::arg("confirm_hits") = td.confirm_hits,
            py::arg("lost_time") = td.lost_time, py::arg("moving_speed") = td.moving_speed,
            py::arg("moving_sigmas") = td.moving_sigmas, py::arg("moving_window") = td.moving_window,
-           py::arg("max_speed") = td.max_speed, py::arg("uncertainty_sigmas") = td.uncertainty_sigmas)
+           py::arg("free_margin") = td.free_margin, py::arg("max_speed") = td.max_speed, py::arg("uncertainty_sigmas") = td.uncertainty_sigmas)
       .def_readonly("gate", &TrackerParams::gate)
       .def_readonly("gate_sigmas", &TrackerParams::gate_sigmas)
       .def_readonly("accel_std", &TrackerParams::accel_std)
@@ -131,6 +131,7 @@ void init_tracking(py::module_& m) {
       .def_readonly("moving_speed", &TrackerParams::moving_speed)
       .def_readonly("moving_sigmas", &TrackerParams::moving_sigmas)
       .def_readonly("moving_window", &TrackerParams::moving_window)
+      .def_readonly("free_margin", &TrackerParams::free_margin)
       .def_readonly("max_speed", &TrackerParams::max_speed)
       .def_readonly("uncertainty_sigmas", &TrackerParams::uncertainty_sigmas)
       .def("__repr__", [](const TrackerParams& p) {
@@ -139,6 +140,7 @@ void init_tracking(py::module_& m) {
           << ", measurement_std=" << p.measurement_std << ", confirm_hits=" << p.confirm_hits
           << ", lost_time=" << p.lost_time << ", moving_speed=" << p.moving_speed
           << ", moving_sigmas=" << p.moving_sigmas << ", moving_window=" << p.moving_window
+          << ", free_margin=" << p.free_margin
           << ", max_speed=" << p.max_speed << ", uncertainty_sigmas=" << p.uncertainty_sigmas << ")";
         return s.str();
       });
@@ -180,9 +182,15 @@ void init_tracking(py::module_& m) {
                       "scan's clusters and time; read tracks, moving_discs(), explains().")
       .def(py::init<const TrackerParams&>(), py::arg("params") = td)
       .def_property_readonly("params", &Tracker::params)
-      .def("update", &Tracker::update, py::arg("clusters"), py::arg("time"),
-           "Predicts the tracks to time (s, never going back), assigns the clusters, corrects, starts, loses and "
-           "removes tracks.")
+      .def(
+          "update",
+          [](Tracker& t, const std::vector<Cluster>& clusters, double time, const Scan* scan) {
+            t.update(clusters, time, scan);
+          },
+          py::arg("clusters"), py::arg("time"), py::arg("scan") = nullptr,
+          "Predicts the tracks to time (s, never going back), assigns the clusters, corrects, starts, loses and "
+          "removes tracks. Pass the scan the clusters came from: without it only the window speed decides what "
+          "moves, and static clutter seen from a moving robot can be called moving.")
       .def_property_readonly("tracks", &Tracker::tracks, "The tracks after the last update (a copy).")
       .def_property_readonly("cluster_tracks", &Tracker::cluster_tracks,
                              "For each cluster of the last update, the id of the track that took it.")

@@ -30,6 +30,7 @@ void TrackerParams::validate() const {
   detail::require_non_negative("tracker moving_speed", moving_speed);
   detail::require_non_negative("tracker moving_sigmas", moving_sigmas);
   detail::require_positive("tracker moving_window", moving_window);
+  detail::require_positive("tracker free_margin", free_margin);
   detail::require_positive("tracker max_speed", max_speed);
   detail::require_non_negative("tracker uncertainty_sigmas", uncertainty_sigmas);
 }
@@ -51,6 +52,39 @@ constexpr double kSpeedCheckSigmas = 3.0;
 // How much less an occluded cluster's centre is trusted (std factor): its
 // disc was fitted to part of the object.
 constexpr double kOccludedStdFactor = 4.0;
+// Free-space evidence: a cluster displaces free space when at least this
+// share of its hits (and two) lie where the other scan saw through, and a
+// track may be labelled moving after this many such updates within its
+// window, so one stray reading does not do it.
+constexpr double kDisplacedShare = 0.2;
+constexpr std::size_t kDisplacedUpdates = 3;
+
+// Whether `scan` saw through `p`: its beam toward p and both neighbours
+// reached more than `margin` past it (or had no hit within max range, which
+// lies beyond). The neighbours count because two scans' beams do not line up
+// and an edge beam of one may slip past an object the other's hits.
+bool seen_through(const Scan& scan, const Vec2& p, double margin) {
+  if (!(scan.angle_increment > 0.0)) return false;
+  const Vec2 d = p - scan.pose.position();
+  const double reach = d.norm() + margin;
+  double offset = angle_difference(std::atan2(d.y(), d.x()), scan.pose.theta) - scan.angle_min;
+  if (offset < 0.0) offset += 2.0 * M_PI;
+  const long beam = std::lround(offset / scan.angle_increment);
+  const long n = static_cast<long>(scan.ranges.size());
+  for (long j = beam - 1; j <= beam + 1; ++j) {
+    if (j < 0 || j >= n) return false;
+    const double r = scan.ranges[static_cast<std::size_t>(j)];
+    if (std::isfinite(r) ? r <= reach : reach >= scan.max_range) return false;
+  }
+  return true;
+}
+
+// Whether enough of `points` lie where `scan` saw through.
+bool share_seen_through(const Scan& scan, const std::vector<Vec2>& points, double margin) {
+  std::size_t through = 0;
+  for (const Vec2& p : points) through += seen_through(scan, p, margin);
+  return through >= 2 && static_cast<double>(through) >= kDisplacedShare * static_cast<double>(points.size());
+}
 
 }  // namespace
 
@@ -74,6 +108,8 @@ Tracker::Tracker(const TrackerParams& params)
 void Tracker::reset() {
   tracks_.clear();
   memory_.clear();
+  scans_.clear();
+  has_scans_ = false;
   cluster_tracks_.clear();
   time_ = std::numeric_limits<double>::quiet_NaN();
 }
@@ -124,13 +160,15 @@ void Tracker::correct(Track& t, const Cluster& cluster, double time) {
 }
 
 // A track is labelled moving once its window speed, less moving_sigmas std
-// devs, exceeds moving_speed, and keeps the label until that speed drops below
-// half of moving_speed. The window speed is a line fitted to a second of
+// devs, exceeds moving_speed and (given scans) its hits have displaced free
+// space a few times within the window; it keeps the label until that speed
+// drops below half of moving_speed. The window speed is a line fitted to a second of
 // centres, its std from their own scatter (never below measurement_std): it
 // does not hang on the filter's noise model, so static clutter whose centres
 // wobble more than modelled is not called moving, and a mover's label does not
 // flicker.
-void Tracker::relabel(Track& t, const std::deque<std::pair<double, Vec2>>& centres) const {
+void Tracker::relabel(Track& t, const Memory& memory) const {
+  const auto& centres = memory.centres;
   const std::size_t n = centres.size();
   t.window_velocity = Vec2::Zero();
   t.window_speed_std = std::numeric_limits<double>::infinity();
@@ -161,12 +199,34 @@ void Tracker::relabel(Track& t, const std::deque<std::pair<double, Vec2>>& centr
   if (t.status == TrackStatus::Lost) return;
   const double speed = t.window_velocity.norm();
   if (!t.moving)
-    t.moving = speed - params_.moving_sigmas * t.window_speed_std > params_.moving_speed;
+    t.moving = speed - params_.moving_sigmas * t.window_speed_std > params_.moving_speed &&
+               (!has_scans_ || memory.displaced.size() >= kDisplacedUpdates);
   else
     t.moving = speed >= 0.5 * params_.moving_speed;
 }
 
-void Tracker::update(const std::vector<Cluster>& clusters, double time) {
+const Scan* Tracker::reference_scan(double time) const {
+  // The newest scan at least half a window old.
+  const Scan* reference = nullptr;
+  for (const auto& [t, scan] : scans_)
+    if (t <= time - 0.5 * params_.moving_window + 1e-9) reference = &scan;
+  return reference;
+}
+
+bool Tracker::displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan,
+                                   double time) const {
+  const Scan* earlier = reference_scan(time);
+  if (!earlier) return false;
+  // Its leading side where the earlier scan saw through ...
+  if (share_seen_through(*earlier, cluster.points, params_.free_margin)) return true;
+  // ... or its trailing side, as seen then, where this scan sees through.
+  const std::vector<Vec2>* before = nullptr;
+  for (const auto& [t, points] : memory.shapes)
+    if (t <= time - 0.5 * params_.moving_window + 1e-9) before = &points;
+  return before && share_seen_through(scan, *before, params_.free_margin);
+}
+
+void Tracker::update(const std::vector<Cluster>& clusters, double time, const Scan* scan) {
   detail::require_finite("tracker time", time);
   if (time < time_)
     throw Error(detail::describe("tracker time", time, "must not be before the last update's " + std::to_string(time_)));
@@ -175,17 +235,33 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time) {
     detail::require_finite(name + "center x", clusters[i].center.x());
     detail::require_finite(name + "center y", clusters[i].center.y());
     detail::require_non_negative(name + "radius", clusters[i].radius);
+    for (const Vec2& p : clusters[i].points)
+      if (!p.allFinite()) throw Error(name + "points: must be finite");
+  }
+  if (scan) {
+    detail::require_finite("scan pose x", scan->pose.x);
+    detail::require_finite("scan pose y", scan->pose.y);
+    detail::require_finite("scan pose theta", scan->pose.theta);
+    for (double r : scan->ranges)
+      if (std::isnan(r)) throw Error("scan ranges: must not be NaN");
   }
   predict(std::isnan(time_) ? 0.0 : time - time_);
   time_ = time;
   // Occluded centres stay out of the moving test: a partly hidden object's
   // centre shifts as it is uncovered.
+  if (scan) has_scans_ = true;
+  const double oldest = time - params_.moving_window - 1e-9;
   const auto remember = [&](Memory& memory, Track& track, const Cluster& cluster) {
     memory.seen_position = track.position;
-    auto& centres = memory.centres;
-    if (!cluster.occluded) centres.emplace_back(time, cluster.center);
-    while (!centres.empty() && centres.front().first < time - params_.moving_window) centres.pop_front();
-    relabel(track, centres);
+    if (!cluster.occluded) memory.centres.emplace_back(time, cluster.center);
+    if (scan) {
+      if (displaces_free_space(memory, cluster, *scan, time)) memory.displaced.push_back(time);
+      memory.shapes.emplace_back(time, cluster.points);
+    }
+    while (!memory.centres.empty() && memory.centres.front().first < oldest) memory.centres.pop_front();
+    while (!memory.shapes.empty() && memory.shapes.front().first < oldest) memory.shapes.pop_front();
+    while (!memory.displaced.empty() && memory.displaced.front() < oldest) memory.displaced.pop_front();
+    relabel(track, memory);
   };
 
   // Confirmed and lost tracks choose first, so a tentative track born of a
@@ -258,6 +334,10 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time) {
   }
   tracks_.resize(kept);
   memory_.resize(kept);
+  if (scan) {
+    scans_.emplace_back(time, *scan);
+    while (scans_.front().first < oldest) scans_.pop_front();
+  }
 }
 
 std::vector<Disc> Tracker::moving_discs() const {

@@ -1447,9 +1447,9 @@ class TrackStatus:
         ...
 class TrackerParams:
     """
-    Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, moving_window s), max_speed (m/s), uncertainty_sigmas.
+    Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, moving_window s, free_margin m), max_speed (m/s), uncertainty_sigmas.
     """
-    def __init__(self, gate: typing.SupportsFloat | typing.SupportsIndex = 1.0, gate_sigmas: typing.SupportsFloat | typing.SupportsIndex = 4.0, accel_std: typing.SupportsFloat | typing.SupportsIndex = 1.5, measurement_std: typing.SupportsFloat | typing.SupportsIndex = 0.03, confirm_hits: typing.SupportsInt | typing.SupportsIndex = 3, lost_time: typing.SupportsFloat | typing.SupportsIndex = 0.5, moving_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, moving_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, moving_window: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_speed: typing.SupportsFloat | typing.SupportsIndex = 3.0, uncertainty_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0) -> None:
+    def __init__(self, gate: typing.SupportsFloat | typing.SupportsIndex = 1.0, gate_sigmas: typing.SupportsFloat | typing.SupportsIndex = 4.0, accel_std: typing.SupportsFloat | typing.SupportsIndex = 1.5, measurement_std: typing.SupportsFloat | typing.SupportsIndex = 0.03, confirm_hits: typing.SupportsInt | typing.SupportsIndex = 3, lost_time: typing.SupportsFloat | typing.SupportsIndex = 0.5, moving_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, moving_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, moving_window: typing.SupportsFloat | typing.SupportsIndex = 1.0, free_margin: typing.SupportsFloat | typing.SupportsIndex = 0.1, max_speed: typing.SupportsFloat | typing.SupportsIndex = 3.0, uncertainty_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -1458,6 +1458,9 @@ class TrackerParams:
         ...
     @property
     def confirm_hits(self) -> int:
+        ...
+    @property
+    def free_margin(self) -> float:
         ...
     @property
     def gate(self) -> float:
@@ -1562,9 +1565,9 @@ class Tracker:
         """
         Forgets every track; ids keep counting.
         """
-    def update(self, clusters: collections.abc.Sequence[Cluster], time: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def update(self, clusters: collections.abc.Sequence[Cluster], time: typing.SupportsFloat | typing.SupportsIndex, scan: Scan = None) -> None:
         """
-        Predicts the tracks to time (s, never going back), assigns the clusters, corrects, starts, loses and removes tracks.
+        Predicts the tracks to time (s, never going back), assigns the clusters, corrects, starts, loses and removes tracks. Pass the scan the clusters came from: without it only the window speed decides what moves, and static clutter seen from a moving robot can be called moving.
         """
     @property
     def cluster_tracks(self) -> list[int]:

@@ -19,9 +19,10 @@ def test_a_walker_is_tracked_and_a_pillar_is_not_moving():
     tracker = fgdwa.Tracker()
     for k in range(16):
         t = 0.1 * k
-        clusters = fgdwa.segment_scan(scanner.scan((0.0, 0.0, 0.0), [walker, pillar], t, seed=k))
+        scan = scanner.scan((0.0, 0.0, 0.0), [walker, pillar], t, seed=k)
+        clusters = fgdwa.segment_scan(scan)
         assert len(clusters) == 2
-        tracker.update(clusters, t)
+        tracker.update(clusters, t, scan)
     assert tracker.time == pytest.approx(1.5)
     assert sorted(tracker.cluster_tracks) == sorted(track.id for track in tracker.tracks)
     discs = tracker.moving_discs()

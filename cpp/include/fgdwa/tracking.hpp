@@ -5,9 +5,9 @@
 // planner can predict them (moving_discs) and the static map can leave their
 // hits out (explains).
 //
-// Lifecycle: segment_scan() every scan; Tracker::update() with its clusters
-// and the scan's time (never going back); read tracks(), moving_discs(),
-// explains(); reset() to forget every track.
+// Lifecycle: segment_scan() every scan; Tracker::update() with its clusters,
+// the scan's time (never going back) and the scan itself; read tracks(),
+// moving_discs(), explains(); reset() to forget every track.
 #include <Eigen/Core>
 #include <cstdint>
 #include <deque>
@@ -76,6 +76,7 @@ struct TrackerParams {
   double moving_speed = 0.2;        // m/s: a confirmed track whose window speed, less moving_sigmas std, exceeds it is moving
   double moving_sigmas = 2.0;       // std devs taken off the window speed before comparing it with moving_speed
   double moving_window = 1.0;       // s: the window speed is the slope of a line fitted to the unoccluded centres this far back
+  double free_margin = 0.1;         // m: a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
   double max_speed = 3.0;           // m/s; an association implying more is rejected
   double uncertainty_sigmas = 2.0;  // position std devs added to a moving disc's radius
   void validate() const;
@@ -88,7 +89,7 @@ struct Track {
   Vec2 velocity = Vec2::Zero();  // m/s, the filter's: follows turns within a few scans, noisier
   Eigen::Matrix4d covariance = Eigen::Matrix4d::Identity();  // of (x, y, vx, vy)
   double radius = 0.0;     // m, smoothed over the clusters taken
-  bool moving = false;     // confirmed and fast enough with confidence (with hysteresis)
+  bool moving = false;     // confirmed, fast enough with confidence, and displacing free space (with hysteresis)
   // m/s, slope of a line through the unoccluded centres of the last
   // moving_window (as of the last association): steadier than `velocity`,
   // half a window late through turns. The moving label and moving_discs use it.
@@ -112,7 +113,14 @@ class Tracker {
   // clusters to tracks (gated, optimal: confirmed and lost tracks first, then
   // tentative ones), corrects the assigned tracks, starts tentative tracks
   // from the clusters left, then marks tracks lost and removes the long lost.
-  void update(const std::vector<Cluster>& clusters, double time);
+  //
+  // `scan`, the one the clusters came from (unmasked), gives the moving label
+  // its second test: half a moving_window apart, a mover's hits lie where the
+  // other scan saw through (its leading side in the earlier scan's free
+  // space, or its trailing side in the later one's), a static object's never,
+  // however its apparent outline changes as the robot drives past. Without
+  // scans (detections from elsewhere) only the window speed decides.
+  void update(const std::vector<Cluster>& clusters, double time, const Scan* scan = nullptr);
   const std::vector<Track>& tracks() const { return tracks_; }
   // For each cluster of the last update, the id of the track that took it.
   const std::vector<int>& cluster_tracks() const { return cluster_tracks_; }
@@ -133,16 +141,21 @@ class Tracker {
   double measurement_variance(const Cluster& cluster) const;
   void predict(double dt);
   void correct(Track& track, const Cluster& cluster, double time);
-  void relabel(Track& track, const std::deque<std::pair<double, Vec2>>& centres) const;
-
   // What a track remembers of its clusters.
   struct Memory {
-    Vec2 seen_position;                             // m, after its last association
-    std::deque<std::pair<double, Vec2>> centres;    // (s, m) unoccluded centres within moving_window
+    Vec2 seen_position;                                        // m, after its last association
+    std::deque<std::pair<double, Vec2>> centres;               // (s, m) unoccluded centres within moving_window
+    std::deque<std::pair<double, std::vector<Vec2>>> shapes;   // (s, m) hits of the clusters taken, within moving_window
+    std::deque<double> displaced;                              // s, updates whose hits displaced free space
   };
+  void relabel(Track& track, const Memory& memory) const;
+  bool displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan, double time) const;
+  const Scan* reference_scan(double time) const;
   TrackerParams params_;
   std::vector<Track> tracks_;
   std::vector<Memory> memory_;  // one per track
+  std::deque<std::pair<double, Scan>> scans_;  // (s, scan) within moving_window
+  bool has_scans_ = false;                      // scans were given: the moving label needs free-space evidence
   std::vector<int> cluster_tracks_;
   double time_;
   int next_id_ = 0;
