@@ -29,6 +29,28 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
     obstacle_speed_ = std::max(obstacle_speed_, d.velocity.norm() + d.growth);
   }
   discs_ = std::move(discs);
+  split_moving();
+}
+
+void FieldClearance::set_field(std::shared_ptr<const DistanceField> field) {
+  field_ = std::move(field);
+  split_moving();
+}
+
+void FieldClearance::set_sensed(std::shared_ptr<const DistanceField> sensed) {
+  sensed_ = std::move(sensed);
+  split_moving();
+}
+
+void FieldClearance::split_moving() {
+  fixed_.reset();
+  if (obstacle_speed_ <= 0.0) return;
+  std::vector<Disc> still;
+  for (const Disc& d : discs_)
+    if (d.growth <= 0.0 && d.velocity.isZero()) still.push_back(d);
+  auto fixed = std::make_shared<FieldClearance>(field_, std::move(still));
+  fixed->set_sensed(sensed_);
+  fixed_ = std::move(fixed);
 }
 
 namespace {

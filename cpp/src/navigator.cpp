@@ -320,7 +320,7 @@ void Navigator::track(const Scan& scan, double time) {
     }
     segment_mask_[i] = 0;
   }
-  tracker_.update(segment_scan(scan, params_.segment, &segment_mask_), time);
+  tracker_.update(segment_scan(scan, params_.segment, &segment_mask_), time, &scan);
   record_.tracked = tracker_.moving_discs();
   if (record_.tracked.empty()) return;
   for (std::size_t i = 0; i < n; ++i)

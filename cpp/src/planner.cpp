@@ -264,10 +264,13 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   // millimetres, so a rollout grazing an obstacle is not trusted.
   // The margin never asks for more room than the robot already has, so a robot
   // that came within it can still move on without closing in.
-  const double clearance_now = world.clearance(footprint_, state.pose, 0.0);
+  // The braking rule and the sweep hold against what stands still; moving
+  // obstacles are checked on their own below, since braking cannot keep them off.
+  const ClearanceSource& fixed = world.static_part();
+  const double clearance_now = fixed.clearance(footprint_, state.pose, 0.0);
   const double margin = std::clamp(clearance_now - 1e-3, 0.0, params_.safety_margin);
   const double start_clearance = clearance_now - margin;
-  const double obstacle_travel = world.obstacle_speed() * params_.dt;
+  const double obstacle_travel = fixed.obstacle_speed() * params_.dt;
   const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
   bounds_.resize(static_cast<std::size_t>(n_steps_));
   exact_.resize(static_cast<std::size_t>(n_steps_));
@@ -288,12 +291,12 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     // Cheap lower bounds first; exact clearances only where a bound cannot
     // settle contact or the minimum. The result is the same as evaluating
     // every pose exactly.
-    world.clearance_lower_bounds(footprint_, poses, params_.dt, bounds_.data());
+    fixed.clearance_lower_bounds(footprint_, poses, params_.dt, bounds_.data());
     std::fill(exact_.begin(), exact_.end(), std::numeric_limits<double>::quiet_NaN());
     const auto exact = [&](int k) {
       double& c = exact_[static_cast<std::size_t>(k)];
       if (std::isnan(c))
-        c = world.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt) - margin;
+        c = fixed.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt) - margin;
       return c;
     };
     double free_distance = inf;
@@ -313,7 +316,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
         if (step.covered(previous_low, c)) continue;
       }
       const Pose2& from = k == 0 ? state.pose : poses[static_cast<std::size_t>(k - 1)];
-      const bool clear = c > 0.0 && (leaving_contact || detail::step_clear(world, footprint_, step, from,
+      const bool clear = c > 0.0 && (leaving_contact || detail::step_clear(fixed, footprint_, step, from,
                                                                    k == 0 ? start_clearance : exact(k - 1),
                                                                    poses[static_cast<std::size_t>(k)], c,
                                                                    k * params_.dt, params_.dt, margin));
@@ -346,7 +349,9 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     }
     result_.moving_contact[i] = std::numeric_limits<double>::infinity();
     if (reason == RejectReason::None && moving_world) {
-      result_.moving_contact[i] = first_moving_contact(state.pose, cmd, poses, world, margin);
+      double closest = std::numeric_limits<double>::infinity();
+      result_.moving_contact[i] = first_moving_contact(state.pose, cmd, poses, world, margin, last, closest);
+      result_.min_clearance[i] = std::min(result_.min_clearance[i], closest);
       if (std::isfinite(result_.moving_contact[i])) reason = RejectReason::Moving;
     }
     result_.reasons[i] = reason;
@@ -355,18 +360,22 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
 }
 
 double LocalPlanner::first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
-                                          const ClearanceSource& world, double margin) const {
+                                          const ClearanceSource& world, double margin, int last,
+                                          double& closest) const {
   // A contact between two poses leaves one of them within half the relative
   // motion of the step: the robot's drive and turn and the obstacle's travel.
   const double half_step = 0.5 * params_.dt *
                            (std::abs(cmd.v) + footprint_.radius() * std::abs(cmd.omega) + world.obstacle_speed());
-  if (world.moving_clearance(footprint_, start, 0.0) - margin <= 0.0) return 0.0;
-  for (int k = 0; k < n_steps_; ++k) {
+  double contact = std::numeric_limits<double>::infinity();
+  closest = world.moving_clearance(footprint_, start, 0.0);
+  if (closest - margin <= 0.0) contact = 0.0;
+  for (int k = 0; k <= last; ++k) {
     const double t = (k + 1) * params_.dt;
-    if (t - params_.dt >= params_.moving_horizon) break;
-    if (world.moving_clearance(footprint_, poses[static_cast<std::size_t>(k)], t) - margin <= half_step) return t;
+    const double c = world.moving_clearance(footprint_, poses[static_cast<std::size_t>(k)], t);
+    closest = std::min(closest, c);
+    if (std::isinf(contact) && t - params_.dt < params_.moving_horizon && c - margin <= half_step) contact = t;
   }
-  return std::numeric_limits<double>::infinity();
+  return contact;
 }
 
 int LocalPlanner::latest_moving_contact() const {

@@ -344,7 +344,9 @@ std::vector<Disc> Tracker::moving_discs() const {
   std::vector<Disc> discs;
   for (const Track& t : tracks_) {
     if (!t.moving || t.status == TrackStatus::Tentative) continue;
-    discs.push_back(Disc{t.position, t.radius + params_.uncertainty_sigmas * t.position_std(), t.window_velocity});
+    // The prediction spreads with the velocity's own uncertainty.
+    discs.push_back(Disc{t.position, t.radius + params_.uncertainty_sigmas * t.position_std(), t.window_velocity,
+                         params_.uncertainty_sigmas * t.window_speed_std});
   }
   return discs;
 }

@@ -581,11 +581,28 @@ TEST(LocalPlanner, RejectsNonFiniteInput) {
 // disc will be then, and the motion between poses is checked against the
 // discs moving too. The first contact the planner reports is the one found by
 // walking every rollout on a 1 ms time axis, never later.
+// Moving discs held in the sweep as a world that cannot split them off does it.
+class Unsplit : public ClearanceSource {
+ public:
+  explicit Unsplit(const FieldClearance& inner) : inner_(inner) {}
+  double clearance(const Footprint& fp, const Pose2& pose, double t) const override {
+    return inner_.clearance(fp, pose, t);
+  }
+  void clearance_lower_bounds(const Footprint& fp, const Trajectory& poses, double dt, double* out) const override {
+    inner_.clearance_lower_bounds(fp, poses, dt, out);
+  }
+  double obstacle_speed() const override { return inner_.obstacle_speed(); }
+
+ private:
+  const FieldClearance& inner_;
+};
+
 TEST(LocalPlanner, SpaceTimeContactMatchesBruteForceOverTime) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0), angle(-M_PI, M_PI);
   PlannerParams params;
   params.safety_margin = 0.0;
+  params.moving_horizon = 0.0;
   const Footprint footprint = Footprint::circle(0.25);
   LocalPlanner planner(RobotLimits{}, footprint, params);
   int checked = 0, exact_matches = 0;
@@ -598,7 +615,8 @@ TEST(LocalPlanner, SpaceTimeContactMatchesBruteForceOverTime) {
              speed * Vec2(std::cos(heading), std::sin(heading)), trial % 2 ? 0.1 * unit(rng) : 0.0};
       discs.push_back(d);
     }
-    const FieldClearance world(nullptr, discs);
+    const FieldClearance discs_world(nullptr, discs);
+    const Unsplit world(discs_world);
     if (world.clearance(footprint, Pose2{}, 0.0) <= 0.0) continue;
     const PlanResult& result = planner.plan(RobotState{Pose2{0.0, 0.0, angle(rng)}, Twist{0.6, 0.3}}, Vec2(3, 0), world);
     const auto& rollouts = planner.rollouts();
@@ -652,7 +670,10 @@ namespace {
 // The same world without lower bounds: every pose is evaluated exactly.
 class WithoutBounds : public ClearanceSource {
  public:
-  explicit WithoutBounds(const ClearanceSource& inner) : inner_(inner) {}
+  explicit WithoutBounds(const ClearanceSource& inner) : inner_(inner) {
+    if (&inner.static_part() != &inner) fixed_ = std::make_unique<WithoutBounds>(inner.static_part());
+  }
+  const ClearanceSource& static_part() const override { return fixed_ ? *fixed_ : *this; }
   double clearance(const Footprint& fp, const Pose2& pose, double t) const override {
     return inner_.clearance(fp, pose, t);
   }
@@ -663,6 +684,7 @@ class WithoutBounds : public ClearanceSource {
 
  private:
   const ClearanceSource& inner_;
+  std::unique_ptr<WithoutBounds> fixed_;
 };
 
 void expect_bounds_change_nothing(const Footprint& footprint) {

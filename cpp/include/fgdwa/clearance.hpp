@@ -48,6 +48,9 @@ class ClearanceSource {
     (void)footprint, (void)pose, (void)t;
     return std::numeric_limits<double>::infinity();
   }
+  // The same world without its moving obstacles, which the planner checks on
+  // their own (moving_clearance); the source itself when it cannot split them.
+  virtual const ClearanceSource& static_part() const { return *this; }
 };
 
 // The footprint's distance to those of `discs` that move or grow, placed `t` seconds ahead.
@@ -60,12 +63,12 @@ class FieldClearance : public ClearanceSource {
 
   void set_discs(std::vector<Disc> discs);
   // Replaces the static map's field (null for none), e.g. with a map built from scans.
-  void set_field(std::shared_ptr<const DistanceField> field) { field_ = std::move(field); }
+  void set_field(std::shared_ptr<const DistanceField> field);
   const std::vector<Disc>& discs() const { return discs_; }
   const std::shared_ptr<const DistanceField>& field() const { return field_; }
   // Obstacles seen by the lidar but missing from the map (perception.hpp's
   // points_field); null for none.
-  void set_sensed(std::shared_ptr<const DistanceField> sensed) { sensed_ = std::move(sensed); }
+  void set_sensed(std::shared_ptr<const DistanceField> sensed);
   const std::shared_ptr<const DistanceField>& sensed() const { return sensed_; }
 
   double clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
@@ -73,10 +76,14 @@ class FieldClearance : public ClearanceSource {
                               double* out) const override;
   double obstacle_speed() const override { return obstacle_speed_; }
   double moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
+  const ClearanceSource& static_part() const override { return fixed_ ? *fixed_ : *this; }
 
  private:
   std::shared_ptr<const DistanceField> field_;
   double obstacle_speed_ = 0.0;
+  // The fields and the discs that do not move; null when no disc moves.
+  std::shared_ptr<const FieldClearance> fixed_;
+  void split_moving();
   std::shared_ptr<const DistanceField> sensed_;
   std::vector<Disc> discs_;
 };

@@ -177,8 +177,9 @@ class LocalPlanner {
   int first_terrain_contact(const Trajectory& poses, bool centre_only) const;
   // Time (s) at which the rollout from `start` first comes into contact with a
   // moving obstacle of `world`, within moving_horizon; +inf if it does not.
+  // `closest`: its smallest clearance to them over poses 0..last.
   double first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
-                              const ClearanceSource& world, double margin) const;
+                              const ClearanceSource& world, double margin, int last, double& closest) const;
   // Among the samples rejected only for a moving obstacle, the one that meets
   // it latest (then the clearest); -1 if there is none.
   int latest_moving_contact() const;
