@@ -70,6 +70,9 @@ double seconds_since(Clock::time_point start) {
 
 int cycles_of(double seconds, double dt) { return static_cast<int>(std::lround(seconds / dt)); }
 
+// rad at each end of a lidar's field of view where objects are not tracked.
+constexpr double kFieldOfViewEdge = 5.0 * M_PI / 180.0;
+
 
 // Moves `current` toward `target` by at most `step`.
 double approach(double current, double target, double step) {
@@ -320,11 +323,37 @@ void Navigator::track(const Scan& scan, double time) {
     }
     segment_mask_[i] = 0;
   }
-  tracker_.update(segment_scan(scan, params_.segment, &segment_mask_), time, &scan);
+  std::vector<Cluster> clusters = segment_scan(scan, params_.segment, &segment_mask_);
+  // An object cut by the edge of the field of view shows a part that slides
+  // with the robot: it is tracked once wholly in view.
+  const bool full_circle = scan.angle_increment * static_cast<double>(n) >= 2.0 * M_PI - 1e-9;
+  if (!full_circle && scan.angle_increment > 0.0) {
+    const int edge = static_cast<int>(std::ceil(kFieldOfViewEdge / scan.angle_increment));
+    clusters.erase(std::remove_if(clusters.begin(), clusters.end(),
+                                  [&](const Cluster& cl) {
+                                    return cl.first_beam < edge || cl.last_beam > static_cast<int>(n) - 1 - edge;
+                                  }),
+                   clusters.end());
+  }
+  tracker_.update(clusters, time, &scan);
   record_.tracked = tracker_.moving_discs();
+  if (scan_map_) {
+    // A mover stands where the robot saw free space before it came; an
+    // obstacle's newly seen face has behind it cells never seen, or seen hit.
+    const auto seen_free = [&](const Disc& d) {
+      int row = 0, col = 0;
+      return map().cell_of(d.center, row, col) && scan_map_->state(row, col) == CellState::Free;
+    };
+    record_.tracked.erase(std::remove_if(record_.tracked.begin(), record_.tracked.end(),
+                                         [&](const Disc& d) { return !seen_free(d); }),
+                          record_.tracked.end());
+  }
   if (record_.tracked.empty()) return;
-  for (std::size_t i = 0; i < n; ++i)
-    if (std::isfinite(scan.ranges[i]) && tracker_.explains(hits[i], tolerance)) keep_hit_[i] = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(scan.ranges[i])) continue;
+    for (const Disc& d : record_.tracked)
+      if ((hits[i] - d.center).norm() <= d.radius + tolerance) keep_hit_[i] = 0;
+  }
 }
 
 void Navigator::start_recovery(const RobotState& state, const std::vector<Disc>& discs) {
