@@ -98,7 +98,7 @@ void init_planner(py::module_& m) {
            py::arg("dt") = 0.15, py::arg("sim_time") = 3.0, py::arg("n_v") = 21, py::arg("n_omega") = 21,
            py::arg("normalization") = "sum", py::arg("braking") = "discrete", py::arg("goal_tolerance") = 0.3, py::arg("critics") = py::none(),
            py::arg("heading_target") = "goal", py::arg("key_node_angle_deg") = 10.0, py::arg("key_node_radius") = 1.0,
-           py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = false, py::arg("moving_horizon") = 2.0,
+           py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = false, py::arg("moving_horizon") = 1.0,
            "dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample "
            "counts; normalization: 'sum', 'minmax' or 'none' (raw terms, as Nav2's DWB adds them); braking: 'discrete' (stop within the free distance "
            "with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts "

@@ -108,12 +108,13 @@ void init_tracking(py::module_& m) {
   py::class_<TrackerParams>(m, "TrackerParams",
                             "Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), "
                             "confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, "
-                            "moving_window s, free_margin m), max_speed (m/s), uncertainty_sigmas.")
+                            "moving_window s, free_margin m), max_speed (m/s), uncertainty_sigmas, max_uncertainty (m).")
       .def(py::init([](double gate, double gate_sigmas, double accel_std, double measurement_std, int confirm_hits,
                        double lost_time, double moving_speed, double moving_sigmas, double moving_window,
-                       double free_margin, double max_speed, double uncertainty_sigmas) {
+                       double free_margin, double max_speed, double uncertainty_sigmas, double max_uncertainty) {
              TrackerParams p{gate,          gate_sigmas, accel_std, measurement_std, confirm_hits,      lost_time,
-                             moving_speed,  moving_sigmas, moving_window, free_margin, max_speed, uncertainty_sigmas};
+                             moving_speed,  moving_sigmas, moving_window, free_margin, max_speed, uncertainty_sigmas,
+                             max_uncertainty};
              p.validate();
              return p;
            }),
@@ -121,7 +122,8 @@ void init_tracking(py::module_& m) {
            py::arg("measurement_std") = td.measurement_std, py::arg("confirm_hits") = td.confirm_hits,
            py::arg("lost_time") = td.lost_time, py::arg("moving_speed") = td.moving_speed,
            py::arg("moving_sigmas") = td.moving_sigmas, py::arg("moving_window") = td.moving_window,
-           py::arg("free_margin") = td.free_margin, py::arg("max_speed") = td.max_speed, py::arg("uncertainty_sigmas") = td.uncertainty_sigmas)
+           py::arg("free_margin") = td.free_margin, py::arg("max_speed") = td.max_speed, py::arg("uncertainty_sigmas") = td.uncertainty_sigmas,
+           py::arg("max_uncertainty") = td.max_uncertainty)
       .def_readonly("gate", &TrackerParams::gate)
       .def_readonly("gate_sigmas", &TrackerParams::gate_sigmas)
       .def_readonly("accel_std", &TrackerParams::accel_std)
@@ -134,6 +136,7 @@ void init_tracking(py::module_& m) {
       .def_readonly("free_margin", &TrackerParams::free_margin)
       .def_readonly("max_speed", &TrackerParams::max_speed)
       .def_readonly("uncertainty_sigmas", &TrackerParams::uncertainty_sigmas)
+      .def_readonly("max_uncertainty", &TrackerParams::max_uncertainty)
       .def("__repr__", [](const TrackerParams& p) {
         std::ostringstream s;
         s << "TrackerParams(gate=" << p.gate << ", gate_sigmas=" << p.gate_sigmas << ", accel_std=" << p.accel_std

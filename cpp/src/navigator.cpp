@@ -337,12 +337,25 @@ void Navigator::track(const Scan& scan, double time) {
   }
   tracker_.update(clusters, time, &scan);
   record_.tracked = tracker_.moving_discs();
+  // Nothing stands inside the robot: a track there is made of its own surroundings.
+  record_.tracked.erase(std::remove_if(record_.tracked.begin(), record_.tracked.end(),
+                                       [&](const Disc& d) { return footprint_.signed_distance(scan.pose, d.center) <= 0.0; }),
+                        record_.tracked.end());
   if (scan_map_) {
-    // A mover stands where the robot saw free space before it came; an
-    // obstacle's newly seen face has behind it cells never seen, or seen hit.
+    // A mover stands where the robot saw free space before it came, and
+    // covers no cell hit scan after scan (a mover's cells take a few hits at
+    // most while it is being labelled); an obstacle's newly seen face has
+    // behind it cells never seen, or hit.
+    const OccupancyGrid& grid = map();
     const auto seen_free = [&](const Disc& d) {
       int row = 0, col = 0;
-      return map().cell_of(d.center, row, col) && scan_map_->state(row, col) == CellState::Free;
+      if (!grid.cell_of(d.center, row, col) || scan_map_->state(row, col) != CellState::Free) return false;
+      const double reach = 0.7 * d.radius;
+      const int cells = static_cast<int>(std::ceil(reach / grid.resolution()));
+      for (int r = std::max(0, row - cells); r <= std::min(grid.rows() - 1, row + cells); ++r)
+        for (int c = std::max(0, col - cells); c <= std::min(grid.cols() - 1, col + cells); ++c)
+          if (scan_map_->log_odds(r, c) >= settled && (grid.cell_center(r, c) - d.center).norm() <= reach) return false;
+      return true;
     };
     record_.tracked.erase(std::remove_if(record_.tracked.begin(), record_.tracked.end(),
                                          [&](const Disc& d) { return !seen_free(d); }),
@@ -369,6 +382,8 @@ void Navigator::start_recovery(const RobotState& state, const std::vector<Disc>&
     return d.velocity.norm() > 0.05 && (d.center - position).norm() - d.radius <= params_.wait_radius;
   });
   if (moving_obstacle_near && params_.wait_time > 0.0) {
+    // Letting a mover pass is not an attempt that failed.
+    --recoveries_;
     mode_now_ = NavigatorMode::Waiting;
     wait_cycles_left_ = std::max(1, cycles_of(params_.wait_time, dt_));
     return;

@@ -256,6 +256,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   result_.reasons.resize(n);
   result_.min_clearance.resize(n);
   result_.moving_contact.resize(n);
+  escape_.assign(n, -std::numeric_limits<double>::infinity());
   result_.free_distance.resize(n);
   const double inf = std::numeric_limits<double>::infinity();
   // A start already in contact is not held against the first step, so the robot can still leave.
@@ -350,7 +351,10 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     result_.moving_contact[i] = std::numeric_limits<double>::infinity();
     if (reason == RejectReason::None && moving_world) {
       double closest = std::numeric_limits<double>::infinity();
-      result_.moving_contact[i] = first_moving_contact(state.pose, cmd, poses, world, margin, last, closest);
+      result_.moving_contact[i] =
+          first_moving_contact(state.pose, cmd, poses, world, margin, last, closest, escape_[i]);
+      // An evasion must not trade the mover for a wall.
+      escape_[i] = std::min(escape_[i], result_.min_clearance[i]);
       result_.min_clearance[i] = std::min(result_.min_clearance[i], closest);
       if (std::isfinite(result_.moving_contact[i])) reason = RejectReason::Moving;
     }
@@ -361,19 +365,23 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
 
 double LocalPlanner::first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
                                           const ClearanceSource& world, double margin, int last,
-                                          double& closest) const {
+                                          double& closest, double& escape) const {
   // A contact between two poses leaves one of them within half the relative
   // motion of the step: the robot's drive and turn and the obstacle's travel.
   const double half_step = 0.5 * params_.dt *
                            (std::abs(cmd.v) + footprint_.radius() * std::abs(cmd.omega) + world.obstacle_speed());
   double contact = std::numeric_limits<double>::infinity();
   closest = world.moving_clearance(footprint_, start, 0.0);
+  escape = closest;
   if (closest - margin <= 0.0) contact = 0.0;
   for (int k = 0; k <= last; ++k) {
     const double t = (k + 1) * params_.dt;
     const double c = world.moving_clearance(footprint_, poses[static_cast<std::size_t>(k)], t);
     closest = std::min(closest, c);
-    if (std::isinf(contact) && t - params_.dt < params_.moving_horizon && c - margin <= half_step) contact = t;
+    if (t - params_.dt < params_.moving_horizon) {
+      escape = c;
+      if (std::isinf(contact) && c - margin <= half_step) contact = t;
+    }
   }
   return contact;
 }
@@ -388,7 +396,7 @@ int LocalPlanner::latest_moving_contact() const {
     }
     const std::size_t b = static_cast<std::size_t>(best);
     const double ti = result_.moving_contact[i], tb = result_.moving_contact[b];
-    if (ti > tb || (ti == tb && result_.min_clearance[i] > result_.min_clearance[b])) best = static_cast<int>(i);
+    if (ti > tb || (ti == tb && escape_[i] > escape_[b])) best = static_cast<int>(i);
   }
   return best;
 }

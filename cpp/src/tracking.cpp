@@ -33,6 +33,7 @@ void TrackerParams::validate() const {
   detail::require_positive("tracker free_margin", free_margin);
   detail::require_positive("tracker max_speed", max_speed);
   detail::require_non_negative("tracker uncertainty_sigmas", uncertainty_sigmas);
+  detail::require_non_negative("tracker max_uncertainty", max_uncertainty);
 }
 
 namespace {
@@ -345,7 +346,9 @@ std::vector<Disc> Tracker::moving_discs() const {
   for (const Track& t : tracks_) {
     if (!t.moving || t.status == TrackStatus::Tentative) continue;
     // The prediction spreads with the velocity's own uncertainty.
-    discs.push_back(Disc{t.position, t.radius + params_.uncertainty_sigmas * t.position_std(), t.window_velocity,
+    discs.push_back(Disc{t.position,
+                         t.radius + std::min(params_.uncertainty_sigmas * t.position_std(), params_.max_uncertainty),
+                         t.window_velocity,
                          params_.uncertainty_sigmas * t.window_speed_std});
   }
   return discs;
@@ -357,7 +360,9 @@ bool Tracker::explains(const Vec2& point, double margin) const {
   detail::require_non_negative("explains margin", margin);
   for (const Track& t : tracks_) {
     if (!t.moving || t.status != TrackStatus::Confirmed) continue;
-    if ((point - t.position).norm() <= t.radius + params_.uncertainty_sigmas * t.position_std() + margin) return true;
+    if ((point - t.position).norm() <=
+        t.radius + std::min(params_.uncertainty_sigmas * t.position_std(), params_.max_uncertainty) + margin)
+      return true;
   }
   return false;
 }

@@ -410,7 +410,8 @@ TEST(Tracker, CrossingMoversKeepTheirIds) {
 }
 
 TEST(Tracker, TracksAreConfirmedThenLostThenRemoved) {
-  TrackerParams p;  // confirm_hits 3, lost_time 0.5
+  TrackerParams p;  // confirm_hits 3
+  p.lost_time = 0.5;
   Tracker tracker(p);
   const Vec2 at(2.0, 1.0);
   tracker.update({cluster_at(at)}, 0.0);

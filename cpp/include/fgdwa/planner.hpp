@@ -78,7 +78,7 @@ struct PlannerParams {
   // s: a rollout predicted to meet a moving obstacle this soon is rejected,
   // standing still included: a robot that brakes is still hit by what moves
   // into it. 0: moving obstacles count only as the braking rule counts them.
-  double moving_horizon = 2.0;
+  double moving_horizon = 1.0;
   HeadingTarget heading_target = HeadingTarget::Goal;
   KeyNodeParams key_nodes;      // key-node angle and reach radius, for HeadingTarget::KeyNodes
   std::vector<CriticConfig> critics = {
@@ -169,6 +169,7 @@ class LocalPlanner {
   std::vector<Trajectory> rollouts_;
   std::vector<double> bounds_, exact_;
   std::vector<RolloutHeadings> headings_;  // per omega of the window
+  std::vector<double> escape_;  // per sample: clearance to the movers at the end of moving_horizon
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;
@@ -177,11 +178,14 @@ class LocalPlanner {
   int first_terrain_contact(const Trajectory& poses, bool centre_only) const;
   // Time (s) at which the rollout from `start` first comes into contact with a
   // moving obstacle of `world`, within moving_horizon; +inf if it does not.
-  // `closest`: its smallest clearance to them over poses 0..last.
+  // `closest`: its smallest clearance to them over poses 0..last; `escape`:
+  // its clearance to them at the last pose within moving_horizon.
   double first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
-                              const ClearanceSource& world, double margin, int last, double& closest) const;
+                              const ClearanceSource& world, double margin, int last, double& closest,
+                              double& escape) const;
   // Among the samples rejected only for a moving obstacle, the one that meets
-  // it latest (then the clearest); -1 if there is none.
+  // it latest (then the one farthest from it at the horizon and from the
+  // static obstacles all along); -1 if there is none.
   int latest_moving_contact() const;
 
   std::shared_ptr<const TerrainGrid> terrain_;

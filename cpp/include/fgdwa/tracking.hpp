@@ -79,6 +79,7 @@ struct TrackerParams {
   double free_margin = 0.1;         // m: a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
   double max_speed = 3.0;           // m/s; an association implying more is rejected
   double uncertainty_sigmas = 2.0;  // position std devs added to a moving disc's radius
+  double max_uncertainty = 0.3;     // m, the most the position's uncertainty adds to it (a coasting track's grows)
   void validate() const;
 };
 
