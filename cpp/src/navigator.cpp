@@ -100,13 +100,15 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
   controller_.set_range_noise(lidar_.noise_std);
   if (terrain_ && !terrain_->matches(map))
     throw Error("terrain: its cells must lie exactly on the map's (same size, resolution and origin)");
+  OccupancyParams occupancy = params_.occupancy;
+  occupancy.range_std = std::max(occupancy.range_std, lidar_.noise_std);
   if (mode_ == MapMode::Known) {
     known_map_ = std::make_unique<OccupancyGrid>(map);
+    planning_map_ = std::make_unique<OccupancyGrid>(map);
     known_field_ = std::make_shared<DistanceField>(map);
     controller_.set_map(known_field_);
+    if (params_.learn_obstacles) scan_map_ = std::make_unique<ScanMap>(map, occupancy);
   } else {
-    OccupancyParams occupancy = params_.occupancy;
-    occupancy.range_std = std::max(occupancy.range_std, lidar_.noise_std);
     scan_map_ = std::make_unique<ScanMap>(map, occupancy);
   }
   if (terrain_) controller_.set_terrain(std::make_shared<TerrainGrid>(*terrain_), passing_factors);
@@ -119,7 +121,7 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
   stall_cycles_ = cycles_of(params_.stall_time, dt_);
 }
 
-const OccupancyGrid& Navigator::map() const { return known_map_ ? *known_map_ : scan_map_->grid(); }
+const OccupancyGrid& Navigator::map() const { return planning_map_ ? *planning_map_ : scan_map_->grid(); }
 
 bool Navigator::needs_path() const { return controller_.planner().needs_path(); }
 
@@ -166,7 +168,7 @@ bool Navigator::plan_path(const Vec2& from) {
   }
   const OccupancyGrid& grid = with_closed ? *with_closed : base;
   std::vector<std::uint8_t> unknown;
-  if (scan_map_ && params_.unknown_cost > 0.0) {
+  if (scan_map_ && !known_map_ && params_.unknown_cost > 0.0) {
     unknown.resize(scan_map_->states().size());
     for (std::size_t i = 0; i < unknown.size(); ++i)
       unknown[i] = scan_map_->states()[i] == static_cast<std::uint8_t>(CellState::Unknown);
@@ -315,7 +317,8 @@ void Navigator::track(const Scan& scan, double time) {
     const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
     hits[i] = Vec2(scan.pose.x + r * std::cos(a), scan.pose.y + r * std::sin(a));
     if (!field || !field->has_obstacles() || field->distance(hits[i]) > tolerance) continue;
-    if (scan_map_) {
+    const bool on_prior = known_field_ && known_field_->has_obstacles() && known_field_->distance(hits[i]) <= tolerance;
+    if (scan_map_ && !on_prior) {
       int row = 0, col = 0;
       if (!map().cell_of(hits[i], row, col) || scan_map_->log_odds(row, col) < settled ||
           tracker_.explains(hits[i], tolerance))
@@ -474,7 +477,17 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   if (scan_map_ && scan) {
     record_.new_cells = scan_map_->integrate(*scan, tracking ? &keep_hit_ : nullptr);
     if (record_.new_cells) {
-      controller_.set_map(scan_map_->field());
+      if (known_map_) {
+        // The known map with what the scans found that it lacks.
+        std::vector<std::uint8_t> cells = known_map_->cells();
+        const std::vector<std::uint8_t>& seen = scan_map_->grid().cells();
+        for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = cells[i] || seen[i];
+        *planning_map_ = OccupancyGrid(known_map_->rows(), known_map_->cols(),
+                                       known_map_->resolution(), known_map_->origin(), std::move(cells));
+        controller_.set_map(std::make_shared<const DistanceField>(*planning_map_, *controller_.map()));
+      } else {
+        controller_.set_map(scan_map_->field());
+      }
       ++map_version_;
     }
   }

@@ -111,10 +111,11 @@ def dead_end_scenario() -> Scenario:
     """A pocket open toward the start whose back wall the map lacks.
 
     The global path runs straight through the pocket to the goal beyond it;
-    the lidar shows the back wall only once the robot is inside. The map never
-    learns it (it is the known map), so only a recovery gets the robot out: it
-    stalls at the wall, gives up the stretch of path ahead, backs out, and the
-    replanned path goes round the pocket."""
+    the lidar shows the back wall as the robot approaches. A navigator that
+    learns obstacles (NavigatorParams.learn_obstacles, the default) adds it to
+    its map and replans round the pocket; one whose map never learns needs a
+    recovery: it stalls at the wall, gives up the stretch of path ahead, backs
+    out, and the replanned path goes round the pocket."""
     resolution = 0.1
     cells = _walled_room(100, 140)
     _fill(cells, resolution, 4.0, 3.8, 9.0, 4.0)  # lower side of the pocket
@@ -127,7 +128,8 @@ def dead_end_scenario() -> Scenario:
         world=World(grid=grid, hidden=OccupancyGrid(hidden, resolution, (0.0, 0.0))),
         start=(1.5, 5.0, 0.0),
         goal=(12.5, 5.0),
-        description="A pocket the global path enters because the map lacks its back wall; only a recovery solves it.",
+        description="A pocket the global path enters because the map lacks its back wall: learnt from the scans, or "
+                    "left by a recovery.",
     )
 
 

@@ -55,7 +55,7 @@ const char* to_string(FailureReason reason);
 
 // Where the navigator's map comes from.
 enum class MapMode : std::uint8_t {
-  Known,  // the grid given is the map (obstacles it lacks are seen only in the scans)
+  Known,  // the grid given is the map; obstacles it lacks are learnt from the scans (learn_obstacles)
   Scan,   // the grid gives only the layout; the map is built from the scans' hits
 };
 const char* to_string(MapMode mode);
@@ -86,6 +86,12 @@ struct NavigatorParams {
   bool track_moving = true;
   SegmentParams segment;
   TrackerParams tracker;
+  // MapMode::Known: obstacles the scans find that the map lacks join it (a
+  // map built from scans beside the known one, whose obstacles it keeps), so
+  // the global path goes round them as soon as they are seen; they fade if
+  // they go. false: the map stays as given and such obstacles reach only the
+  // local planner (and the global one at a stall).
+  bool learn_obstacles = true;
   // Extra cost per metre for the global path through cells the scans have not
   // yet observed (MapMode::Scan; AStarParams::unknown_cost). 0: unknown is free.
   double unknown_cost = 0.0;
@@ -216,6 +222,7 @@ class Navigator {
   std::vector<std::uint8_t> segment_mask_, keep_hit_;  // per beam
   std::unique_ptr<ScanMap> scan_map_;                    // MapMode::Scan
   std::unique_ptr<OccupancyGrid> known_map_;             // MapMode::Known
+  std::unique_ptr<OccupancyGrid> planning_map_;          // MapMode::Known: the known map and the obstacles learnt
   std::shared_ptr<const DistanceField> known_field_;
   std::vector<std::uint8_t> closed_;                     // cells given up after stalls
   std::vector<double> radii_;                            // the inflation ladder, m
