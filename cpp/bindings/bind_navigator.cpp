@@ -47,7 +47,7 @@ void init_navigator(py::module_& m) {
                        double rotate_limit_deg, double wait_time, double wait_radius, int max_recoveries,
                        double progress_reset, int record_top_k, const OccupancyParams& occupancy,
                        double unknown_cost, bool track_moving, const SegmentParams& segment,
-                       const TrackerParams& tracker, bool learn_obstacles) {
+                       const TrackerParams& tracker, bool learn_obstacles, double mover_margin) {
              NavigatorParams p;
              p.path_margin = path_margin;
              p.replan_period = replan_period;
@@ -70,6 +70,7 @@ void init_navigator(py::module_& m) {
              p.segment = segment;
              p.tracker = tracker;
              p.learn_obstacles = learn_obstacles;
+             p.mover_margin = mover_margin;
              p.validate();
              return p;
            }),
@@ -81,6 +82,7 @@ void init_navigator(py::module_& m) {
            py::arg("progress_reset") = 1.0, py::arg("record_top_k") = 5,
            py::arg("occupancy") = OccupancyParams(), py::arg("unknown_cost") = 0.0, py::arg("track_moving") = true,
            py::arg("segment") = SegmentParams(), py::arg("tracker") = TrackerParams(), py::arg("learn_obstacles") = true,
+           py::arg("mover_margin") = 0.15,
            "path_margin: m kept beyond the footprint's radius by the global path where the map allows; "
            "replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance "
            "(m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after "
@@ -93,7 +95,8 @@ void init_navigator(py::module_& m) {
            "scans have not observed (0: unknown is free); track_moving: segment and track moving obstacles in the scans, "
            "predict them in the planner and keep their hits out of the map (False: every hit is static where it is, "
            "the ablation); segment, tracker: their settings; learn_obstacles: with a known map, obstacles the scans find "
-           "that it lacks join it (False: they reach only the local planner, and the global one at a stall).")
+           "that it lacks join it (False: they reach only the local planner, and the global one at a stall); mover_margin "
+           "(m): added to a tracked mover's radius.")
       .def_readonly("path_margin", &NavigatorParams::path_margin)
       .def_readonly("replan_period", &NavigatorParams::replan_period)
       .def_readonly("stall_time", &NavigatorParams::stall_time)
@@ -115,6 +118,7 @@ void init_navigator(py::module_& m) {
       .def_readonly("segment", &NavigatorParams::segment)
       .def_readonly("tracker", &NavigatorParams::tracker)
       .def_readonly("learn_obstacles", &NavigatorParams::learn_obstacles)
+      .def_readonly("mover_margin", &NavigatorParams::mover_margin)
       .def("__repr__", [](const NavigatorParams& p) {
         std::ostringstream s;
         s << "NavigatorParams(stall_time=" << p.stall_time << ", backup_distance=" << p.backup_distance

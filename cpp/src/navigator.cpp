@@ -59,6 +59,7 @@ void NavigatorParams::validate() const {
   segment.validate();
   tracker.validate();
   detail::require_non_negative("unknown_cost", unknown_cost);
+  detail::require_non_negative("mover_margin", mover_margin);
 }
 
 namespace {
@@ -365,6 +366,7 @@ void Navigator::track(const Scan& scan, double time) {
                           record_.tracked.end());
   }
   if (record_.tracked.empty()) return;
+  for (Disc& d : record_.tracked) d.radius += params_.mover_margin;
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(scan.ranges[i])) continue;
     for (const Disc& d : record_.tracked)
