@@ -82,7 +82,7 @@ void init_navigator(py::module_& m) {
            py::arg("progress_reset") = 1.0, py::arg("record_top_k") = 5,
            py::arg("occupancy") = OccupancyParams(), py::arg("unknown_cost") = 0.0, py::arg("track_moving") = true,
            py::arg("segment") = SegmentParams(), py::arg("tracker") = TrackerParams(), py::arg("learn_obstacles") = true,
-           py::arg("mover_margin") = 0.15,
+           py::arg("mover_margin") = 0.0,
            "path_margin: m kept beyond the footprint's radius by the global path where the map allows; "
            "replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance "
            "(m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after "

@@ -84,7 +84,7 @@ struct NavigatorParams {
   // stalled robot wait, and their hits stay out of the map built from scans.
   // false: every hit is a static obstacle where it is now (the ablation).
   bool track_moving = true;
-  double mover_margin = 0.15;  // m added to a tracked mover's radius: room for a mover to change its mind
+  double mover_margin = 0.0;   // m added to a tracked mover's radius: room for a mover to change its mind
   SegmentParams segment;
   TrackerParams tracker;
   // MapMode::Known: obstacles the scans find that the map lacks join it (a
