@@ -477,7 +477,20 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
 
   tic = Clock::now();
   if (scan_map_ && scan) {
-    record_.new_cells = scan_map_->integrate(*scan, tracking ? &keep_hit_ : nullptr);
+    if (!tracking) keep_hit_.assign(scan->ranges.size(), 1);
+    if (known_map_ && known_field_->has_obstacles()) {
+      // Hits on the known map's obstacles teach nothing new; marked, those
+      // that noise carries past a thin obstacle would thicken it.
+      const double tolerance = 0.5 * known_map_->resolution() + 3.0 * lidar_.noise_std;
+      for (std::size_t i = 0; i < scan->ranges.size(); ++i) {
+        const double r = scan->ranges[i];
+        if (!std::isfinite(r) || !keep_hit_[i]) continue;
+        const double a = scan->pose.theta + scan->angle_min + static_cast<double>(i) * scan->angle_increment;
+        if (known_field_->distance(Vec2(scan->pose.x + r * std::cos(a), scan->pose.y + r * std::sin(a))) <= tolerance)
+          keep_hit_[i] = 0;
+      }
+    }
+    record_.new_cells = scan_map_->integrate(*scan, &keep_hit_);
     if (record_.new_cells) {
       if (known_map_) {
         // The known map with what the scans found that it lacks.
