@@ -134,7 +134,7 @@ std::map<std::string, std::vector<double>>& samples() {
 
 // Per configuration, the summed stage times (map, global, perception, plan) and the cycles that replanned.
 struct Stages {
-  double map = 0, global = 0, perception = 0, plan = 0;
+  double tracking = 0, map = 0, global = 0, perception = 0, plan = 0;
   int replans = 0;
 };
 std::map<std::string, Stages>& stages() {
@@ -161,6 +161,7 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
     bench.SetIterationTime(seconds);
     times.push_back(seconds);
     const CycleRecord& r = loop.navigator->record();
+    sum.tracking += r.times.tracking;
     sum.map += r.times.map;
     sum.global += r.times.global;
     sum.perception += r.times.perception;
@@ -187,16 +188,16 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   std::printf("\nNavigator::step, 541 beams with %.0f cm range noise, moving discs tracked (ms):\n", 100 * fgdwa::kNoise);
-  std::printf("%-16s %7s %7s %7s %7s | mean per stage: %6s %6s %6s %6s | %s\n", "robot map", "cycles", "median",
-              "p95", "max", "map", "global", "percep", "plan", "replans");
+  std::printf("%-16s %7s %7s %7s %7s | mean per stage: %6s %6s %6s %6s %6s | %s\n", "robot map", "cycles",
+              "median", "p95", "max", "track", "map", "global", "percep", "plan", "replans");
   for (const auto& [name, times] : fgdwa::samples()) {
     if (times.empty()) continue;
     const fgdwa::Stages& s = fgdwa::stages()[name];
     const double n = static_cast<double>(times.size());
-    std::printf("%-16s %7zu %7.3f %7.3f %7.3f | %22.3f %6.3f %6.3f %6.3f | %d\n", name.c_str(), times.size(),
+    std::printf("%-16s %7zu %7.3f %7.3f %7.3f | %22.3f %6.3f %6.3f %6.3f %6.3f | %d\n", name.c_str(), times.size(),
                 1e3 * fgdwa::percentile(times, 0.5), 1e3 * fgdwa::percentile(times, 0.95),
-                1e3 * *std::max_element(times.begin(), times.end()), 1e3 * s.map / n, 1e3 * s.global / n,
-                1e3 * s.perception / n, 1e3 * s.plan / n, s.replans);
+                1e3 * *std::max_element(times.begin(), times.end()), 1e3 * s.tracking / n, 1e3 * s.map / n,
+                1e3 * s.global / n, 1e3 * s.perception / n, 1e3 * s.plan / n, s.replans);
   }
   return 0;
 }
