@@ -79,12 +79,27 @@ def test_discs():
         fgdwa.Disc((NAN, 0), 1.0)
     with raises("velocity"):
         fgdwa.Disc((0, 0), 1.0, velocity=(1.0,))
+    with raises("growth"):
+        fgdwa.Disc((0, 0), 1.0, growth=-0.1)
+
+
+@pytest.mark.parametrize("make,match", [
+    (lambda: fgdwa.NavigatorParams(unknown_cost=-1.0), "unknown_cost"),
+    (lambda: fgdwa.NavigatorParams(mover_margin=NAN), "mover_margin"),
+    (lambda: fgdwa.NavigatorParams(occupancy=fgdwa.OccupancyParams(hit_share=0.0)), "hit_share"),
+    (lambda: fgdwa.TrackerParams(max_uncertainty=-0.1), "max_uncertainty"),
+    (lambda: fgdwa.OccupancyParams(clear_range=NAN), "clear_range"),
+])
+def test_noisy_world_settings(make, match):
+    with raises(match):
+        make()
 
 
 @pytest.mark.parametrize("kwargs,match", [({"dt": 0.0}, "dt"), ({"dt": NAN}, "dt"), ({"sim_time": -1.0}, "sim_time"),
                                           ({"sim_time": 0.01}, "sim_time"), ({"n_v": 0}, "n_v"),
                                           ({"n_omega": -3}, "n_omega"), ({"normalization": "l2"}, "normalization"),
                                           ({"braking": "soft"}, "braking"), ({"goal_tolerance": -1.0}, "goal_tolerance"),
+                                          ({"moving_horizon": -1.0}, "moving_horizon"),
                                           ({"critics": []}, "at least one"),
                                           ({"critics": [("heading", 1.0), ("heading", 2.0)]}, "twice"),
                                           ({"critics": [("nonsense", 1.0)]}, "unknown critic"),
