@@ -301,25 +301,39 @@ double Navigator::open_heading(const Pose2& pose) const {
   return best_heading;
 }
 
+double Navigator::hit_tolerance() const { return 0.5 * map().resolution() + 3.0 * lidar_.noise_std; }
+
+void Navigator::locate_hits(const Scan& scan) {
+  const std::size_t n = scan.ranges.size();
+  const double tolerance = hit_tolerance();
+  // Only the tracker and the learnt map ask whether a hit is on the known map.
+  const bool prior = known_field_ && known_field_->has_obstacles() && (scan_map_ || params_.track_moving);
+  hits_.assign(n, Vec2::Zero());
+  on_prior_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = scan.ranges[i];
+    if (!std::isfinite(r)) continue;
+    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+    hits_[i] = Vec2(scan.pose.x + r * std::cos(a), scan.pose.y + r * std::sin(a));
+    on_prior_[i] = prior && known_field_->distance(hits_[i]) <= tolerance;
+  }
+}
+
 void Navigator::track(const Scan& scan, double time) {
   const std::size_t n = scan.ranges.size();
   // A hit on an obstacle the map holds is not segmented: the known map's
   // obstacles are static, and so are a scan map's cells hit scan after scan
   // (log-odds near the top), unless a moving track passes over them.
   const std::shared_ptr<const DistanceField>& field = controller_.map();
-  const double tolerance = 0.5 * map().resolution() + 3.0 * lidar_.noise_std;
+  const double tolerance = hit_tolerance();
   const double settled = params_.occupancy.clamp_max - params_.occupancy.hit;
   segment_mask_.assign(n, 1);
   keep_hit_.assign(n, 1);
-  std::vector<Vec2> hits(n, Vec2::Zero());
+  const std::vector<Vec2>& hits = hits_;
   for (std::size_t i = 0; i < n; ++i) {
-    const double r = scan.ranges[i];
-    if (!std::isfinite(r)) continue;
-    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-    hits[i] = Vec2(scan.pose.x + r * std::cos(a), scan.pose.y + r * std::sin(a));
-    if (!field || !field->has_obstacles() || field->distance(hits[i]) > tolerance) continue;
-    const bool on_prior = known_field_ && known_field_->has_obstacles() && known_field_->distance(hits[i]) <= tolerance;
-    if (scan_map_ && !on_prior) {
+    if (!std::isfinite(scan.ranges[i])) continue;
+    if (!on_prior_[i] && (!field || !field->has_obstacles() || field->distance(hits[i]) > tolerance)) continue;
+    if (scan_map_ && !on_prior_[i]) {
       int row = 0, col = 0;
       if (!map().cell_of(hits[i], row, col) || scan_map_->log_odds(row, col) < settled ||
           tracker_.explains(hits[i], tolerance))
@@ -469,6 +483,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   discs_now_ = discs;
   record_.tracked.clear();
   const bool tracking = params_.track_moving && scan;
+  if (scan) locate_hits(*scan);
   if (tracking) {
     track(*scan, time);
     discs_now_.insert(discs_now_.end(), record_.tracked.begin(), record_.tracked.end());
@@ -478,18 +493,10 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   tic = Clock::now();
   if (scan_map_ && scan) {
     if (!tracking) keep_hit_.assign(scan->ranges.size(), 1);
-    if (known_map_ && known_field_->has_obstacles()) {
-      // Hits on the known map's obstacles teach nothing new; marked, those
-      // that noise carries past a thin obstacle would thicken it.
-      const double tolerance = 0.5 * known_map_->resolution() + 3.0 * lidar_.noise_std;
-      for (std::size_t i = 0; i < scan->ranges.size(); ++i) {
-        const double r = scan->ranges[i];
-        if (!std::isfinite(r) || !keep_hit_[i]) continue;
-        const double a = scan->pose.theta + scan->angle_min + static_cast<double>(i) * scan->angle_increment;
-        if (known_field_->distance(Vec2(scan->pose.x + r * std::cos(a), scan->pose.y + r * std::sin(a))) <= tolerance)
-          keep_hit_[i] = 0;
-      }
-    }
+    // Hits on the known map's obstacles teach nothing new; marked, those that
+    // noise carries past a thin obstacle would thicken it.
+    for (std::size_t i = 0; i < on_prior_.size(); ++i)
+      if (on_prior_[i]) keep_hit_[i] = 0;
     record_.new_cells = scan_map_->integrate(*scan, &keep_hit_);
     if (record_.new_cells) {
       if (known_map_) {
