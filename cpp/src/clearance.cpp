@@ -32,14 +32,18 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
   split_moving();
 }
 
+// The static part shares the fields: new fields are handed to it, and only
+// new discs (or a static part a copy of this world shares) make a new one.
 void FieldClearance::set_field(std::shared_ptr<const DistanceField> field) {
   field_ = std::move(field);
-  split_moving();
+  if (fixed_ && fixed_.use_count() == 1) fixed_->set_field(field_);
+  else split_moving();
 }
 
 void FieldClearance::set_sensed(std::shared_ptr<const DistanceField> sensed) {
   sensed_ = std::move(sensed);
-  split_moving();
+  if (fixed_ && fixed_.use_count() == 1) fixed_->set_sensed(sensed_);
+  else split_moving();
 }
 
 void FieldClearance::split_moving() {
@@ -48,9 +52,8 @@ void FieldClearance::split_moving() {
   std::vector<Disc> still;
   for (const Disc& d : discs_)
     if (d.growth <= 0.0 && d.velocity.isZero()) still.push_back(d);
-  auto fixed = std::make_shared<FieldClearance>(field_, std::move(still));
-  fixed->set_sensed(sensed_);
-  fixed_ = std::move(fixed);
+  fixed_ = std::make_shared<FieldClearance>(field_, std::move(still));
+  fixed_->set_sensed(sensed_);
 }
 
 namespace {

@@ -82,7 +82,7 @@ class FieldClearance : public ClearanceSource {
   std::shared_ptr<const DistanceField> field_;
   double obstacle_speed_ = 0.0;
   // The fields and the discs that do not move; null when no disc moves.
-  std::shared_ptr<const FieldClearance> fixed_;
+  std::shared_ptr<FieldClearance> fixed_;
   void split_moving();
   std::shared_ptr<const DistanceField> sensed_;
   std::vector<Disc> discs_;
