@@ -42,6 +42,14 @@ def add_executor_arguments(parser) -> None:
     parser.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
 
 
+def add_output_arguments(parser, default_out: str, files: str) -> None:
+    """--out (a directory for ``files``), --no-figures and --no-progress."""
+    parser.add_argument("--out", default=default_out, metavar="DIR",
+                        help=f"directory for {files} (default {default_out})")
+    parser.add_argument("--no-figures", action="store_true", help="skip failures.png")
+    parser.add_argument("--no-progress", action="store_true", help="no progress bar")
+
+
 def register_barn_commands(subparsers) -> None:
     """Add ``barn`` (run the benchmark) and ``barn import`` to an argparse
     sub-parser set (``parser.add_subparsers()``); the handlers are stored as
@@ -64,10 +72,7 @@ def register_barn_commands(subparsers) -> None:
     barn.add_argument("--seed", type=int, default=0, help="base seed: trial i uses seed + i (lidar noise)")
     add_sensing_arguments(barn, BarnSetup())
     add_executor_arguments(barn)
-    barn.add_argument("--out", default="out/barn", metavar="DIR",
-                      help="directory for runs.csv, summary.json, failures.png (default out/barn)")
-    barn.add_argument("--no-figures", action="store_true", help="skip failures.png")
-    barn.add_argument("--no-progress", action="store_true", help="no progress bar")
+    add_output_arguments(barn, "out/barn", "runs.csv, summary.json, failures.png")
     barn.set_defaults(func=lambda args, *_: barn_command(args))
     barn_sub = barn.add_subparsers(dest="barn_command", required=False, metavar="{import}")
     imp = barn_sub.add_parser(

@@ -216,7 +216,7 @@ def generate_command(args) -> int:
 def register_dynamic_commands(subparsers) -> None:
     """Add ``dynamic`` (run the benchmark) and ``dynamic generate`` to an argparse
     sub-parser set; the handlers are stored as ``func(args, argv) -> int``."""
-    from fgdwa.barn_cli import add_executor_arguments, add_sensing_arguments
+    from fgdwa.barn_cli import add_executor_arguments, add_output_arguments, add_sensing_arguments
     from fgdwa.dynamic_fields import LEVELS
 
     dynamic = subparsers.add_parser(
@@ -234,10 +234,7 @@ def register_dynamic_commands(subparsers) -> None:
                               f"{', '.join(PLANNER_VARIANTS)})")
     add_sensing_arguments(dynamic, DynamicSetup())
     add_executor_arguments(dynamic)
-    dynamic.add_argument("--out", default="out/dynamic", metavar="DIR",
-                         help="directory for runs.csv, summary.json, failures.png and fields/ (default out/dynamic)")
-    dynamic.add_argument("--no-figures", action="store_true", help="skip failures.png")
-    dynamic.add_argument("--no-progress", action="store_true", help="no progress bar")
+    add_output_arguments(dynamic, "out/dynamic", "runs.csv, summary.json, failures.png and fields/")
     dynamic.set_defaults(func=lambda args, *_: dynamic_command(args))
     sub = dynamic.add_subparsers(dest="dynamic_command", required=False, metavar="{generate}")
     gen = sub.add_parser("generate", help="write one field (level, seed) as a scenario file for `fgdwa run`")
