@@ -71,8 +71,6 @@ double seconds_since(Clock::time_point start) {
 
 int cycles_of(double seconds, double dt) { return static_cast<int>(std::lround(seconds / dt)); }
 
-// rad at each end of a lidar's field of view where objects are not tracked.
-constexpr double kFieldOfViewEdge = 5.0 * M_PI / 180.0;
 
 
 // Moves `current` toward `target` by at most `step`.
@@ -321,64 +319,25 @@ void Navigator::locate_hits(const Scan& scan) {
 
 void Navigator::track(const Scan& scan, double time) {
   const std::size_t n = scan.ranges.size();
-  // A hit on an obstacle the map holds is not segmented: the known map's
-  // obstacles are static, and so are a scan map's cells hit scan after scan
-  // (log-odds near the top), unless a moving track passes over them.
-  const std::shared_ptr<const DistanceField>& field = controller_.map();
+  // A hit on the known map's obstacles is not segmented: they are static.
+  // Every other hit is, the scan map's settled cells included: a slow mover
+  // that is not yet labelled marks its cells scan after scan, and masking
+  // them would cut it up and hide it from the tracker. An object cut by the
+  // field of view's edge is tracked too; its cluster is occluded, so its
+  // centre weighs less in the moving test.
   const double tolerance = hit_tolerance();
-  const double settled = params_.occupancy.clamp_max - params_.occupancy.hit;
   segment_mask_.assign(n, 1);
   keep_hit_.assign(n, 1);
   const std::vector<Vec2>& hits = hits_;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(scan.ranges[i])) continue;
-    if (!on_prior_[i] && (!field || !field->has_obstacles() || field->distance(hits[i]) > tolerance)) continue;
-    if (scan_map_ && !on_prior_[i]) {
-      int row = 0, col = 0;
-      if (!map().cell_of(hits[i], row, col) || scan_map_->log_odds(row, col) < settled ||
-          tracker_.explains(hits[i], tolerance))
-        continue;
-    }
-    segment_mask_[i] = 0;
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (on_prior_[i]) segment_mask_[i] = 0;
   std::vector<Cluster> clusters = segment_scan(scan, params_.segment, &segment_mask_);
-  // An object cut by the edge of the field of view shows a part that slides
-  // with the robot: it is tracked once wholly in view.
-  const bool full_circle = scan.angle_increment * static_cast<double>(n) >= 2.0 * M_PI - 1e-9;
-  if (!full_circle && scan.angle_increment > 0.0) {
-    const int edge = static_cast<int>(std::ceil(kFieldOfViewEdge / scan.angle_increment));
-    clusters.erase(std::remove_if(clusters.begin(), clusters.end(),
-                                  [&](const Cluster& cl) {
-                                    return cl.first_beam < edge || cl.last_beam > static_cast<int>(n) - 1 - edge;
-                                  }),
-                   clusters.end());
-  }
   tracker_.update(clusters, time, &scan);
   record_.tracked = tracker_.moving_discs();
   // Nothing stands inside the robot: a track there is made of its own surroundings.
   record_.tracked.erase(std::remove_if(record_.tracked.begin(), record_.tracked.end(),
                                        [&](const Disc& d) { return footprint_.signed_distance(scan.pose, d.center) <= 0.0; }),
                         record_.tracked.end());
-  if (scan_map_) {
-    // A mover stands where the robot saw free space before it came, and
-    // covers no cell hit scan after scan (a mover's cells take a few hits at
-    // most while it is being labelled); an obstacle's newly seen face has
-    // behind it cells never seen, or hit.
-    const OccupancyGrid& grid = map();
-    const auto seen_free = [&](const Disc& d) {
-      int row = 0, col = 0;
-      if (!grid.cell_of(d.center, row, col) || scan_map_->state(row, col) != CellState::Free) return false;
-      const double reach = 0.7 * d.radius;
-      const int cells = static_cast<int>(std::ceil(reach / grid.resolution()));
-      for (int r = std::max(0, row - cells); r <= std::min(grid.rows() - 1, row + cells); ++r)
-        for (int c = std::max(0, col - cells); c <= std::min(grid.cols() - 1, col + cells); ++c)
-          if (scan_map_->log_odds(r, c) >= settled && (grid.cell_center(r, c) - d.center).norm() <= reach) return false;
-      return true;
-    };
-    record_.tracked.erase(std::remove_if(record_.tracked.begin(), record_.tracked.end(),
-                                         [&](const Disc& d) { return !seen_free(d); }),
-                          record_.tracked.end());
-  }
   if (record_.tracked.empty()) return;
   for (Disc& d : record_.tracked) d.radius += params_.mover_margin;
   for (std::size_t i = 0; i < n; ++i) {

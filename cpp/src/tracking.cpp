@@ -170,26 +170,31 @@ void Tracker::correct(Track& t, const Cluster& cluster, double time) {
 // flicker.
 void Tracker::relabel(Track& t, const Memory& memory) const {
   const auto& centres = memory.centres;
-  const std::size_t n = centres.size();
   t.window_velocity = Vec2::Zero();
   t.window_speed_std = std::numeric_limits<double>::infinity();
-  if (n >= 3) {
-    double t_mean = 0.0;
-    Vec2 p_mean = Vec2::Zero();
-    for (const auto& [time, p] : centres) t_mean += time, p_mean += p;
-    t_mean /= static_cast<double>(n);
-    p_mean /= static_cast<double>(n);
+  // Weighted least squares; the weights are relative to an unoccluded centre,
+  // whose std the scatter estimates.
+  double w_sum = 0.0, t_mean = 0.0;
+  Vec2 p_mean = Vec2::Zero();
+  for (const Centre& c : centres) w_sum += c.weight, t_mean += c.weight * c.time, p_mean += c.weight * c.position;
+  if (centres.size() >= 3) {
+    t_mean /= w_sum;
+    p_mean /= w_sum;
     double stt = 0.0;
     Vec2 stp = Vec2::Zero();
-    for (const auto& [time, p] : centres) {
-      stt += (time - t_mean) * (time - t_mean);
-      stp += (time - t_mean) * (p - p_mean);
+    for (const Centre& c : centres) {
+      stt += c.weight * (c.time - t_mean) * (c.time - t_mean);
+      stp += c.weight * (c.time - t_mean) * (c.position - p_mean);
     }
     if (stt > 0.0) {
       t.window_velocity = stp / stt;
       double scatter = 0.0;
-      for (const auto& [time, p] : centres) scatter += (p - p_mean - (time - t_mean) * t.window_velocity).squaredNorm();
-      const double point_std = std::max(std::sqrt(scatter / (2.0 * static_cast<double>(n - 2))), params_.measurement_std);
+      for (const Centre& c : centres)
+        scatter += c.weight * (c.position - p_mean - (c.time - t_mean) * t.window_velocity).squaredNorm();
+      // Two coordinates per centre, two parameters fitted per coordinate.
+      const double dof = 2.0 * (static_cast<double>(centres.size()) - 2.0);
+      const double point_std =
+          std::max(std::sqrt(scatter * static_cast<double>(centres.size()) / (w_sum * dof)), params_.measurement_std);
       t.window_speed_std = point_std / std::sqrt(stt);
     }
   }
@@ -248,18 +253,19 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time, const Sc
   }
   predict(std::isnan(time_) ? 0.0 : time - time_);
   time_ = time;
-  // Occluded centres stay out of the moving test: a partly hidden object's
+  // Occluded centres weigh less in the moving test: a partly hidden object's
   // centre shifts as it is uncovered.
   if (scan) has_scans_ = true;
   const double oldest = time - params_.moving_window - 1e-9;
   const auto remember = [&](Memory& memory, Track& track, const Cluster& cluster) {
     memory.seen_position = track.position;
-    if (!cluster.occluded) memory.centres.emplace_back(time, cluster.center);
+    memory.centres.push_back(
+        Centre{time, cluster.center, cluster.occluded ? 1.0 / (kOccludedStdFactor * kOccludedStdFactor) : 1.0});
     if (scan) {
       if (displaces_free_space(memory, cluster, *scan, time)) memory.displaced.push_back(time);
       memory.shapes.emplace_back(time, cluster.points);
     }
-    while (!memory.centres.empty() && memory.centres.front().first < oldest) memory.centres.pop_front();
+    while (!memory.centres.empty() && memory.centres.front().time < oldest) memory.centres.pop_front();
     while (!memory.shapes.empty() && memory.shapes.front().first < oldest) memory.shapes.pop_front();
     while (!memory.displaced.empty() && memory.displaced.front() < oldest) memory.displaced.pop_front();
     relabel(track, memory);

@@ -60,6 +60,8 @@ class CycleTrace:
     totals: np.ndarray  # (k,) their total scores
     chosen: np.ndarray  # (n_steps, 3) the chosen rollout; (0, 3) when the planner chose none
     hits: np.ndarray  # (n, 2) the lidar's hits this cycle; (0, 2) without a scan
+    # (m, 5) the moving obstacles the planner predicted: x, y, radius (m), vx, vy (m/s)
+    tracked: np.ndarray = field(default_factory=lambda: np.zeros((0, 5)))
 
 
 @dataclass
@@ -477,7 +479,9 @@ def _trace(record, scan, n_steps: int) -> CycleTrace:
     rollouts = np.array([b.poses for b in best], dtype=float).reshape(len(best), n_steps, 3)
     return CycleTrace(mode=record.mode.name, rollouts=rollouts, totals=np.array([b.total for b in best], dtype=float),
                       chosen=np.asarray(record.chosen_rollout, dtype=float).reshape(-1, 3),
-                      hits=scan.hit_points if scan is not None else np.zeros((0, 2)))
+                      hits=scan.hit_points if scan is not None else np.zeros((0, 2)),
+                      tracked=np.array([[d.center[0], d.center[1], d.radius, d.velocity[0], d.velocity[1]]
+                                        for d in record.tracked], dtype=float).reshape(-1, 5))
 
 
 def _navigator_map(world: World, start, goal) -> OccupancyGrid:

@@ -258,6 +258,32 @@ TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
   EXPECT_LT(worst_filter, 0.15);
 }
 
+// A mover seen only in part (beside something nearer, or at the edge of the
+// field of view) is still labelled: its centres weigh less, not nothing.
+// A static one seen the same way, its centre wobbling twice as much, is not.
+TEST(Tracker, AnAlwaysOccludedMoverIsLabelledAndAnOccludedPillarIsNot) {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  const Vec2 velocity(0.6, 0.0);
+  Tracker mover_tracker, pillar_tracker;
+  double labelled_at = -1.0;
+  bool pillar_ever_moving = false;
+  for (int k = 0; k <= 30; ++k) {
+    const double t = k * kPeriod;
+    Cluster mover = cluster_at(Vec2(1.0, 2.0) + velocity * t + 0.03 * Vec2(noise(rng), noise(rng)));
+    Cluster pillar = cluster_at(Vec2(4.0, -2.0) + 0.06 * Vec2(noise(rng), noise(rng)));
+    mover.occluded = pillar.occluded = true;
+    mover_tracker.update({mover}, t);
+    pillar_tracker.update({pillar}, t);
+    if (labelled_at < 0.0 && mover_tracker.tracks()[0].moving) labelled_at = t;
+    pillar_ever_moving = pillar_ever_moving || pillar_tracker.tracks()[0].moving;
+  }
+  EXPECT_GE(labelled_at, 0.0) << "never labelled moving";
+  EXPECT_LE(labelled_at, 1.5);
+  EXPECT_FALSE(pillar_ever_moving);
+  EXPECT_LT((mover_tracker.tracks()[0].window_velocity - velocity).norm(), 0.15);
+}
+
 TEST(Tracker, AStaticDiscIsNeverMovingAndSettlesAtRest) {
   double worst_window = 0.0, worst_filter = 0.0, sum_filter = 0.0;
   int samples = 0;

@@ -73,9 +73,9 @@ struct TrackerParams {
   double measurement_std = 0.03;    // m, std of an unoccluded cluster centre (and the least scatter the moving test assumes)
   int confirm_hits = 3;             // associations before Tentative -> Confirmed
   double lost_time = 0.5;           // s without association before Lost; removed after another lost_time
-  double moving_speed = 0.2;        // m/s: a confirmed track whose window speed, less moving_sigmas std, exceeds it is moving
+  double moving_speed = 0.1;        // m/s: a confirmed track whose window speed, less moving_sigmas std, exceeds it is moving
   double moving_sigmas = 2.0;       // std devs taken off the window speed before comparing it with moving_speed
-  double moving_window = 1.0;       // s: the window speed is the slope of a line fitted to the unoccluded centres this far back
+  double moving_window = 1.0;       // s: the window speed is the slope of a line fitted to the centres this far back (occluded ones weigh less)
   double free_margin = 0.1;         // m: a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
   double max_speed = 3.0;           // m/s; an association implying more is rejected
   double uncertainty_sigmas = 2.0;  // position std devs added to a moving disc's radius
@@ -91,11 +91,11 @@ struct Track {
   Eigen::Matrix4d covariance = Eigen::Matrix4d::Identity();  // of (x, y, vx, vy)
   double radius = 0.0;     // m, smoothed over the clusters taken
   bool moving = false;     // confirmed, fast enough with confidence, and displacing free space (with hysteresis)
-  // m/s, slope of a line through the unoccluded centres of the last
+  // m/s, slope of a line through the centres (occluded ones weighing less) of the last
   // moving_window (as of the last association): steadier than `velocity`,
   // half a window late through turns. The moving label and moving_discs use it.
   Vec2 window_velocity = Vec2::Zero();
-  double window_speed_std = 0.0;  // m/s, its std (infinite until three such centres)
+  double window_speed_std = 0.0;  // m/s, its std (infinite until three centres)
   int hits = 0;            // associations, the first cluster included
   double last_seen = 0.0;  // s, time of the last association
   double age = 0.0;        // s since the first cluster
@@ -143,9 +143,16 @@ class Tracker {
   void predict(double dt);
   void correct(Track& track, const Cluster& cluster, double time);
   // What a track remembers of its clusters.
+  // A cluster centre as the window speed weighs it: an occluded one counts
+  // 1 / kOccludedStdFactor^2 of an unoccluded one.
+  struct Centre {
+    double time;    // s
+    Vec2 position;  // m
+    double weight;
+  };
   struct Memory {
     Vec2 seen_position;                                        // m, after its last association
-    std::deque<std::pair<double, Vec2>> centres;               // (s, m) unoccluded centres within moving_window
+    std::deque<Centre> centres;                                // the clusters' centres within moving_window
     std::deque<std::pair<double, std::vector<Vec2>>> shapes;   // (s, m) hits of the clusters taken, within moving_window
     std::deque<double> displaced;                              // s, updates whose hits displaced free space
   };
