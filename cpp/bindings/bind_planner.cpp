@@ -73,7 +73,8 @@ void init_planner(py::module_& m) {
       .def(py::init([](double dt, double sim_time, int n_v, int n_omega, const std::string& normalization,
                        const std::string& braking, double goal_tolerance, py::object critics,
                        const std::string& heading_target, double key_node_angle_deg, double key_node_radius,
-                       double safety_margin, bool key_node_sight, double moving_horizon) {
+                       double safety_margin, bool key_node_sight, double moving_horizon,
+                       double mover_caution_radius, double mover_speed_weight) {
              PlannerParams p;
              p.dt = dt;
              p.sim_time = sim_time;
@@ -88,6 +89,8 @@ void init_planner(py::module_& m) {
              p.key_nodes.require_sight = key_node_sight;
              p.safety_margin = safety_margin;
              p.moving_horizon = moving_horizon;
+             p.mover_caution_radius = mover_caution_radius;
+             p.mover_speed_weight = mover_speed_weight;
              if (!critics.is_none()) {
                p.critics.clear();
                for (auto item : critics) p.critics.push_back(critic_from_python(item));
@@ -99,6 +102,7 @@ void init_planner(py::module_& m) {
            py::arg("normalization") = "sum", py::arg("braking") = "discrete", py::arg("goal_tolerance") = 0.3, py::arg("critics") = py::none(),
            py::arg("heading_target") = "goal", py::arg("key_node_angle_deg") = 10.0, py::arg("key_node_radius") = 1.0,
            py::arg("safety_margin") = 0.02, py::arg("key_node_sight") = false, py::arg("moving_horizon") = 1.0,
+           py::arg("mover_caution_radius") = 2.0, py::arg("mover_speed_weight") = 0.5,
            "dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample "
            "counts; normalization: 'sum', 'minmax' or 'none' (raw terms, as Nav2's DWB adds them); braking: 'discrete' (stop within the free distance "
            "with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts "
@@ -109,7 +113,8 @@ void init_planner(py::module_& m) {
            "(never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as "
            "reached only once the next one is in sight (default False: SPEC 5 as written); moving_horizon (s): a rollout "
            "predicted to meet a moving obstacle this soon is rejected, standing still included (0: moving obstacles "
-           "count only as the braking rule counts them).")
+           "count only as the braking rule counts them); while a moving obstacle is within mover_caution_radius (m) the "
+           "velocity critic's weight is multiplied by mover_speed_weight (in [0, 1]; 1: no change).")
       .def_readonly("dt", &PlannerParams::dt)
       .def_readonly("sim_time", &PlannerParams::sim_time)
       .def_property_readonly("n_v", [](const PlannerParams& p) { return p.window.n_v; })
@@ -122,6 +127,8 @@ void init_planner(py::module_& m) {
       .def_property_readonly("key_node_radius", [](const PlannerParams& p) { return p.key_nodes.reach_radius; })
       .def_readonly("safety_margin", &PlannerParams::safety_margin)
       .def_readonly("moving_horizon", &PlannerParams::moving_horizon)
+      .def_readonly("mover_caution_radius", &PlannerParams::mover_caution_radius)
+      .def_readonly("mover_speed_weight", &PlannerParams::mover_speed_weight)
       .def_property_readonly("key_node_sight", [](const PlannerParams& p) { return p.key_nodes.require_sight; })
       .def_readonly("critics", &PlannerParams::critics)
       .def_property_readonly("n_steps", &PlannerParams::n_steps)

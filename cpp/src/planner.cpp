@@ -73,6 +73,9 @@ void PlannerParams::validate() const {
   detail::require_non_negative("goal_tolerance", goal_tolerance);
   detail::require_non_negative("safety_margin", safety_margin);
   detail::require_non_negative("moving_horizon", moving_horizon);
+  detail::require_non_negative("mover_caution_radius", mover_caution_radius);
+  if (!(mover_speed_weight >= 0.0 && mover_speed_weight <= 1.0))
+    throw Error(detail::describe("mover_speed_weight", mover_speed_weight, "must be in [0, 1]"));
   key_nodes.validate();
   if (critics.empty()) throw Error("critics: at least one critic is needed");
   for (std::size_t i = 0; i < critics.size(); ++i)
@@ -90,6 +93,7 @@ LocalPlanner::LocalPlanner(const RobotLimits& limits, const Footprint& footprint
     result_.critic_names.push_back(config.name);
     result_.weights.push_back(config.weight);
     result_.senses.push_back(critics_.back()->sense());
+    if (config.name == "velocity") speed_critic_ = critics_.size() - 1;
   }
 }
 
@@ -233,6 +237,7 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   context.v_max = limits_.v_max;
   context.world = &world;
   context.footprint = &footprint_;
+  mover_near_ = world.moving_clearance(footprint_, state.pose, 0.0) <= params_.mover_caution_radius;
   score_and_choose(context);
 
   const int evasion = result_.best_index < 0 ? latest_moving_contact() : -1;
@@ -474,7 +479,9 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
     if (result_.reasons[i] != RejectReason::None) continue;
     double total = 0.0;
     for (std::size_t j = 0; j < m; ++j) {
-      const double term = result_.weights[j] * result_.normalized(i, j);
+      const double weight = mover_near_ && j == speed_critic_ ? params_.mover_speed_weight * result_.weights[j]
+                                                              : result_.weights[j];
+      const double term = weight * result_.normalized(i, j);
       total += result_.senses[j] == CriticSense::Cost ? -term : term;
     }
     result_.total(static_cast<Eigen::Index>(i)) = total;

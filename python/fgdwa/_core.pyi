@@ -783,9 +783,9 @@ class PlannerParams:
     """
     Parameters of the local planner (SI units).
     """
-    def __init__(self, dt: typing.SupportsFloat | typing.SupportsIndex = 0.15, sim_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21, normalization: str = 'sum', braking: str = 'discrete', goal_tolerance: typing.SupportsFloat | typing.SupportsIndex = 0.3, critics: typing.Any = None, heading_target: str = 'goal', key_node_angle_deg: typing.SupportsFloat | typing.SupportsIndex = 10.0, key_node_radius: typing.SupportsFloat | typing.SupportsIndex = 1.0, safety_margin: typing.SupportsFloat | typing.SupportsIndex = 0.02, key_node_sight: bool = False, moving_horizon: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
+    def __init__(self, dt: typing.SupportsFloat | typing.SupportsIndex = 0.15, sim_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21, normalization: str = 'sum', braking: str = 'discrete', goal_tolerance: typing.SupportsFloat | typing.SupportsIndex = 0.3, critics: typing.Any = None, heading_target: str = 'goal', key_node_angle_deg: typing.SupportsFloat | typing.SupportsIndex = 10.0, key_node_radius: typing.SupportsFloat | typing.SupportsIndex = 1.0, safety_margin: typing.SupportsFloat | typing.SupportsIndex = 0.02, key_node_sight: bool = False, moving_horizon: typing.SupportsFloat | typing.SupportsIndex = 1.0, mover_caution_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, mover_speed_weight: typing.SupportsFloat | typing.SupportsIndex = 0.5) -> None:
         """
-        dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample counts; normalization: 'sum', 'minmax' or 'none' (raw terms, as Nav2's DWB adds them); braking: 'discrete' (stop within the free distance with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0); heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this near is reached; safety_margin (m): a rollout closer than this to an obstacle counts as in contact (never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as reached only once the next one is in sight (default False: SPEC 5 as written); moving_horizon (s): a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: moving obstacles count only as the braking rule counts them).
+        dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample counts; normalization: 'sum', 'minmax' or 'none' (raw terms, as Nav2's DWB adds them); braking: 'discrete' (stop within the free distance with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0); heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this near is reached; safety_margin (m): a rollout closer than this to an obstacle counts as in contact (never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as reached only once the next one is in sight (default False: SPEC 5 as written); moving_horizon (s): a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: moving obstacles count only as the braking rule counts them); while a moving obstacle is within mover_caution_radius (m) the velocity critic's weight is multiplied by mover_speed_weight (in [0, 1]; 1: no change).
         """
     def __repr__(self) -> str:
         ...
@@ -812,6 +812,12 @@ class PlannerParams:
         ...
     @property
     def key_node_sight(self) -> bool:
+        ...
+    @property
+    def mover_caution_radius(self) -> float:
+        ...
+    @property
+    def mover_speed_weight(self) -> float:
         ...
     @property
     def moving_horizon(self) -> float:

@@ -40,6 +40,8 @@ TEST(PlannerParams, RejectsBadValuesByName) {
   rejects([](PlannerParams& p) { p.window.n_omega = 0; }, "n_omega");
   rejects([](PlannerParams& p) { p.goal_tolerance = -0.1; }, "goal_tolerance");
   rejects([](PlannerParams& p) { p.critics.clear(); }, "critics");
+  rejects([](PlannerParams& p) { p.mover_caution_radius = -1.0; }, "mover_caution_radius");
+  for (double w : {-0.1, 1.5, std::nan("")}) rejects([w](PlannerParams& p) { p.mover_speed_weight = w; }, "mover_speed_weight");
   rejects([](PlannerParams& p) { p.critics.push_back({"heading", 1.0, {}}); }, "heading");
 }
 
@@ -596,6 +598,34 @@ class Unsplit : public ClearanceSource {
  private:
   const FieldClearance& inner_;
 };
+
+// Beside a mover (within mover_caution_radius) the velocity critic weighs
+// mover_speed_weight of its weight; farther away, or beside a still obstacle,
+// all of it.
+TEST(LocalPlanner, AMoverNearbyMakesSpeedWorthLess) {
+  PlannerParams params;
+  params.normalization = Normalization::None;
+  params.mover_caution_radius = 2.0;
+  params.mover_speed_weight = 0.5;
+  const Footprint footprint = Footprint::circle(0.25);
+  LocalPlanner planner(RobotLimits{}, footprint, params);
+  const RobotState state{Pose2{0.0, 0.0, 0.0}, Twist{0.6, 0.0}};
+  const auto velocity_weight_used = [&](const std::vector<Disc>& discs) {
+    const FieldClearance world(nullptr, discs);
+    const PlanResult& r = planner.plan(state, Vec2(5.0, 0.0), world);
+    // total = 0.5 heading + 0.15 clearance + w velocity: solve for w on two samples.
+    for (Eigen::Index i = 0; i < r.raw.rows(); ++i) {
+      if (r.reasons[static_cast<std::size_t>(i)] != RejectReason::None || r.raw(i, 2) <= 0.0) continue;
+      return (r.total(i) - 0.5 * r.raw(i, 0) - 0.15 * r.raw(i, 1)) / r.raw(i, 2);
+    }
+    return std::nan("");
+  };
+  // A disc 1.5 m to the left moving away at 0.4 m/s; the same disc 3 m away; the same disc standing.
+  EXPECT_NEAR(velocity_weight_used({Disc{Vec2(0.0, 1.5 + 0.6), 0.3, Vec2(0.0, 0.4)}}), 0.5, 1e-9);
+  EXPECT_NEAR(velocity_weight_used({Disc{Vec2(0.0, 3.0 + 0.6), 0.3, Vec2(0.0, 0.4)}}), 1.0, 1e-9);
+  EXPECT_NEAR(velocity_weight_used({Disc{Vec2(0.0, 1.5 + 0.6), 0.3, Vec2::Zero()}}), 1.0, 1e-9);
+  EXPECT_NEAR(velocity_weight_used({}), 1.0, 1e-9);
+}
 
 TEST(LocalPlanner, SpaceTimeContactMatchesBruteForceOverTime) {
   std::mt19937 rng(7);

@@ -6,6 +6,7 @@
 // buffers, so a cycle allocates nothing once the first one has run.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -79,6 +80,12 @@ struct PlannerParams {
   // standing still included: a robot that brakes is still hit by what moves
   // into it. 0: moving obstacles count only as the braking rule counts them.
   double moving_horizon = 1.0;
+  // Speed is worth less beside a mover: while a moving obstacle is within
+  // mover_caution_radius (m, clearance from the footprint) the velocity
+  // critic's weight is multiplied by mover_speed_weight (1: no change). A
+  // mover may turn or reverse; a slower robot keeps the time to answer it.
+  double mover_caution_radius = 2.0;
+  double mover_speed_weight = 0.5;
   HeadingTarget heading_target = HeadingTarget::Goal;
   KeyNodeParams key_nodes;      // key-node angle and reach radius, for HeadingTarget::KeyNodes
   std::vector<CriticConfig> critics = {
@@ -170,6 +177,10 @@ class LocalPlanner {
   std::vector<double> bounds_, exact_;
   std::vector<RolloutHeadings> headings_;  // per omega of the window
   std::vector<double> escape_;  // per sample: clearance to the movers at the end of moving_horizon
+  // The velocity critic's index (none: past the end), and whether a mover is
+  // within mover_caution_radius this cycle (its weight scaled then).
+  std::size_t speed_critic_ = std::numeric_limits<std::size_t>::max();
+  bool mover_near_ = false;
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;
