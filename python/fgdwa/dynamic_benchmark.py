@@ -161,9 +161,16 @@ def replay_command(path, planner: str, seed: int, latency: int) -> str:
 
 def write_failed_fields(runs: Sequence[BarnRun], out_dir, setup: DynamicSetup) -> list:
     """Write the scenario file of every field a run failed on into ``out_dir``/fields;
-    return one entry per failed run: planner, seed, outcome, file, replay command."""
+    return one entry per failed run: planner, seed, outcome, file, replay command.
+    Field files of the same levels that an earlier run left and no run failed on
+    this time are removed, so that ``fields/`` holds this run's failures only."""
     failed = []
     written = set()
+    for level in sorted({run.row["level"] for run in runs}):
+        prefix = field_name(level, 0)[:-1]
+        for stale in (Path(out_dir) / "fields").glob(f"{prefix}*.yaml"):
+            if stale.stem[len(prefix):].isdigit():
+                stale.unlink()
     for run in runs:
         row = run.row
         if row["outcome"] == "success":

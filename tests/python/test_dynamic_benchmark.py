@@ -166,3 +166,21 @@ def test_bad_requests_are_named(tmp_path):
     assert main(["dynamic", "--seeds", "9-1", "--out", str(tmp_path)]) == 2
     assert main(["dynamic", "--executor", "local", "--scheduler", "tcp://localhost:1", "--out", str(tmp_path)]) == 2
     assert main(["dynamic", "--dropout", "1.5", "--seeds", "0", "--out", str(tmp_path)]) == 2
+
+
+def test_fields_left_by_an_earlier_run_go_unless_they_failed_again(tmp_path):
+    from types import SimpleNamespace
+
+    from fgdwa.dynamic_benchmark import DynamicSetup, write_failed_fields
+
+    fields = tmp_path / "fields"
+    fields.mkdir()
+    for name in ("dynamic_easy_7.yaml", "dynamic_easy_8.yaml", "dynamic_hard_7.yaml", "my_notes.yaml"):
+        (fields / name).write_text("kept?\n")
+    runs = [SimpleNamespace(row={"level": "easy", "seed": 8, "planner": "fgdwa", "outcome": "collision"}),
+            SimpleNamespace(row={"level": "easy", "seed": 9, "planner": "fgdwa", "outcome": "success"})]
+    failed = write_failed_fields(runs, tmp_path, DynamicSetup())
+    assert [entry["seed"] for entry in failed] == [8]
+    # easy 7 did not fail this time; another level's file and the user's own stay.
+    assert sorted(p.name for p in fields.iterdir()) == ["dynamic_easy_8.yaml", "dynamic_hard_7.yaml", "my_notes.yaml"]
+    assert load_scenario(fields / "dynamic_easy_8.yaml").name == "dynamic_easy_8"
