@@ -71,8 +71,6 @@ double seconds_since(Clock::time_point start) {
 
 int cycles_of(double seconds, double dt) { return static_cast<int>(std::lround(seconds / dt)); }
 
-
-
 // Moves `current` toward `target` by at most `step`.
 double approach(double current, double target, double step) {
   return current + std::clamp(target - current, -step, step);

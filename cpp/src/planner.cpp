@@ -237,7 +237,6 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   context.v_max = limits_.v_max;
   context.world = &world;
   context.footprint = &footprint_;
-  mover_near_ = world.moving_clearance(footprint_, state.pose, 0.0) <= params_.mover_caution_radius;
   score_and_choose(context);
 
   const int evasion = result_.best_index < 0 ? latest_moving_contact() : -1;
@@ -474,14 +473,17 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
       }
     }
   }
+  // This cycle's weights: the velocity critic's scaled while a mover is near.
+  cycle_weights_ = result_.weights;
+  if (speed_critic_ < m &&
+      context.world->moving_clearance(footprint_, context.state.pose, 0.0) <= params_.mover_caution_radius)
+    cycle_weights_[speed_critic_] *= params_.mover_speed_weight;
   double best = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
     if (result_.reasons[i] != RejectReason::None) continue;
     double total = 0.0;
     for (std::size_t j = 0; j < m; ++j) {
-      const double weight = mover_near_ && j == speed_critic_ ? params_.mover_speed_weight * result_.weights[j]
-                                                              : result_.weights[j];
-      const double term = weight * result_.normalized(i, j);
+      const double term = cycle_weights_[j] * result_.normalized(i, j);
       total += result_.senses[j] == CriticSense::Cost ? -term : term;
     }
     result_.total(static_cast<Eigen::Index>(i)) = total;

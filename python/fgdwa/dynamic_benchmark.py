@@ -166,11 +166,11 @@ def write_failed_fields(runs: Sequence[BarnRun], out_dir, setup: DynamicSetup) -
     this time are removed, so that ``fields/`` holds this run's failures only."""
     failed = []
     written = set()
-    for level in sorted({run.row["level"] for run in runs}):
-        prefix = field_name(level, 0)[:-1]
-        for stale in (Path(out_dir) / "fields").glob(f"{prefix}*.yaml"):
-            if stale.stem[len(prefix):].isdigit():
-                stale.unlink()
+    levels = {run.row["level"] for run in runs}
+    for stale in (Path(out_dir) / "fields").glob("*.yaml"):
+        seed = stale.stem.rsplit("_", 1)[-1]
+        if seed.isdigit() and any(stale.stem == field_name(level, int(seed)) for level in levels):
+            stale.unlink()
     for run in runs:
         row = run.row
         if row["outcome"] == "success":

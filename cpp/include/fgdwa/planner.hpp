@@ -177,10 +177,10 @@ class LocalPlanner {
   std::vector<double> bounds_, exact_;
   std::vector<RolloutHeadings> headings_;  // per omega of the window
   std::vector<double> escape_;  // per sample: clearance to the movers at the end of moving_horizon
-  // The velocity critic's index (none: past the end), and whether a mover is
-  // within mover_caution_radius this cycle (its weight scaled then).
+  // The velocity critic's index (none: past the end), and the weights this
+  // cycle scores with (its weight scaled while a mover is near).
   std::size_t speed_critic_ = std::numeric_limits<std::size_t>::max();
-  bool mover_near_ = false;
+  std::vector<double> cycle_weights_;
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;
