@@ -100,6 +100,8 @@ def test_noisy_world_settings(make, match):
                                           ({"n_omega": -3}, "n_omega"), ({"normalization": "l2"}, "normalization"),
                                           ({"braking": "soft"}, "braking"), ({"goal_tolerance": -1.0}, "goal_tolerance"),
                                           ({"moving_horizon": -1.0}, "moving_horizon"),
+                                          ({"mover_caution_radius": NAN}, "mover_caution_radius"),
+                                          ({"mover_speed_weight": 1.5}, "mover_speed_weight"),
                                           ({"critics": []}, "at least one"),
                                           ({"critics": [("heading", 1.0), ("heading", 2.0)]}, "twice"),
                                           ({"critics": [("nonsense", 1.0)]}, "unknown critic"),
