@@ -253,8 +253,8 @@ void Navigator::close_sensed_obstacles(const Vec2& position) {
 
 double Navigator::contact_margin(const Pose2& pose) const {
   // As the planner does: the margin never asks for more room than the robot has.
-  return std::clamp(controller_.world().clearance(footprint_, pose, 0.0) - 1e-3, 0.0,
-                    controller_.planner().params().safety_margin);
+  return fgdwa::contact_margin(controller_.world().clearance(footprint_, pose, 0.0),
+                               controller_.planner().params().safety_margin);
 }
 
 bool Navigator::step_clear(const Pose2& pose, const Twist& command) const {

@@ -89,6 +89,17 @@ struct PlannerParams {
   void validate() const;
 };
 
+// m: how much closer a robot already within a millimetre of an obstacle (or
+// overlapping one) may come in one control cycle.
+inline constexpr double kContactSlack = 1e-6;
+
+// The clearance (m) below which a motion of a robot with clearance `clearance`
+// counts as contact: the safety margin, never more than the room the robot has
+// less a millimetre; within a millimetre, or overlapping, the clearance less
+// kContactSlack (negative when overlapping): it may then turn and move away,
+// but not close in.
+double contact_margin(double clearance, double safety_margin);
+
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 struct PlanResult {
