@@ -35,7 +35,7 @@ from fgdwa._core import (
 from fgdwa.scenario import PARAM_FIELDS, Scenario, Variability, params_with
 from fgdwa.scenario_checks import FeasibilityChecks
 from fgdwa.scenario_maps import MapReader
-from fgdwa.scenario_values import is_number, join_key, parse_yaml, short_repr
+from fgdwa.scenario_values import join_key, parse_yaml, short_repr
 from fgdwa.world import MOVER_MODES, MovingObstacle, World
 
 SHIPPED_DIR = Path(__file__).resolve().parent / "scenarios"
