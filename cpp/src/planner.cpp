@@ -101,7 +101,10 @@ std::size_t LocalPlanner::critic_index(const std::string& name) const {
 
 double contact_margin(double clearance, double safety_margin) {
   if (clearance > 1e-3) return std::min(safety_margin, clearance - 1e-3);
-  return clearance - kContactSlack;
+  // Only a negative clearance measures how deep a robot is: a polygon's, or an
+  // FCL world's, stops at zero in contact, where closing in cannot be told.
+  if (clearance < 0.0) return clearance - kContactSlack;
+  return std::max(clearance - kContactSlack, 0.0);
 }
 
 bool LocalPlanner::has_critic(const std::string& critic) const {
@@ -270,11 +273,11 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   // millimetres, so a rollout grazing an obstacle is not trusted.
   // The margin never asks for more room than the robot already has, so a robot
   // that came within it can still move on without closing in. One already
-  // within a millimetre, or overlapping (a map can grow under a robot: a
-  // conservative cell newly seen beside it), may still turn or move away, as
-  // long as it closes in by no more than kContactSlack: with a margin clamped
-  // at zero every motion there counted as contact, turning in place included,
-  // and the robot stood still for good.
+  // within a millimetre, or overlapping by a measured depth (a map can grow
+  // under a robot: a conservative cell newly seen beside it), may still turn or
+  // move away, closing in by no more than kContactSlack (contact_margin): with a
+  // margin clamped at zero every motion there counted as contact, turning in
+  // place included, and the robot stood still for good.
   // The braking rule and the sweep hold against what stands still; moving
   // obstacles are checked on their own below, since braking cannot keep them off.
   const ClearanceSource& fixed = world.static_part();
