@@ -82,7 +82,12 @@ NAVIGATOR_KEYS = init_keywords(NavigatorParams)
 # NavigatorParams fields that are parameter objects, given in YAML as mappings of their own keywords.
 NESTED = {"occupancy": OccupancyParams, "segment": SegmentParams, "tracker": TrackerParams}
 KEYS = IRSIM_KEYS + OWN_KEYS + LIMIT_KEYS + PLANNER_KEYS + NAVIGATOR_KEYS
-DEFAULT_RESOLUTION = 0.1  # m, cells of a map built from scans
+# m, cells of a map built from scans. Finer than fgdwa's own 0.1 m: the planner
+# trusts the map for hits within half a cell (plus the noise) of its obstacles,
+# and with 0.1 m cells the tips of IR-SIM's random polygons and edges seen at a
+# grazing angle went missing from it often enough to be hit.
+DEFAULT_RESOLUTION = 0.05
+MAX_SCAN_CELLS = 2_000_000  # a large world gets coarser cells rather than more of them
 MAP_MARGIN = 2.0  # m kept around the world (and the robot and its goals) by a map built from scans
 # The navigator stops this fraction inside IR-SIM's goal_threshold, where IR-SIM counts the robot arrived.
 GOAL_TOLERANCE_SHARE = 0.9
@@ -97,7 +102,7 @@ class BehaviorConfig:
 
     preset: str = "fgdwa"  # a planner preset (fgdwa.preset_names())
     mapping: str = "auto"  # "known": the world's grid map; "scan": built from scans; "auto": known when there is one
-    resolution: float = DEFAULT_RESOLUTION  # m, cells of a map built from scans
+    resolution: Optional[float] = None  # m, cells of a map built from scans (None: DEFAULT_RESOLUTION, or coarser)
     planner: dict = field(default_factory=dict)  # PlannerParams fields replacing the preset's
     navigator: dict = field(default_factory=dict)  # NavigatorParams fields replacing its defaults
     limits: dict = field(default_factory=dict)  # RobotLimits fields tightening the robot's IR-SIM limits
@@ -114,8 +119,9 @@ def parse_config(config: Mapping[str, Any], where: str) -> BehaviorConfig:
     mapping = reader.string(config.get("mapping", "auto"), "mapping")
     if mapping not in MAPPINGS:
         reader.fail("mapping", mapping, f"expected one of {', '.join(MAPPINGS)}")
-    resolution = reader.number(config.get("resolution", DEFAULT_RESOLUTION), "resolution", low=0.0,
-                               low_open=True)
+    resolution = None
+    if config.get("resolution") is not None:
+        resolution = reader.number(config["resolution"], "resolution", low=0.0, low_open=True)
     planner = _planner_overrides(reader, config, planner_preset(preset).params)
     navigator = _navigator_overrides(reader, config)
     limits = {name: reader.number(config[name], name, low=0.0, low_open=True)
@@ -332,8 +338,10 @@ def _world_rect(robot) -> Optional[tuple]:
     return float(world.x_range[0]), float(world.y_range[0]), float(world.x_range[1]), float(world.y_range[1])
 
 
-def scan_layout(robot, goals: Sequence, resolution: float) -> OccupancyGrid:
-    """An empty map to build from scans: the world, the robot and its goals, with a margin."""
+def scan_layout(robot, goals: Sequence, resolution: Optional[float]) -> OccupancyGrid:
+    """An empty map to build from scans: the world, the robot and its goals, with a
+    margin; cells of ``resolution``, by default DEFAULT_RESOLUTION unless that
+    takes more than MAX_SCAN_CELLS."""
     points = [np.asarray(robot.state, dtype=float).reshape(-1)[:2]] + [np.asarray(g, dtype=float)[:2]
                                                                         for g in goals]
     low, high = np.min(points, axis=0), np.max(points, axis=0)
@@ -341,6 +349,8 @@ def scan_layout(robot, goals: Sequence, resolution: float) -> OccupancyGrid:
     if rect is not None:
         low, high = np.minimum(low, rect[:2]), np.maximum(high, rect[2:])
     low, high = low - MAP_MARGIN, high + MAP_MARGIN
+    if resolution is None:
+        resolution = max(DEFAULT_RESOLUTION, math.sqrt(float(np.prod(high - low)) / MAX_SCAN_CELLS))
     cols, rows = (int(v) for v in np.ceil((high - low) / resolution))
     return OccupancyGrid(np.zeros((rows, cols), dtype=np.uint8), resolution, (float(low[0]), float(low[1])))
 
