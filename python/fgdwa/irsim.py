@@ -273,16 +273,30 @@ def lidar_params(lidar) -> LidarParams:
                        max_range=float(lidar.range_max), noise_std=noise)
 
 
-def irsim_scan(lidar) -> Scan:
+def irsim_scan(lidar, body=None) -> Scan:
     """The lidar's last scan as a fgdwa Scan, placed where the lidar was (IR-SIM's
     lidar_origin: the robot's pose with the lidar's mounting offset). A beam that hit
     nothing reads +inf; a return inside the blind zone (IR-SIM reports range_min, not
-    valid) stays a hit at range_min, the nearest the obstacle can be placed."""
+    valid) stays a hit at range_min, the nearest the obstacle can be placed.
+
+    A return inside ``body`` (the robot's outline as a shapely geometry in the
+    world) reads +inf too: nothing stands inside the robot that has not already
+    collided with it, so it is the robot's own body or a ray-casting artifact
+    (IR-SIM 2.12 returns one for the zero-length edges of grid maps, and a single
+    such point inside the robot stops every motion of the planner)."""
     ranges = np.array(lidar.range_data, dtype=float)
     valid = np.asarray(lidar.valid, dtype=bool)
     ranges[~valid & (ranges > lidar.range_min)] = np.inf
-    return Scan(ranges, float(lidar.angle_min), float(lidar.angle_inc), float(lidar.range_max),
-                np.asarray(lidar.lidar_origin, dtype=float).reshape(-1)[:3])
+    pose = np.asarray(lidar.lidar_origin, dtype=float).reshape(-1)[:3]
+    if body is not None:
+        import shapely
+
+        finite = np.flatnonzero(np.isfinite(ranges))
+        angles = pose[2] + np.asarray(lidar.angle_list, dtype=float)[finite]
+        x = pose[0] + ranges[finite] * np.cos(angles)
+        y = pose[1] + ranges[finite] * np.sin(angles)
+        ranges[finite[shapely.contains_xy(body, x, y)]] = np.inf
+    return Scan(ranges, float(lidar.angle_min), float(lidar.angle_inc), float(lidar.range_max), pose)
 
 
 def world_grid(objects) -> Optional[OccupancyGrid]:
@@ -499,7 +513,7 @@ class FgdwaBehavior:
         velocity = np.asarray(robot.velocity, dtype=float).reshape(-1)
         state = RobotState(np.asarray(robot.state, dtype=float).reshape(-1)[:3], (velocity[0], velocity[1]))
         tic = _time.perf_counter()
-        record = self.navigator.step(state, irsim_scan(self.lidar), now)
+        record = self.navigator.step(state, irsim_scan(self.lidar, robot.geometry), now)
         self.cycle_times.append(_time.perf_counter() - tic)
         self.record = record
         if record.mode == NavigatorMode.Failed:

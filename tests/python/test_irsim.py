@@ -217,6 +217,21 @@ def test_scans_are_placed_where_the_lidar_sits(tmp_path):
         env.end(0)
 
 
+def test_returns_inside_the_robot_read_as_no_return():
+    import shapely
+
+    class Lidar:  # what irsim_scan reads from IR-SIM's lidar
+        range_min, range_max, angle_min, angle_inc = 0.0, 5.0, -0.5, 0.5
+        angle_list = np.array([-0.5, 0.0, 0.5])
+        range_data = np.array([2.0, 0.1, 5.0])  # a far hit, one inside the robot, a miss
+        valid = np.array([True, True, False])
+        lidar_origin = np.array([[1.0], [2.0], [0.3]])
+
+    body = shapely.Point(1.0, 2.0).buffer(0.25)
+    np.testing.assert_array_equal(fi.irsim_scan(Lidar(), body).ranges, [2.0, np.inf, np.inf])
+    np.testing.assert_array_equal(fi.irsim_scan(Lidar()).ranges, [2.0, 0.1, np.inf])
+
+
 def test_grid_maps_hold_every_cell_irsim_collides_with(tmp_path):
     # 20 m x 20 m of a floor plan with every fourth pixel kept: cells of 0.103 m by 0.104 m, resampled to squares.
     path = world_file(tmp_path, {
