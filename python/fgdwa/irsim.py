@@ -305,8 +305,9 @@ def world_grid(objects) -> Optional[OccupancyGrid]:
     IR-SIM counts a robot colliding with an occupied cell (value > 50) when it
     meets the cell's box or comes within half a cell of its centre. On square
     cells that is the cell itself; on cells of unequal sides the grid is resampled
-    onto square cells of the shorter side, each one occupied when it meets an
-    occupied cell's box or disc.
+    onto square cells of half the shorter side, each one occupied when it meets an
+    occupied cell's box or disc: the map then holds every place IR-SIM collides
+    with and reaches at most one of its (small) cells beyond.
     """
     maps = [obj for obj in objects if obj.shape == "map" and getattr(obj, "grid_map", None) is not None]
     if not maps:
@@ -319,7 +320,9 @@ def world_grid(objects) -> Optional[OccupancyGrid]:
     if abs(rx - ry) <= 1e-9 * max(rx, ry):
         # IR-SIM indexes [x, y]; fgdwa's rows are y, row 0 at the bottom.
         return OccupancyGrid(np.ascontiguousarray(occupied.T, dtype=np.uint8), rx, (ox, oy))
-    res = min(rx, ry)
+    # Cells of the shorter side would stand up to a whole cell proud of what
+    # IR-SIM collides with: enough to wedge a polygon robot in a doorway.
+    res = 0.5 * min(rx, ry)
     cols = int(math.ceil(grid.shape[0] * rx / res - 1e-9))
     rows = int(math.ceil(grid.shape[1] * ry / res - 1e-9))
     cells = np.zeros((rows, cols), dtype=np.uint8)
