@@ -280,15 +280,20 @@ def irsim_scan(lidar, body=None) -> Scan:
     valid) stays a hit at range_min, the nearest the obstacle can be placed.
 
     A return inside ``body`` (the robot's outline as a shapely geometry in the
-    world) reads +inf too: nothing stands inside the robot that has not already
-    collided with it, so it is the robot's own body or a ray-casting artifact
-    (IR-SIM 2.12 returns one for the zero-length edges of grid maps, and a single
-    such point inside the robot stops every motion of the planner)."""
+    world) deeper than the range noise can carry a hit reads +inf too: nothing
+    stands inside the robot that has not already collided with it, so it is the
+    robot's own body or a ray-casting artifact (IR-SIM 2.12 returns one for the
+    zero-length edges of grid maps, and a single such point inside the robot
+    stops every motion of the planner). A noisy hit on an obstacle beside the
+    robot can land just inside its outline: those stay."""
     ranges = np.array(lidar.range_data, dtype=float)
     valid = np.asarray(lidar.valid, dtype=bool)
     ranges[~valid & (ranges > lidar.range_min)] = np.inf
     pose = np.asarray(lidar.lidar_origin, dtype=float).reshape(-1)[:3]
-    if body is not None:
+    noise = float(lidar.std) if getattr(lidar, "noise", False) else 0.0
+    if body is not None and noise > 0.0:
+        body = body.buffer(-3.0 * noise)
+    if body is not None and not body.is_empty:
         import shapely
 
         finite = np.flatnonzero(np.isfinite(ranges))

@@ -230,6 +230,12 @@ def test_returns_inside_the_robot_read_as_no_return():
     body = shapely.Point(1.0, 2.0).buffer(0.25)
     np.testing.assert_array_equal(fi.irsim_scan(Lidar(), body).ranges, [2.0, np.inf, np.inf])
     np.testing.assert_array_equal(fi.irsim_scan(Lidar()).ranges, [2.0, 0.1, np.inf])
+    # With 5 cm of range noise a hit up to 15 cm inside the outline may be an obstacle beside the robot.
+    noisy = Lidar()
+    noisy.noise, noisy.std = True, 0.05
+    noisy.range_data = np.array([2.0, 0.12, 0.05])
+    noisy.valid = np.array([True, True, True])
+    np.testing.assert_array_equal(fi.irsim_scan(noisy, body).ranges, [2.0, 0.12, np.inf])
 
 
 def test_grid_maps_hold_every_cell_irsim_collides_with(tmp_path):
