@@ -437,8 +437,8 @@ class FgdwaBehavior:
         lidar = robot_lidar(robot)
         step_time = float(robot._world_param.step_time)
         limits = robot_limits(robot, config.limits)
-        # Grown by what one step of IR-SIM's integration can differ from fgdwa's model:
-        # a rollout the planner finds clear then is clear in IR-SIM too.
+        # Grown by what one step of IR-SIM's integration can differ from fgdwa's model,
+        # so the step the planner finds clear is clear in IR-SIM too.
         footprint = robot_footprint(robot, pad=step_mismatch(limits, step_time))
         preset = planner_preset(config.preset)
         planner = dict(config.planner)
