@@ -37,7 +37,7 @@ $(VENV)/.tools: | $(BIN)/python
 	touch $@
 
 $(VENV)/.installed: $(SOURCES) | $(VENV)/.tools
-	$(BIN)/python -m pip install -q --no-build-isolation ".[test]"
+	$(BIN)/python -m pip install -q --no-build-isolation ".[test,irsim]"
 	touch $@
 
 $(BUILD)/build.ninja: CMakeLists.txt | $(VENV)/.tools

@@ -40,6 +40,41 @@ void init_perception(py::module_& m) {
       });
 
   py::class_<Scan>(m, "Scan", "One lidar scan: ranges (m, +inf for no hit) of beams from angle_min by angle_increment.")
+      // Scans measured elsewhere (a real lidar, another simulator) enter here;
+      // LaserScanner makes fgdwa's own.
+      .def(py::init([](py::handle ranges, double angle_min, double angle_increment, double max_range,
+                       py::handle pose) {
+             Scan s;
+             s.pose = to_pose(pose, "pose");
+             if (!std::isfinite(angle_min)) throw Error("angle_min: must be finite, got " + std::to_string(angle_min));
+             if (!std::isfinite(angle_increment) || angle_increment < 0.0)
+               throw Error("angle_increment: must be finite and >= 0, got " + std::to_string(angle_increment));
+             if (!(max_range > 0.0) || !std::isfinite(max_range))
+               throw Error("max_range: must be finite and > 0, got " + std::to_string(max_range));
+             s.angle_min = angle_min;
+             s.angle_increment = angle_increment;
+             s.max_range = max_range;
+             py::array array;
+             try {
+               array = py::array::ensure(ranges);
+             } catch (const py::error_already_set&) {
+             }
+             if (!array || (array.dtype().kind() != 'f' && array.dtype().kind() != 'i' && array.dtype().kind() != 'u'))
+               throw Error("ranges: expected a one-dimensional array of numbers");
+             auto values = py::array_t<double, py::array::c_style>::ensure(array);
+             if (values.ndim() != 1) throw Error("ranges: expected shape (n), got " + std::to_string(values.ndim()) +
+                                                 " dimensions");
+             s.ranges.assign(values.data(), values.data() + values.size());
+             for (std::size_t i = 0; i < s.ranges.size(); ++i)
+               if (std::isnan(s.ranges[i]) || s.ranges[i] < 0.0)
+                 throw Error("ranges[" + std::to_string(i) + "] = " + std::to_string(s.ranges[i]) +
+                             ": must be >= 0 (+inf for no hit)");
+             return s;
+           }),
+           py::arg("ranges"), py::arg("angle_min"), py::arg("angle_increment"), py::arg("max_range"),
+           py::arg("pose") = py::make_tuple(0.0, 0.0, 0.0),
+           "A scan measured elsewhere: ranges (m, +inf for no hit) of beams from angle_min (rad, relative to the "
+           "sensor's heading) by angle_increment (rad), max_range (m), taken at pose (x, y, theta) of the sensor.")
       .def_property(
           "pose", [](const Scan& s) { return s.pose; },
           [](Scan& s, py::handle pose) { s.pose = to_pose(pose, "pose"); },

@@ -249,16 +249,17 @@ void Navigator::close_sensed_obstacles(const Vec2& position) {
 
 double Navigator::contact_margin(const Pose2& pose) const {
   // As the planner does: the margin never asks for more room than the robot has.
-  return std::clamp(controller_.world().clearance(footprint_, pose, 0.0) - 1e-3, 0.0,
-                    controller_.planner().params().safety_margin);
+  return fgdwa::contact_margin(controller_.world().clearance(footprint_, pose, 0.0),
+                               controller_.planner().params().safety_margin);
 }
 
 bool Navigator::step_clear(const Pose2& pose, const Twist& command) const {
   const FieldClearance& seen = controller_.world();
   const double margin = contact_margin(pose);
-  // A turn in place sweeps the outline: check it every few degrees.
+  // A turn in place sweeps the outline: check it every few degrees (no turn, no
+  // check: the start itself, within the margin when in contact, is not the step's).
   const double turn = command.omega * dt_;
-  const int turns = std::max(1, static_cast<int>(std::ceil(std::abs(turn) * footprint_.radius() / 0.02)));
+  const int turns = turn == 0.0 ? 0 : std::max(1, static_cast<int>(std::ceil(std::abs(turn) * footprint_.radius() / 0.02)));
   for (int i = 1; i <= turns; ++i) {
     const Pose2 turned{pose.x, pose.y, pose.theta + turn * i / turns};
     if (seen.clearance(footprint_, turned, 0.0) <= margin) return false;

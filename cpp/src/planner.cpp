@@ -103,6 +103,14 @@ std::size_t LocalPlanner::critic_index(const std::string& name) const {
   throw Error("the planner has no critic '" + name + "'");
 }
 
+double contact_margin(double clearance, double safety_margin) {
+  if (clearance > 1e-3) return std::min(safety_margin, clearance - 1e-3);
+  // Only a negative clearance measures how deep a robot is: a polygon's, or an
+  // FCL world's, stops at zero in contact, where closing in cannot be told.
+  if (clearance < 0.0) return clearance - kContactSlack;
+  return std::max(clearance - kContactSlack, 0.0);
+}
+
 bool LocalPlanner::has_critic(const std::string& critic) const {
   return std::find(result_.critic_names.begin(), result_.critic_names.end(), critic) != result_.critic_names.end();
 }
@@ -268,12 +276,17 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   // control cycles (braking included) strays from the checked rollout by a few
   // millimetres, so a rollout grazing an obstacle is not trusted.
   // The margin never asks for more room than the robot already has, so a robot
-  // that came within it can still move on without closing in.
+  // that came within it can still move on without closing in. One already
+  // within a millimetre, or overlapping by a measured depth (a map can grow
+  // under a robot: a conservative cell newly seen beside it), may still turn or
+  // move away, closing in by no more than kContactSlack (contact_margin): with a
+  // margin clamped at zero every motion there counted as contact, turning in
+  // place included, and the robot stood still for good.
   // The braking rule and the sweep hold against what stands still; moving
   // obstacles are checked on their own below, since braking cannot keep them off.
   const ClearanceSource& fixed = world.static_part();
   const double clearance_now = fixed.clearance(footprint_, state.pose, 0.0);
-  const double margin = std::clamp(clearance_now - 1e-3, 0.0, params_.safety_margin);
+  const double margin = contact_margin(clearance_now, params_.safety_margin);
   const double start_clearance = clearance_now - margin;
   const double obstacle_travel = fixed.obstacle_speed() * params_.dt;
   const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
@@ -356,7 +369,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     if (reason == RejectReason::None && moving_world) {
       double closest = std::numeric_limits<double>::infinity();
       result_.moving_contact[i] =
-          first_moving_contact(state.pose, cmd, poses, world, margin, last, closest, escape_[i]);
+          first_moving_contact(state.pose, cmd, poses, world, std::max(margin, 0.0), last, closest, escape_[i]);
       // An evasion must not trade the mover for a wall.
       escape_[i] = std::min(escape_[i], result_.min_clearance[i]);
       result_.min_clearance[i] = std::min(result_.min_clearance[i], closest);

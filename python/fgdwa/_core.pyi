@@ -493,6 +493,10 @@ class Scan:
     """
     One lidar scan: ranges (m, +inf for no hit) of beams from angle_min by angle_increment.
     """
+    def __init__(self, ranges: typing.Any, angle_min: typing.SupportsFloat | typing.SupportsIndex, angle_increment: typing.SupportsFloat | typing.SupportsIndex, max_range: typing.SupportsFloat | typing.SupportsIndex, pose: typing.Any = (0.0, 0.0, 0.0)) -> None:
+        """
+        A scan measured elsewhere: ranges (m, +inf for no hit) of beams from angle_min (rad, relative to the sensor's heading) by angle_increment (rad), max_range (m), taken at pose (x, y, theta) of the sensor.
+        """
     def __repr__(self) -> str:
         ...
     @property

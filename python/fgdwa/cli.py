@@ -1,5 +1,6 @@
-"""The ``fgdwa`` command: ``demo``, ``run`` (one episode, its figure and GIF) and
-``experiment`` (the paper's experiments, SPEC 10)."""
+"""The ``fgdwa`` command: ``demo``, ``run`` (one episode, its figure and GIF),
+``experiment`` (the paper's experiments, SPEC 10) and ``irsim`` (an IR-SIM world
+driven by the fgdwa behavior)."""
 
 from __future__ import annotations
 
@@ -145,6 +146,18 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
     return 0
 
 
+def cmd_irsim(args: argparse.Namespace) -> int:
+    try:
+        from fgdwa.irsim import format_run, run_world
+    except ImportError as error:
+        raise FgdwaError(str(error)) from None
+
+    run = run_world(args.world, max_steps=args.max_steps, seed=args.seed, render=args.render)
+    print(format_run(run))
+    robots = run.fgdwa_robots()
+    return 0 if all(r.arrived and not r.collided for r in robots) else 1
+
+
 def _existing(path: Path):
     return path if path.exists() else None
 
@@ -198,6 +211,13 @@ def build_parser() -> argparse.ArgumentParser:
     exp.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
     exp.add_argument("--no-progress", action="store_true", help="no progress bar")
     exp.set_defaults(func=cmd_experiment)
+    irs = sub.add_parser("irsim", help="run an IR-SIM world whose robots name behavior fgdwa (needs ir-sim: "
+                                       "pip install 'fgdwa[irsim]'); prints each robot's outcome by IR-SIM's flags")
+    irs.add_argument("world", help="an IR-SIM world YAML file")
+    irs.add_argument("--max-steps", type=_positive, default=1000, help="steps before giving up (default 1000)")
+    irs.add_argument("--seed", type=int, default=None, help="IR-SIM's random seed (lidar noise, random placements)")
+    irs.add_argument("--render", action="store_true", help="draw the world in a window while it runs")
+    irs.set_defaults(func=lambda args, argv: cmd_irsim(args))
     from fgdwa.barn_cli import register_barn_commands
 
     register_barn_commands(sub)

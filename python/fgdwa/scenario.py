@@ -31,10 +31,25 @@ def init_keywords(cls) -> tuple:
     """The keyword arguments of a bound class's constructor, read from the signature
     pybind11 writes into its docstring: the one place they are defined."""
     doc = cls.__init__.__doc__ or ""
-    if "(" not in doc or ")" not in doc:
+    if "(" not in doc:
         raise FgdwaError(f"{cls.__name__}: its constructor has no signature to read")
-    inside = doc[doc.index("(") + 1:doc.index(")")]
-    return tuple(part.split(":")[0].strip() for part in inside.split(", ")[1:])
+    # Split at the signature's own commas: defaults such as NavigatorParams'
+    # occupancy=OccupancyParams(hit=0.85, clamp=[-2, 3.5], ...) hold commas and brackets too.
+    parts, depth, start = [], 0, doc.index("(") + 1
+    for i in range(start, len(doc)):
+        char = doc[i]
+        if char in "([{":
+            depth += 1
+        elif char in ")]}" and depth > 0:
+            depth -= 1
+        elif char == ")" or (char == "," and depth == 0):
+            parts.append(doc[start:i])
+            start = i + 1
+            if char == ")":
+                break
+    else:
+        raise FgdwaError(f"{cls.__name__}: its constructor's signature is not closed")
+    return tuple(part.split(":")[0].strip() for part in parts[1:])
 
 
 # PlannerParams' fields, each a keyword of its constructor and a readable attribute.

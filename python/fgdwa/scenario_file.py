@@ -29,14 +29,13 @@ from fgdwa._core import (
     OccupancyGrid,
     PlannerParams,
     RobotLimits,
-    critic_names,
     planner_preset,
     preset_names,
 )
 from fgdwa.scenario import PARAM_FIELDS, Scenario, Variability, params_with
 from fgdwa.scenario_checks import FeasibilityChecks
 from fgdwa.scenario_maps import MapReader
-from fgdwa.scenario_values import is_number, join_key, parse_yaml, short_repr
+from fgdwa.scenario_values import join_key, parse_yaml, short_repr
 from fgdwa.world import MOVER_MODES, MovingObstacle, World
 
 SHIPPED_DIR = Path(__file__).resolve().parent / "scenarios"
@@ -285,27 +284,6 @@ class _Reader(MapReader, FeasibilityChecks):
             overrides[name] = item
         self.core(okey, raw, lambda: params_with(base, **overrides))
         return preset, overrides
-
-    def critics(self, value: Any, key: str) -> list:
-        if not isinstance(value, list) or not value:
-            self.fail(key, value, "expected a list of critics: {name, weight, params}")
-        known = critic_names()
-        critics = []
-        for i, item in enumerate(value):
-            ckey = join_key(key, i)
-            self.mapping(item, ckey, ("name", "weight", "params"), required=("name",))
-            name = self.string(item["name"], join_key(ckey, "name"))
-            if name not in known:
-                self.fail(join_key(ckey, "name"), name, f"unknown critic (known: {', '.join(known)})")
-            weight = self.number(item.get("weight", 1.0), join_key(ckey, "weight"), low=0.0)
-            params = item.get("params") or {}
-            if not isinstance(params, dict):
-                self.fail(join_key(ckey, "params"), params, "expected a mapping of numbers and words")
-            for pname, pvalue in params.items():
-                if not isinstance(pname, str) or not (is_number(pvalue) or isinstance(pvalue, str)):
-                    self.fail(join_key(join_key(ckey, "params"), str(pname)), pvalue, "expected a number or a word")
-            critics.append({"name": name, "weight": weight, "params": dict(params)})
-        return critics
 
     def global_planner(self, value: Any, grid: OccupancyGrid) -> tuple:
         from fgdwa import global_planning

@@ -12,7 +12,7 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 import yaml
 
-from fgdwa._core import FgdwaError
+from fgdwa._core import FgdwaError, critic_names
 
 
 class _StrictLoader(yaml.SafeLoader):
@@ -166,3 +166,24 @@ class ValueReader:
         if not isinstance(value, list):
             self.fail(key, value, "expected a list")
         return value
+
+    def critics(self, value: Any, key: str) -> list:
+        if not isinstance(value, list) or not value:
+            self.fail(key, value, "expected a list of critics: {name, weight, params}")
+        known = critic_names()
+        critics = []
+        for i, item in enumerate(value):
+            ckey = join_key(key, i)
+            self.mapping(item, ckey, ("name", "weight", "params"), required=("name",))
+            name = self.string(item["name"], join_key(ckey, "name"))
+            if name not in known:
+                self.fail(join_key(ckey, "name"), name, f"unknown critic (known: {', '.join(known)})")
+            weight = self.number(item.get("weight", 1.0), join_key(ckey, "weight"), low=0.0)
+            params = item.get("params") or {}
+            if not isinstance(params, dict):
+                self.fail(join_key(ckey, "params"), params, "expected a mapping of numbers and words")
+            for pname, pvalue in params.items():
+                if not isinstance(pname, str) or not (is_number(pvalue) or isinstance(pvalue, str)):
+                    self.fail(join_key(join_key(ckey, "params"), str(pname)), pvalue, "expected a number or a word")
+            critics.append({"name": name, "weight": weight, "params": dict(params)})
+        return critics

@@ -370,6 +370,75 @@ TEST(LocalPlanner, FreeDistanceCountsContactMidTurn) {
   EXPECT_GT(n.between, 5);
 }
 
+// A robot standing against a wall of its map, facing it, or overlapping it (a
+// map built from scans can grow a cell under a robot standing still): turning
+// in place and moving away stay admissible, closing in does not. A margin
+// clamped at zero counted every motion there as contact, and the robot stood
+// still for good.
+TEST(LocalPlanner, RobotAtOrInsideAnObstacleMayTurnAndLeaveButNotCloseIn) {
+  std::vector<std::uint8_t> cells(40 * 40, 0);
+  for (int row = 0; row < 40; ++row)
+    for (int col = 20; col < 24; ++col) cells[static_cast<std::size_t>(row) * 40 + col] = 1;  // x in [1.0, 1.2)
+  const OccupancyGrid grid(40, 40, 0.05, Vec2(0.0, -1.0), cells);
+  const FieldClearance world(std::make_shared<const DistanceField>(grid));
+  const Footprint fp = Footprint::circle(0.25);
+  PlannerParams params;
+  params.dt = 0.1;
+  LocalPlanner planner(RobotLimits{}, fp, params);
+  for (const double clearance : {5e-4, 0.0, -0.01}) {
+    SCOPED_TRACE(::testing::Message() << "clearance " << clearance);
+    const RobotState state{Pose2{1.0 - 0.25 - clearance, 0.0, 0.0}, Twist{}};
+    ASSERT_NEAR(world.clearance(fp, state.pose, 0.0), clearance, 1e-9);
+    // The goal lies behind the robot: it has to turn away from the wall.
+    const PlanResult& r = planner.plan(state, Vec2(-1.0, 0.0), world);
+    int turning = 0;
+    for (std::size_t i = 0; i < r.samples.size(); ++i) {
+      if (r.reasons[i] != RejectReason::None) continue;
+      EXPECT_GE(r.min_clearance[i], clearance - kContactSlack - 1e-12) << r.samples[i].v << ", " << r.samples[i].omega;
+      turning += r.samples[i].v == 0.0 && r.samples[i].omega != 0.0;
+    }
+    EXPECT_GT(turning, 0);
+    EXPECT_EQ(r.status, Status::Ok);
+    EXPECT_NE(r.command.omega, 0.0);
+    // Straight on into the wall stays inadmissible.
+    for (std::size_t i = 0; i < r.samples.size(); ++i) {
+      if (r.samples[i].v > 0.0 && r.samples[i].omega == 0.0) {
+        EXPECT_NE(r.reasons[i], RejectReason::None);
+      }
+    }
+  }
+  EXPECT_DOUBLE_EQ(contact_margin(0.5, 0.02), 0.02);
+  EXPECT_DOUBLE_EQ(contact_margin(0.011, 0.02), 0.01);
+  EXPECT_DOUBLE_EQ(contact_margin(-0.01, 0.02), -0.01 - kContactSlack);
+  EXPECT_DOUBLE_EQ(contact_margin(0.0, 0.02), 0.0);
+}
+
+// A polygon's clearance stops at zero in contact, so how deep it goes cannot be
+// told there: a rectangle touching or overlapping a wall it faces may not drive
+// on into it (with a negative margin, zero would have passed for "no deeper").
+TEST(LocalPlanner, PolygonInContactMayNotDriveDeeper) {
+  std::vector<std::uint8_t> cells(40 * 40, 0);
+  for (int row = 0; row < 40; ++row)
+    for (int col = 20; col < 24; ++col) cells[static_cast<std::size_t>(row) * 40 + col] = 1;  // x in [1.0, 1.2)
+  const OccupancyGrid grid(40, 40, 0.05, Vec2(0.0, -1.0), cells);
+  const FieldClearance world(std::make_shared<const DistanceField>(grid));
+  const Footprint fp = Footprint::polygon({{-0.25, -0.15}, {0.25, -0.15}, {0.25, 0.15}, {-0.25, 0.15}});
+  PlannerParams params;
+  params.dt = 0.1;
+  LocalPlanner planner(RobotLimits{}, fp, params);
+  for (const double overlap : {0.0, 0.01, 0.04}) {
+    SCOPED_TRACE(::testing::Message() << "overlap " << overlap);
+    const RobotState state{Pose2{1.0 - 0.25 + overlap, 0.0, 0.0}, Twist{0.3, 0.0}};
+    ASSERT_NEAR(world.clearance(fp, state.pose, 0.0), 0.0, 1e-12);
+    const PlanResult& r = planner.plan(state, Vec2(3.0, 0.0), world);
+    for (std::size_t i = 0; i < r.samples.size(); ++i) {
+      if (r.samples[i].v > 0.0) {
+        EXPECT_NE(r.reasons[i], RejectReason::None) << r.samples[i].v << ", " << r.samples[i].omega;
+      }
+    }
+  }
+}
+
 // Fast, straight at a wall 0.25 m beyond the footprint: no command in the
 // window can stop in time.
 TEST(LocalPlanner, BoxedInReportsNoAdmissibleVelocityAndBrakes) {

@@ -132,3 +132,32 @@ def test_perception_bad_input():
     narrow = fgdwa.LaserScanner(fgdwa.LidarParams(fov_deg=90, beams=2), empty_field()).scan((0, 0, 0))
     with pytest.raises(fgdwa.FgdwaError, match="no lidar beam"):
         fgdwa.obstacle_density(narrow, fgdwa.DetectWindowParams(half_angle_deg=10))
+
+
+def test_a_scan_measured_elsewhere_matches_the_scanners_own():
+    lidar = fgdwa.LidarParams(fov_deg=180, beams=91, max_range=5.0)
+    pose = (0.3, -0.2, 0.4)
+    own = fgdwa.LaserScanner(lidar, wall_field(1.5, gap=(0.2, 0.6))).scan(pose)
+    given = fgdwa.Scan(own.ranges, own.angle_min, own.angle_increment, own.max_range, pose)
+    np.testing.assert_array_equal(given.ranges, own.ranges)
+    np.testing.assert_allclose(given.angles, lidar.angles)
+    np.testing.assert_allclose(given.hit_points, own.hit_points)
+    assert fgdwa.obstacle_density(given).density == fgdwa.obstacle_density(own).density
+    assert fgdwa.Scan([1.0], 0.0, 0.0, 2.0).pose.x == 0.0
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(ranges=[1.0, float("nan")]), r"ranges\[1\]"),
+    (dict(ranges=[-0.5]), r"ranges\[0\]"),
+    (dict(ranges=[[1.0]]), "ranges: expected shape"),
+    (dict(ranges="far"), "ranges"),
+    (dict(angle_min=float("inf")), "angle_min"),
+    (dict(angle_increment=-0.1), "angle_increment"),
+    (dict(max_range=0.0), "max_range"),
+    (dict(pose=(0.0, 0.0)), "pose"),
+])
+def test_scan_bad_input(kwargs, match):
+    args = dict(ranges=[1.0, float("inf")], angle_min=-0.5, angle_increment=0.1, max_range=5.0, pose=(0, 0, 0))
+    args.update(kwargs)
+    with pytest.raises(fgdwa.FgdwaError, match=match):
+        fgdwa.Scan(**args)

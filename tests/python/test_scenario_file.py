@@ -405,3 +405,15 @@ def test_planner_overrides_are_the_bound_params_fields(tmp_path):
     path = write(tmp_path, TINY + "planner: {preset: gdwa, overrides: {safety_margin: 0.05, key_node_sight: true}}\n")
     scenario = load_scenario(path)
     assert scenario.overrides == {"safety_margin": 0.05, "key_node_sight": True}
+
+
+def test_constructor_keywords_are_read_past_nested_defaults():
+    from fgdwa.scenario import init_keywords
+
+    # NavigatorParams' defaults hold parameter objects whose reprs carry commas and brackets.
+    names = init_keywords(fgdwa.NavigatorParams)
+    assert names[:2] == ("path_margin", "replan_period")
+    assert {"occupancy", "segment", "tracker", "learn_obstacles", "mover_margin"} <= set(names)
+    assert all(hasattr(fgdwa.NavigatorParams(), name) for name in names)
+    assert init_keywords(fgdwa.RobotLimits) == ("v_min", "v_max", "omega_max", "acc_v", "acc_omega", "brake_v",
+                                                "brake_omega")

@@ -96,6 +96,19 @@ struct PlannerParams {
   void validate() const;
 };
 
+// m: how much closer a robot already within a millimetre of an obstacle (or
+// overlapping one) may come in one control cycle.
+inline constexpr double kContactSlack = 1e-6;
+
+// The clearance (m) below which a motion of a robot with clearance `clearance`
+// counts as contact: the safety margin, never more than the room the robot has
+// less a millimetre; within a millimetre, the clearance less kContactSlack, and
+// the same when overlapping by a measured depth (a negative clearance, as a
+// circle's distance field gives): it may then turn and move away, but not close
+// in. At a clearance of exactly zero (where a polygon's or FCL's clearance stops)
+// the margin is zero: only leaving contact at once is allowed.
+double contact_margin(double clearance, double safety_margin);
+
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 struct PlanResult {
