@@ -396,6 +396,18 @@ Twist Navigator::backup_command(const RobotState& state) {
   return Twist{-next, omega};
 }
 
+bool Navigator::standing_clear_of_movers(const RobotState& state, double duration) const {
+  const double margin = controller_.planner().params().safety_margin;
+  Pose2 pose = state.pose;
+  Twist twist = state.twist;
+  for (int k = 0; k * dt_ <= duration + 1e-9; ++k) {
+    if (moving_disc_clearance(discs_now_, footprint_, pose, k * dt_) <= margin) return false;
+    twist = braking_command(limits_, twist, dt_);
+    pose = fgdwa::step(pose, twist, dt_);
+  }
+  return true;
+}
+
 Twist Navigator::rotate_command(const RobotState& state) {
   const double error = wrap_angle(rotate_goal_ - state.pose.theta);
   const double brake = limits_.braking_omega();
@@ -525,7 +537,8 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
       rotated_ += std::abs(command.omega) * dt_;
     }
   } else if (mode_now_ == NavigatorMode::Waiting) {
-    if (wait_cycles_left_-- > 0) {
+    // A mover coming at the robot ends the wait: the planner gets it out of the way.
+    if (wait_cycles_left_ > 0 && standing_clear_of_movers(state, wait_cycles_left_-- * dt_)) {
       command = braking_command(limits_, state.twist, dt_);
     } else {
       mode_now_ = NavigatorMode::Following;

@@ -166,6 +166,17 @@ int LocalPlanner::first_terrain_contact(const Trajectory& poses, bool centre_onl
   return n_steps_;
 }
 
+double LocalPlanner::impassable_clearance(const Trajectory& poses, int last, double below) const {
+  const DistanceField::LowerBounds bound = impassable_->field()->lower_bounds();
+  double best = below;
+  for (int k = 0; k <= last && k < static_cast<int>(poses.size()); ++k) {
+    const Pose2& pose = poses[static_cast<std::size_t>(k)];
+    if (bound(pose.x, pose.y) - footprint_.radius() >= best) continue;
+    best = std::min(best, impassable_->clearance(footprint_, pose, 0.0));
+  }
+  return best;
+}
+
 const std::vector<std::size_t>& LocalPlanner::key_nodes() const {
   static const std::vector<std::size_t> none;
   return tracker_ ? tracker_->nodes() : none;
@@ -364,6 +375,10 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       const int k = first_terrain_contact(poses, terrain_centre_only);
       if (k < n_steps_ && !is_admissible(cmd, k * cmd.v * params_.dt, limits_, params_.dt, params_.braking))
         reason = RejectReason::Terrain;
+      // A pit is as impassable as a wall: the clearance critic keeps the robot
+      // off its edge too, leaving it room to get out of a mover's way there.
+      if (!terrain_centre_only)
+        result_.min_clearance[i] = impassable_clearance(poses, std::min(last, k), result_.min_clearance[i]);
     }
     result_.moving_contact[i] = std::numeric_limits<double>::infinity();
     if (reason == RejectReason::None && moving_world) {

@@ -240,6 +240,25 @@ TEST(Navigator, StallBesideAMovingObstacleWaitsThenFollows) {
   EXPECT_EQ(waited, 4);
 }
 
+TEST(Navigator, AMoverComingAtAStalledRobotEndsTheWaitAtOnce) {
+  // The same stall as above, but the mover heads for the robot: standing
+  // still there is no way to let it pass, so the planner keeps driving.
+  const OccupancyGrid map = room(30, 60);
+  NavigatorParams params;
+  params.stall_time = 0.3;
+  params.wait_time = 0.6;
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  nav.set_goal(Vec2(5.5, 1.5));
+  const std::vector<Disc> coming = {Disc{Vec2(2.0, 2.2), 0.3, Vec2(0.0, -0.4)}};  // in contact after 0.5 s
+  double t = 0.0;
+  const RobotState held = at(2.0, 1.5);
+  for (int i = 0; i < 12; ++i, t += 0.15) {
+    const CycleRecord& r = nav.step(held, nullptr, t, coming);
+    EXPECT_NE(r.mode, NavigatorMode::Waiting) << "cycle " << i;
+    EXPECT_TRUE(r.planned) << "cycle " << i;
+  }
+}
+
 TEST(Navigator, FailsAfterMaxRecoveriesWithoutProgressAndWhenNoPathExists) {
   const OccupancyGrid map = room(30, 60);
   NavigatorParams params;
@@ -380,6 +399,14 @@ TEST(PlannerTerrain, RejectsRolloutsIntoGradeFourAndCapsTheWindow) {
     d.pose = step(d.pose, p.command, 0.15);
     d.twist = p.command;
     ASSERT_LT(terrain->grade_at(d.pose.position()), 4) << "cycle " << i;
+  }
+  // Grade 4 counts in a rollout's clearance as a wall would: here, in open
+  // space, its distance from the footprint all along the rollout.
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    if (r.reasons[i] != RejectReason::None) continue;
+    double nearest = kInf;
+    for (const Pose2& pose : planner.rollouts()[i]) nearest = std::min(nearest, 2.0 - pose.x - 0.25);
+    EXPECT_NEAR(r.min_clearance[i], nearest, 1e-9) << "sample " << i;
   }
   // Without terrain the same start goes straight for the goal at full speed.
   planner.set_terrain(nullptr);

@@ -202,6 +202,10 @@ class Navigator {
   double contact_margin(const Pose2& pose) const;
   // Whether the footprint stays clear of the robot's own view of the world moving from `pose` by `command`.
   bool step_clear(const Pose2& pose, const Twist& command) const;
+  // Whether the robot, braking to a stop from `state`, stays clear of this
+  // cycle's moving obstacles for `duration` (s): waiting for a mover to pass
+  // is safe only where it will not come.
+  bool standing_clear_of_movers(const RobotState& state, double duration) const;
   Twist backup_command(const RobotState& state);
   Twist rotate_command(const RobotState& state);
   double open_heading(const Pose2& pose) const;

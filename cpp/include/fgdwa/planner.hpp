@@ -200,6 +200,8 @@ class LocalPlanner {
   // The first pose at which the footprint enters grade-4 terrain, n_steps_ if
   // none; `centre_only` holds only the centre to it (a footprint already over it).
   int first_terrain_contact(const Trajectory& poses, bool centre_only) const;
+  // The smallest of `below` and the footprint's clearance to grade-4 terrain over poses 0..last.
+  double impassable_clearance(const Trajectory& poses, int last, double below) const;
   // Time (s) at which the rollout from `start` first comes into contact with a
   // moving obstacle of `world`, within moving_horizon; +inf if it does not.
   // `closest`: its smallest clearance to them over poses 0..last; `escape`:
