@@ -162,6 +162,7 @@ void NavigatorNode::on_simple_goal(const geometry_msgs::PoseStamped::ConstPtr& m
 
 void NavigatorNode::start(const fgdwa::Vec2& goal) {
   goal_ = goal;
+  ++goals_;
   goal_received_ = ros::Time::now();
   active_ = true;
   cycle_ms_.clear();
@@ -193,8 +194,9 @@ void NavigatorNode::finish(Outcome outcome, const std::string& reason) {
     if (c == '"' || c == '\\') escaped += '\\';
     escaped += c;
   }
-  publish_event("{\"event\": \"end\", \"time\": " + number((ros::Time::now() - start_time_).toSec()) +
-                ", \"outcome\": \"" + word + "\", \"reason\": \"" + escaped + "\"}");
+  const ros::Time now = ros::Time::now();
+  publish_event("{\"event\": \"end\", \"time\": " + number((now - start_time_).toSec()) + ", \"stamp\": " +
+                seconds(now) + ", \"outcome\": \"" + word + "\", \"reason\": \"" + escaped + "\"}");
   const std::string cycles = cycle_summary(cycle_ms_);
   if (outcome == Outcome::Aborted)
     ROS_WARN("fgdwa_node: goal aborted: %s (cycle time %s)", reason.c_str(), cycles.c_str());
@@ -311,9 +313,10 @@ std::optional<std::string> NavigatorNode::ensure_navigator(const fgdwa::Pose2& r
                                                   fgdwa::kDefaultPassingFactors, config_.detect_window);
   map_changed_ = false;
   path_version_ = -1;
+  ++navigators_;
   navigator_->set_goal(goal_);
   std::ostringstream event;
-  event << "{\"event\": \"navigator\", \"time\": " << number((ros::Time::now() - start_time_).toSec())
+  event << "{\"event\": \"navigator\", \"id\": " << navigators_ << ", \"time\": " << number((ros::Time::now() - start_time_).toSec())
         << ", \"mapping\": \"" << p.mapping << "\", \"layout\": {\"origin\": [" << number(layout->origin().x()) << ", "
         << number(layout->origin().y()) << "], \"rows\": " << layout->rows() << ", \"cols\": " << layout->cols()
         << ", \"resolution\": " << number(layout->resolution()) << "}, \"lidar\": {\"beams\": " << beams
@@ -337,7 +340,7 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
     const double age = present ? (now - received).toSec() : since_goal;
     if (age <= timeout) return std::nullopt;
     char buffer[200];
-    std::snprintf(buffer, sizeof buffer, "no %s on '%s' for %.2f s (%s_timeout %.2f s): robot stopped", what,
+    std::snprintf(buffer, sizeof buffer, "no %s on '%s' for %.2f s (%s_timeout %.2f s)", what,
                   topic.c_str(), age, what, timeout);
     return std::string(buffer);
   };
@@ -359,20 +362,17 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
     publish_stop();
     return std::nullopt;
   }
-  // A scan is stepped once; a cycle that finds no new one steps without (the map keeps the last).
-  const bool fresh = scan != last_stepped_scan_;
-  fgdwa::Scan converted;
-  if (fresh) {
-    const auto pose = laser_pose(*scan, reason);
-    if (!pose) return reason;
-    converted = to_scan(*scan, *pose);
-  }
+  // A cycle that finds no new scan (the lidar slower than the control rate, or
+  // late) steps on the last one again: the planner always sees the newest scan,
+  // and the fuzzy weights cannot do without one.
+  const auto pose = laser_pose(*scan, reason);
+  if (!pose) return reason;
+  const fgdwa::Scan converted = to_scan(*scan, *pose);
   const double time = (now - start_time_).toSec();
   const auto step_tic = std::chrono::steady_clock::now();
-  const fgdwa::CycleRecord& record = navigator_->step(*state, fresh ? &converted : nullptr, time);
+  const fgdwa::CycleRecord& record = navigator_->step(*state, &converted, time);
   const double step_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - step_tic).count();
-  last_stepped_scan_ = scan;
 
   geometry_msgs::Twist cmd;
   cmd.linear.x = record.command.v;
@@ -388,7 +388,7 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
   const double cycle_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tic).count();
   cycle_ms_.push_back(cycle_ms);
   all_cycle_ms_.push_back(cycle_ms);
-  publish_cycle(record, now, step_ms, cycle_ms, fresh ? &converted : nullptr);
+  publish_cycle(record, now, step_ms, cycle_ms, converted, scan->header.stamp);
   if (record.mode == fgdwa::NavigatorMode::GoalReached) {
     finish(Outcome::Succeeded, "goal reached");
   } else if (record.mode == fgdwa::NavigatorMode::Failed) {
@@ -400,7 +400,7 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
 void NavigatorNode::publish_stop() { cmd_pub_.publish(geometry_msgs::Twist()); }
 
 void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::Time& now, double step_ms,
-                                  double cycle_ms, const fgdwa::Scan* scan) {
+                                  double cycle_ms, const fgdwa::Scan& scan, const ros::Time& scan_stamp) {
   std_msgs::Header header;
   header.stamp = now;
   header.frame_id = config_.node.global_frame;
@@ -428,6 +428,7 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
     kv.value = value;
     status.values.push_back(kv);
   };
+  add("cycle", std::to_string(++cycles_));
   add("time", number(record.time));
   add("mode", fgdwa::to_string(record.mode));
   add("status", fgdwa::to_string(record.status));
@@ -437,10 +438,13 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
   add("x", number(record.state.pose.x));
   add("y", number(record.state.pose.y));
   add("theta", number(record.state.pose.theta));
+  add("navigator", std::to_string(navigators_));
+  add("goal", number(goal_.x()) + " " + number(goal_.y()));
+  add("goal_id", std::to_string(goals_));
   add("odom_stamp", seconds(odom_->header.stamp));
   // Which inputs the cycle stepped on, so that fgdwa replay can step on the same ones.
-  add("scan_stamp", scan ? seconds(last_stepped_scan_->header.stamp) : "");
-  add("scan_pose", scan ? number(scan->pose.x) + " " + number(scan->pose.y) + " " + number(scan->pose.theta) : "");
+  add("scan_stamp", seconds(scan_stamp));
+  add("scan_pose", number(scan.pose.x) + " " + number(scan.pose.y) + " " + number(scan.pose.theta));
   add("density", json_number(record.density));
   add("deviation", json_number(record.deviation));
   add("beta", json_number(record.beta));
@@ -449,6 +453,9 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
   add("path_version", std::to_string(record.path_version));
   add("recoveries", std::to_string(record.recoveries));
   add("step_ms", number(step_ms));
+  const fgdwa::StageTimes& t = record.times;
+  add("stages_ms", number(1e3 * t.tracking) + " " + number(1e3 * t.map) + " " + number(1e3 * t.global) + " " +
+                       number(1e3 * t.perception) + " " + number(1e3 * t.plan));
   add("cycle_ms", number(cycle_ms));
   array.status.push_back(status);
   diagnostics_pub_.publish(array);

@@ -60,9 +60,9 @@ class NavigatorNode {
   std::optional<fgdwa::Pose2> laser_pose(const sensor_msgs::LaserScan& scan, std::string& reason);
   std::optional<fgdwa::RobotState> robot_state(std::string& reason);
   void publish_stop();
-  // cmd_vel is out already; the plans, markers and the cycle's diagnostics. `scan`: the one stepped on, if any.
+  // cmd_vel is out already; the plans, markers and the cycle's diagnostics (`scan`: the one stepped on).
   void publish_cycle(const fgdwa::CycleRecord& record, const ros::Time& now, double step_ms, double cycle_ms,
-                     const fgdwa::Scan* scan);
+                     const fgdwa::Scan& scan, const ros::Time& scan_stamp);
   void publish_event(const std::string& json);
 
   ros::NodeHandle nh_, private_nh_;
@@ -80,9 +80,11 @@ class NavigatorNode {
   ros::Time odom_received_;
   nav_msgs::OccupancyGrid::ConstPtr map_;
   bool map_changed_ = false;  // a map came after the navigator was built on the previous one
-  sensor_msgs::LaserScan::ConstPtr last_stepped_scan_;
 
   std::unique_ptr<fgdwa::Navigator> navigator_;
+  int navigators_ = 0;  // built so far; the cycle's diagnostics name theirs, and so does its event
+  int goals_ = 0;       // goals started so far (each one set anew, even to the same point)
+  long cycles_ = 0;     // cycles stepped so far, numbered in the diagnostics so that a gap in a recording shows
   fgdwa::Pose2 mount_;  // the laser in the base frame, looked up with the navigator
   std::string laser_frame_;
   bool active_ = false;
