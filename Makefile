@@ -13,7 +13,7 @@ APT_PACKAGES := libeigen3-dev libfcl-dev libompl-dev libboost-serialization-dev 
 	$(ROS_PACKAGES)
 
 BIN := $(VENV)/bin
-SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*')
+SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*' -not -path 'cpp/ros/*')
 
 .PHONY: setup system-packages demo test test-cpp test-python bench clean stubs
 
