@@ -46,7 +46,8 @@ $(VENV)/.installed: $(SOURCES) | $(VENV)/.tools
 
 $(BUILD)/build.ninja: CMakeLists.txt | $(VENV)/.tools
 	$(BIN)/cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \
-	  -DFGDWA_BUILD_BENCHMARKS=ON -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja
+	  -DFGDWA_BUILD_BENCHMARKS=ON -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja \
+	  -DFGDWA_TEST_PYTHON=$(abspath $(BIN))/python
 
 demo: setup
 	$(BIN)/fgdwa run demo --planner fgdwa --out $(OUT)/demo --gif $(OUT)/demo/demo.gif
