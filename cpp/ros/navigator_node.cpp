@@ -117,11 +117,9 @@ std::optional<fgdwa::Vec2> NavigatorNode::goal_in_global(const geometry_msgs::Po
 }
 
 void NavigatorNode::on_action_goal() {
-  // acceptNewGoal() preempts a goal still active, as move_base does.
-  const bool replacing = active_;
+  // A new goal preempts the one still active, as move_base does.
+  if (active_) finish(Outcome::Preempted, "replaced by a new goal on move_base");
   const auto goal = action_.acceptNewGoal();
-  if (replacing && !from_action_) publish_stop();
-  active_ = false;
   if (action_.isPreemptRequested()) {
     // Cancelled before it was accepted.
     action_.setPreempted(move_base_msgs::MoveBaseResult(), "cancelled before it started");

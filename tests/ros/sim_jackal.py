@@ -15,7 +15,9 @@ The referee is fgdwa's own (fgdwa.sim.collides_during_step on the exact FCL
 world, the same footprint the planner uses): a collision is the footprint
 touching the map's obstacles anywhere along a tick. ``sim/referee`` carries
 its verdict and the robot's true state as JSON; ``sim/scan_enabled``
-(std_msgs/Bool) silences the lidar and brings it back.
+(std_msgs/Bool) silences the lidar and brings it back; ``sim/reset``
+(std_msgs/Empty) puts the robot back at the start, at rest. ``map`` (latched)
+is the world's grid in the odom frame, for fgdwa_node's known-map mode.
 """
 
 from __future__ import annotations
@@ -29,9 +31,9 @@ import numpy as np
 import rospy
 import tf2_ros
 from geometry_msgs.msg import TransformStamped, Twist as TwistMsg
-from nav_msgs.msg import Odometry
+from nav_msgs.msg import OccupancyGrid as GridMsg, Odometry
 from sensor_msgs.msg import LaserScan
-from std_msgs.msg import Bool, String
+from std_msgs.msg import Bool, Empty, String
 
 import fgdwa
 from fgdwa.datasets import load_barn
@@ -91,7 +93,10 @@ class SimJackal:
         self.static_tf = tf2_ros.StaticTransformBroadcaster()
         rospy.Subscriber("cmd_vel", TwistMsg, self.on_cmd, queue_size=5)
         rospy.Subscriber("sim/scan_enabled", Bool, self.on_scan_enabled, queue_size=5)
+        rospy.Subscriber("sim/reset", Empty, self.on_reset, queue_size=1)
+        self.map_pub = rospy.Publisher("map", GridMsg, queue_size=1, latch=True)
         self.publish_mount()
+        self.publish_map()
 
     def on_cmd(self, msg: TwistMsg) -> None:
         self.cmd = (msg.linear.x, msg.angular.z)
@@ -99,6 +104,44 @@ class SimJackal:
 
     def on_scan_enabled(self, msg: Bool) -> None:
         self.scan_enabled = bool(msg.data)
+
+    def on_reset(self, _msg: Empty) -> None:
+        self.pose = np.array(self.world.start, dtype=float)
+        self.v = self.omega = 0.0
+        self.cmd = (0.0, 0.0)
+        self.travelled = 0.0
+        self.min_clearance = math.inf  # a collision, once seen, stays reported
+
+    def publish_map(self) -> None:
+        """The world's grid in the odom frame: turned by odom_turn (a multiple of a right
+        angle, as in BARN) about the start, cell for cell."""
+        quarter = self.odom_turn / (0.5 * math.pi)
+        turns = int(round(quarter)) % 4
+        if abs(quarter - round(quarter)) > 1e-3:
+            rospy.logwarn("sim_jackal: odom frame not a right angle off the map's; no map published")
+            return
+        cells = np.asarray(self.grid.cells, dtype=np.int8)
+        res = self.grid.resolution
+        ox, oy = self.grid.origin
+        rows, cols = cells.shape
+        x0, y0, _ = self.origin
+        # Corners of the map in odom; the turned grid's origin is their lowest x and y.
+        c, s = math.cos(self.odom_turn), math.sin(self.odom_turn)
+        corners = [(c * (x - x0) - s * (y - y0), s * (x - x0) + c * (y - y0))
+                   for x in (ox, ox + cols * res) for y in (oy, oy + rows * res)]
+        # np.rot90 turns counter-clockwise as printed, row 0 at the top; with row 0 at the
+        # bottom (y up) that is clockwise, so a counter-clockwise turn is k = -turns.
+        turned = np.rot90(cells, k=-turns)
+        msg = GridMsg()
+        msg.header.stamp = rospy.Time.now()
+        msg.header.frame_id = "odom"
+        msg.info.resolution = res
+        msg.info.height, msg.info.width = turned.shape
+        msg.info.origin.position.x = min(p[0] for p in corners)
+        msg.info.origin.position.y = min(p[1] for p in corners)
+        msg.info.origin.orientation.w = 1.0
+        msg.data = (100 * turned).astype(np.int8).ravel().tolist()
+        self.map_pub.publish(msg)
 
     def publish_mount(self) -> None:
         t = TransformStamped()

@@ -11,7 +11,9 @@ ctest runs it (tests/ros/CMakeLists.txt). In turn:
 4. a preempt: the action ends PREEMPTED and the robot stops;
 5. the scan goes silent: the action ends ABORTED naming the scan, the robot stops;
 6. the run's bag (scan, odometry, cmd_vel, the node's diagnostics and events)
-   is replayed by ``fgdwa replay``, which must step the same commands.
+   is replayed by ``fgdwa replay``, which must step the same commands;
+7. the known-map mode: the node launched again with ``mapping:=known`` reaches
+   the goal on the world's grid (published by the simulated Jackal), no collision.
 
 Every process it starts it stops again, by its own id. Exit 77 (skipped) when
 the BARN data is missing.
@@ -177,7 +179,7 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     from diagnostic_msgs.msg import DiagnosticArray
     from geometry_msgs.msg import Twist
     from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
-    from std_msgs.msg import Bool, String
+    from std_msgs.msg import Bool, Empty, String
 
     from fgdwa.datasets import load_barn
 
@@ -234,7 +236,7 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     sim_env = dict(env, PYTHONPATH=os.pathsep.join(filter(None, [site, env.get("PYTHONPATH")])))
     procs.start("sim_jackal", [sys.executable, str(HERE / "sim_jackal.py"), "--barn", str(barn), "--world",
                                str(args.world), "--scan-rate", str(args.scan_rate)], env=sim_env)
-    procs.start("fgdwa_node", ["roslaunch", "fgdwa_ros", "barn_jackal.launch"])
+    launch = procs.start("fgdwa_node", ["roslaunch", "fgdwa_ros", "barn_jackal.launch"])
     client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
     check(client.wait_for_server(rospy.Duration(30)), "the move_base action server of fgdwa_node did not come up")
     wait_for(lambda: referee.get("scans", 0) > 0, 30, "the simulated Jackal's first scan")
@@ -346,9 +348,12 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     scan_switch.publish(Bool(data=True))
 
     # Every command of the run inside the robot's limits.
-    bad_cmds = [c for c in commands if not (v_low - 1e-9 <= c[1] <= limits["v_max"] + 1e-9
+    def check_limits(sent):
+        bad_cmds = [c for c in sent if not (v_low - 1e-9 <= c[1] <= limits["v_max"] + 1e-9
                                             and abs(c[2]) <= jackal_omega + 1e-9)]
-    check(not bad_cmds, f"{len(bad_cmds)} commands outside the limits, e.g. {bad_cmds[:3]}")
+        check(not bad_cmds, f"{len(bad_cmds)} commands outside the limits, e.g. {bad_cmds[:3]}")
+
+    check_limits(commands)
     check(not referee["collided"], f"collision at {referee['collision_pose']}")
     print(f"{len(commands)} cmd_vel messages, all inside v in [{v_low}, {limits['v_max']}] m/s, "
           f"|omega| <= {jackal_omega} rad/s", flush=True)
@@ -369,11 +374,34 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     summary = {"world": world.world_id, "barn_time": elapsed, "score": score, "cycles": len(ms),
                "cycle_ms_median": float(np.median(ms)), "cycle_ms_p95": float(np.percentile(ms, 95)),
                "stop_delay": stop_delay}
+    replay(args, bag, out)
+
+    # 7. The known-map mode: the node started again with mapping known, the world's
+    # grid on `map`, the robot back at the start.
+    procs.stop(launch, signal.SIGINT)
+    rospy.Publisher("sim/reset", Empty, queue_size=1, latch=True).publish(Empty())
+    wait_for(lambda: stopped() and math.hypot(referee["map_pose"][0] - sx, referee["map_pose"][1] - sy) < 1e-6,
+             10, "the simulated Jackal to go back to the start")
+    launch = procs.start("fgdwa_node_known", ["roslaunch", "fgdwa_ros", "barn_jackal.launch", "mapping:=known"])
+    check(client.wait_for_server(rospy.Duration(30)), "the known-map fgdwa_node's action server did not come up")
+    before = len(commands)
+    client.send_goal(goal(*odom_goal))
+    state, text = wait_result(args.time_limit + 10)
+    time.sleep(0.3)
+    distance = math.hypot(referee["map_pose"][0] - gx, referee["map_pose"][1] - gy)
+    print(f"known map, BARN world {world.world_id}: {state_name(state)} ({text}), {distance:.2f} m from the goal, "
+          f"min clearance {referee['min_clearance']:.3f} m", flush=True)
+    check(state == GoalStatus.SUCCEEDED, f"known-map goal ended {state_name(state)}: {text}")
+    check(not referee["collided"], f"collision at {referee['collision_pose']} (known map)")
+    check("map of 0.150 m cells (known)" in procs.log("fgdwa_node_known"),
+          "the known-map node did not build its navigator on the world's grid")
+    check_limits(commands[before:])
+    summary["known_map"] = text
     (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
-    return replay(args, bag, out)
+    return 0
 
 
-def replay(args, bag: Path, out: Path) -> int:
+def replay(args, bag: Path, out: Path) -> None:
     """``fgdwa replay`` on the run's bag: the planner rerun on the recorded scans
     and odometry must command what the node commanded."""
     venv_fgdwa = Path(args.fgdwa_python).parent / "fgdwa"
@@ -386,7 +414,6 @@ def replay(args, bag: Path, out: Path) -> int:
     check(report["gaps"] == 0, f"the bag misses cycles of the node ({report['gaps']} gaps)")
     check(report["matching"] == report["cycles"],
           f"replay matched only {report['matching']} of {report['cycles']} recorded commands (same build, same inputs)")
-    return 0
 
 
 if __name__ == "__main__":
