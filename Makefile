@@ -5,11 +5,15 @@ VENV ?= .venv
 BUILD ?= build/cmake
 OUT ?= out
 JOBS ?= 2
+# ROS 1 from Debian's archive, for fgdwa_node and its test (docs/ros.md).
+ROS_PACKAGES := ros-core-dev ros-core-python-dev libtf2-ros-dev python3-tf2-ros libmove-base-msgs-dev \
+	python3-move-base-msgs libactionlib-dev python3-actionlib
 APT_PACKAGES := libeigen3-dev libfcl-dev libompl-dev libboost-serialization-dev \
-	libboost-filesystem-dev libboost-system-dev libgtest-dev libbenchmark-dev
+	libboost-filesystem-dev libboost-system-dev libgtest-dev libbenchmark-dev \
+	$(ROS_PACKAGES)
 
 BIN := $(VENV)/bin
-SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*')
+SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*' -not -path 'cpp/ros/*')
 
 .PHONY: setup system-packages demo test test-cpp test-python bench clean stubs
 
@@ -42,7 +46,8 @@ $(VENV)/.installed: $(SOURCES) | $(VENV)/.tools
 
 $(BUILD)/build.ninja: CMakeLists.txt | $(VENV)/.tools
 	$(BIN)/cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \
-	  -DFGDWA_BUILD_BENCHMARKS=ON -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja
+	  -DFGDWA_BUILD_BENCHMARKS=ON -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja \
+	  -DFGDWA_TEST_PYTHON=$(abspath $(BIN))/python
 
 demo: setup
 	$(BIN)/fgdwa run demo --planner fgdwa --out $(OUT)/demo --gif $(OUT)/demo/demo.gif

@@ -1,6 +1,7 @@
 """The ``fgdwa`` command: ``demo``, ``run`` (one episode, its figure and GIF),
-``experiment`` (the paper's experiments, SPEC 10) and ``irsim`` (an IR-SIM world
-driven by the fgdwa behavior)."""
+``experiment`` (the paper's experiments, SPEC 10), ``irsim`` (an IR-SIM world
+driven by the fgdwa behavior) and ``replay`` (fgdwa_node's planner rerun on a
+ROS bag)."""
 
 from __future__ import annotations
 
@@ -158,6 +159,12 @@ def cmd_irsim(args: argparse.Namespace) -> int:
     return 0 if all(r.arrived and not r.collided for r in robots) else 1
 
 
+def cmd_replay(args: argparse.Namespace) -> int:
+    from fgdwa.replay import replay_command
+
+    return replay_command(args)
+
+
 def _existing(path: Path):
     return path if path.exists() else None
 
@@ -218,6 +225,16 @@ def build_parser() -> argparse.ArgumentParser:
     irs.add_argument("--seed", type=int, default=None, help="IR-SIM's random seed (lidar noise, random placements)")
     irs.add_argument("--render", action="store_true", help="draw the world in a window while it runs")
     irs.set_defaults(func=lambda args, argv: cmd_irsim(args))
+    rep = sub.add_parser("replay", help="rerun fgdwa_node's planner on a ROS bag's scans and odometry and show "
+                                        "where its commands differ from the recorded ones (docs/ros.md)")
+    rep.add_argument("bag", help="a ROS 1 bag recorded from fgdwa_node: the scan, odometry, cmd_vel, "
+                                 "/diagnostics and /fgdwa_node/events")
+    rep.add_argument("--out", default="out/replay", help="directory for replay.csv, .json, .png (default out/replay)")
+    rep.add_argument("--scan-topic", default=None, help="the LaserScan topic, when the bag has several")
+    rep.add_argument("--odom-topic", default=None, help="the Odometry topic, when the bag has several")
+    rep.add_argument("--set", action="append", metavar="NAME=VALUE",
+                     help="replay with a setting changed, by fgdwa_node's parameter name (e.g. planner/sim_time=1.5)")
+    rep.set_defaults(func=lambda args, argv: cmd_replay(args))
     from fgdwa.barn_cli import register_barn_commands
 
     register_barn_commands(sub)

@@ -1,0 +1,386 @@
+#include "node_params.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include <ros/param.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+
+#include "fgdwa/error.hpp"
+#include "fgdwa/presets.hpp"
+
+namespace fgdwa_ros {
+
+using fgdwa::Error;
+using XmlRpc::XmlRpcValue;
+
+namespace {
+
+std::string shown(const XmlRpcValue& value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+[[noreturn]] void refuse(const std::string& name, const XmlRpcValue& value, const std::string& rule) {
+  throw Error("parameter ~" + name + " = " + shown(value) + ": " + rule);
+}
+
+double as_number(const std::string& name, const XmlRpcValue& value) {
+  if (value.getType() == XmlRpcValue::TypeDouble) return static_cast<double>(const_cast<XmlRpcValue&>(value));
+  if (value.getType() == XmlRpcValue::TypeInt) return static_cast<int>(const_cast<XmlRpcValue&>(value));
+  refuse(name, value, "must be a number");
+}
+
+std::string as_text(const std::string& name, const XmlRpcValue& value) {
+  if (value.getType() != XmlRpcValue::TypeString) refuse(name, value, "must be a string");
+  return static_cast<std::string>(const_cast<XmlRpcValue&>(value));
+}
+
+std::string json_number(double value) {
+  if (std::isnan(value)) return "NaN";
+  if (std::isinf(value)) return value > 0 ? "Infinity" : "-Infinity";
+  std::ostringstream out;
+  out.precision(17);
+  out << value;
+  return out.str();
+}
+
+std::string json_text(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// One parameter: how to set it from the server's value and how to write it as JSON.
+struct Entry {
+  std::string name;
+  std::function<void(const XmlRpcValue&)> set;
+  std::function<std::string()> json;
+};
+
+Entry number(const std::string& name, double& field) {
+  return {name, [name, &field](const XmlRpcValue& v) { field = as_number(name, v); },
+          [&field] { return json_number(field); }};
+}
+
+Entry integer(const std::string& name, int& field) {
+  return {name,
+          [name, &field](const XmlRpcValue& v) {
+            if (v.getType() != XmlRpcValue::TypeInt) refuse(name, v, "must be an integer");
+            field = static_cast<int>(const_cast<XmlRpcValue&>(v));
+          },
+          [&field] { return std::to_string(field); }};
+}
+
+Entry flag(const std::string& name, bool& field) {
+  return {name,
+          [name, &field](const XmlRpcValue& v) {
+            if (v.getType() != XmlRpcValue::TypeBoolean) refuse(name, v, "must be true or false");
+            field = static_cast<bool>(const_cast<XmlRpcValue&>(v));
+          },
+          [&field] { return std::string(field ? "true" : "false"); }};
+}
+
+Entry text(const std::string& name, std::string& field) {
+  return {name, [name, &field](const XmlRpcValue& v) { field = as_text(name, v); },
+          [&field] { return json_text(field); }};
+}
+
+// An enum given by the word fgdwa::to_string() writes for it.
+template <typename Enum>
+Entry choice(const std::string& name, Enum& field, std::vector<Enum> values) {
+  return {name,
+          [name, &field, values](const XmlRpcValue& v) {
+            const std::string word = as_text(name, v);
+            std::string known;
+            for (Enum value : values) {
+              if (word == fgdwa::to_string(value)) {
+                field = value;
+                return;
+              }
+              known += std::string(known.empty() ? "" : ", ") + fgdwa::to_string(value);
+            }
+            refuse(name, v, "expected one of " + known);
+          },
+          [&field] { return json_text(fgdwa::to_string(field)); }};
+}
+
+// ~planner/critics: a list of {name: heading, weight: 0.5, params: {key: number or word}}.
+Entry critics(std::vector<fgdwa::CriticConfig>& field) {
+  const std::string name = "planner/critics";
+  auto set = [name, &field](const XmlRpcValue& v) {
+    if (v.getType() != XmlRpcValue::TypeArray || v.size() == 0)
+      refuse(name, v, "must be a non-empty list of {name: ..., weight: ..., params: {...}}");
+    std::vector<fgdwa::CriticConfig> out;
+    for (int i = 0; i < v.size(); ++i) {
+      XmlRpcValue item = v[i];
+      const std::string where = name + "[" + std::to_string(i) + "]";
+      if (item.getType() != XmlRpcValue::TypeStruct || !item.hasMember("name"))
+        refuse(where, item, "must be a mapping with a name (and weight, params)");
+      fgdwa::CriticConfig critic(as_text(where + "/name", item["name"]));
+      for (auto& [key, value] : item) {
+        if (key == "name") continue;
+        if (key == "weight") {
+          critic.weight = as_number(where + "/weight", value);
+        } else if (key == "params") {
+          if (value.getType() != XmlRpcValue::TypeStruct) refuse(where + "/params", value, "must be a mapping");
+          for (auto& [pkey, pvalue] : value) {
+            if (pvalue.getType() == XmlRpcValue::TypeString)
+              critic.options[pkey] = static_cast<std::string>(pvalue);
+            else
+              critic.params[pkey] = as_number(where + "/params/" + pkey, pvalue);
+          }
+        } else {
+          refuse(where + "/" + key, value, "unknown key (a critic has name, weight, params)");
+        }
+      }
+      out.push_back(critic);
+    }
+    field = out;
+  };
+  auto json = [&field] {
+    std::string out = "[";
+    for (std::size_t i = 0; i < field.size(); ++i) {
+      const auto& c = field[i];
+      out += std::string(i ? ", " : "") + "{\"name\": " + json_text(c.name) + ", \"weight\": " + json_number(c.weight) +
+             ", \"params\": {";
+      bool first = true;
+      for (const auto& [k, p] : c.params) {
+        out += std::string(first ? "" : ", ") + json_text(k) + ": " + json_number(p);
+        first = false;
+      }
+      for (const auto& [k, o] : c.options) {
+        out += std::string(first ? "" : ", ") + json_text(k) + ": " + json_text(o);
+        first = false;
+      }
+      out += "}}";
+    }
+    return out + "]";
+  };
+  return {name, set, json};
+}
+
+// ~footprint: [[x, y], ...] a convex polygon in the base frame, or ~footprint_radius: a circle.
+Entry footprint(fgdwa::Footprint& field) {
+  const std::string name = "footprint";
+  auto set = [name, &field](const XmlRpcValue& v) {
+    if (v.getType() != XmlRpcValue::TypeArray) refuse(name, v, "must be a list of [x, y] vertices (m)");
+    std::vector<fgdwa::Vec2> vertices;
+    for (int i = 0; i < v.size(); ++i) {
+      XmlRpcValue point = v[i];
+      if (point.getType() != XmlRpcValue::TypeArray || point.size() != 2)
+        refuse(name + "[" + std::to_string(i) + "]", point, "must be [x, y]");
+      vertices.emplace_back(as_number(name, point[0]), as_number(name, point[1]));
+    }
+    try {
+      field = fgdwa::Footprint::polygon(vertices);
+    } catch (const Error& e) {
+      refuse(name, v, e.what());
+    }
+  };
+  auto json = [&field] {
+    if (field.is_circle()) return std::string("null");
+    std::string out = "[";
+    const auto& vs = field.vertices();
+    for (std::size_t i = 0; i < vs.size(); ++i)
+      out += std::string(i ? ", " : "") + "[" + json_number(vs[i].x()) + ", " + json_number(vs[i].y()) + "]";
+    return out + "]";
+  };
+  return {name, set, json};
+}
+
+Entry footprint_radius(fgdwa::Footprint& field) {
+  const std::string name = "footprint_radius";
+  auto set = [name, &field](const XmlRpcValue& v) {
+    try {
+      field = fgdwa::Footprint::circle(as_number(name, v));
+    } catch (const Error& e) {
+      refuse(name, v, e.what());
+    }
+  };
+  auto json = [&field] { return field.is_circle() ? json_number(field.radius()) : std::string("null"); };
+  return {name, set, json};
+}
+
+std::vector<Entry> entries(NodeConfig& c) {
+  NodeParams& n = c.node;
+  fgdwa::RobotLimits& l = c.limits;
+  fgdwa::PlannerParams& p = c.planner;
+  fgdwa::NavigatorParams& g = c.navigator;
+  fgdwa::OccupancyParams& o = g.occupancy;
+  fgdwa::SegmentParams& s = g.segment;
+  fgdwa::TrackerParams& t = g.tracker;
+  fgdwa::DetectWindowParams& w = c.detect_window;
+  return {
+      text("preset", n.preset), text("robot", n.robot), text("scan_topic", n.scan_topic),
+      text("odom_topic", n.odom_topic), text("cmd_vel_topic", n.cmd_vel_topic), text("map_topic", n.map_topic),
+      text("global_frame", n.global_frame), text("base_frame", n.base_frame), text("mapping", n.mapping),
+      number("map_resolution", n.map_resolution), number("map_margin", n.map_margin),
+      integer("occupied_threshold", n.occupied_threshold), number("scan_timeout", n.scan_timeout),
+      number("odom_timeout", n.odom_timeout), number("transform_timeout", n.transform_timeout),
+      footprint(c.footprint), footprint_radius(c.footprint),
+      number("limits/v_min", l.v_min), number("limits/v_max", l.v_max), number("limits/omega_max", l.omega_max),
+      number("limits/acc_v", l.acc_v), number("limits/acc_omega", l.acc_omega), number("limits/brake_v", l.brake_v),
+      number("limits/brake_omega", l.brake_omega),
+      number("planner/dt", p.dt), number("planner/sim_time", p.sim_time),
+      integer("planner/window/n_v", p.window.n_v), integer("planner/window/n_omega", p.window.n_omega),
+      choice("planner/normalization", p.normalization,
+             {fgdwa::Normalization::Sum, fgdwa::Normalization::MinMax, fgdwa::Normalization::None}),
+      choice("planner/braking", p.braking, {fgdwa::BrakingModel::Discrete, fgdwa::BrakingModel::Continuous}),
+      number("planner/goal_tolerance", p.goal_tolerance), number("planner/safety_margin", p.safety_margin),
+      number("planner/moving_horizon", p.moving_horizon),
+      number("planner/mover_caution_radius", p.mover_caution_radius),
+      number("planner/mover_speed_weight", p.mover_speed_weight),
+      choice("planner/heading_target", p.heading_target, {fgdwa::HeadingTarget::Goal, fgdwa::HeadingTarget::KeyNodes}),
+      number("planner/key_nodes/min_turn", p.key_nodes.min_turn),
+      number("planner/key_nodes/reach_radius", p.key_nodes.reach_radius),
+      flag("planner/key_nodes/require_sight", p.key_nodes.require_sight), critics(p.critics),
+      flag("fuzzy", c.fuzzy),
+      number("navigator/path_margin", g.path_margin), number("navigator/replan_period", g.replan_period),
+      number("navigator/stall_time", g.stall_time), number("navigator/stall_distance", g.stall_distance),
+      number("navigator/give_up_length", g.give_up_length), number("navigator/keep_clear", g.keep_clear),
+      number("navigator/sensed_close_radius", g.sensed_close_radius),
+      number("navigator/backup_distance", g.backup_distance), number("navigator/backup_speed", g.backup_speed),
+      number("navigator/rotate_limit", g.rotate_limit), number("navigator/wait_time", g.wait_time),
+      number("navigator/wait_radius", g.wait_radius), integer("navigator/max_recoveries", g.max_recoveries),
+      number("navigator/progress_reset", g.progress_reset), integer("navigator/record_top_k", g.record_top_k),
+      flag("navigator/track_moving", g.track_moving), number("navigator/mover_margin", g.mover_margin),
+      flag("navigator/learn_obstacles", g.learn_obstacles), number("navigator/unknown_cost", g.unknown_cost),
+      number("navigator/occupancy/hit", o.hit), number("navigator/occupancy/miss", o.miss),
+      number("navigator/occupancy/clamp_min", o.clamp_min), number("navigator/occupancy/clamp_max", o.clamp_max),
+      number("navigator/occupancy/occupied", o.occupied), number("navigator/occupancy/free", o.free),
+      number("navigator/occupancy/range_std", o.range_std),
+      number("navigator/occupancy/clear_range", o.clear_range),
+      number("navigator/occupancy/hit_share", o.hit_share), flag("navigator/occupancy/clear", o.clear),
+      number("navigator/segment/base_gap", s.base_gap),
+      number("navigator/segment/range_gap_factor", s.range_gap_factor),
+      integer("navigator/segment/min_points", s.min_points), number("navigator/segment/max_size", s.max_size),
+      number("navigator/segment/min_radius", s.min_radius), number("navigator/segment/range_noise", s.range_noise),
+      number("navigator/tracker/gate", t.gate), number("navigator/tracker/gate_sigmas", t.gate_sigmas),
+      number("navigator/tracker/accel_std", t.accel_std),
+      number("navigator/tracker/measurement_std", t.measurement_std),
+      integer("navigator/tracker/confirm_hits", t.confirm_hits), number("navigator/tracker/lost_time", t.lost_time),
+      number("navigator/tracker/moving_speed", t.moving_speed),
+      number("navigator/tracker/moving_sigmas", t.moving_sigmas),
+      number("navigator/tracker/moving_window", t.moving_window),
+      number("navigator/tracker/free_margin", t.free_margin), number("navigator/tracker/max_speed", t.max_speed),
+      number("navigator/tracker/uncertainty_sigmas", t.uncertainty_sigmas),
+      number("navigator/tracker/max_uncertainty", t.max_uncertainty),
+      number("lidar/noise_std", c.lidar_noise_std),
+      number("detect_window/half_angle", w.half_angle), number("detect_window/radius", w.radius),
+      number("detect_window/base", w.base),
+  };
+}
+
+// Runs a struct's validate(), its message prefixed with where its fields live.
+template <typename Params>
+void check(const std::string& where, const Params& params) {
+  try {
+    params.validate();
+  } catch (const Error& e) {
+    throw Error("parameters ~" + where + "/: " + e.what());
+  }
+}
+
+}  // namespace
+
+void NodeParams::validate() const {
+  auto fail = [](const std::string& name, const std::string& value, const std::string& rule) {
+    throw Error("parameter ~" + name + " = " + value + ": " + rule);
+  };
+  auto positive = [&](const std::string& name, double value) {
+    if (!(std::isfinite(value) && value > 0.0)) fail(name, json_number(value), "must be a finite number > 0");
+  };
+  for (const auto& [name, value] : {std::pair{"scan_topic", scan_topic}, {"odom_topic", odom_topic},
+                                    {"cmd_vel_topic", cmd_vel_topic}, {"map_topic", map_topic},
+                                    {"global_frame", global_frame}, {"base_frame", base_frame}})
+    if (value.empty()) fail(name, "''", "must not be empty");
+  if (mapping != "scan" && mapping != "known") fail("mapping", json_text(mapping), "expected scan or known");
+  positive("map_resolution", map_resolution);
+  if (!(std::isfinite(map_margin) && map_margin >= 0.0))
+    fail("map_margin", json_number(map_margin), "must be a finite number >= 0");
+  if (occupied_threshold < 1 || occupied_threshold > 100)
+    fail("occupied_threshold", std::to_string(occupied_threshold), "must be in [1, 100]");
+  positive("scan_timeout", scan_timeout);
+  positive("odom_timeout", odom_timeout);
+  positive("transform_timeout", transform_timeout);
+}
+
+NodeConfig read_config(const ros::NodeHandle& private_nh) {
+  NodeConfig config;
+  auto read = [&](const Entry& entry) {
+    XmlRpcValue value;
+    if (private_nh.getParam(entry.name, value)) entry.set(value);
+  };
+  // The presets first: the other parameters replace their values.
+  std::vector<Entry> table = entries(config);
+  read(table[0]);
+  read(table[1]);
+  const auto presets = fgdwa::preset_names();
+  if (std::find(presets.begin(), presets.end(), config.node.preset) == presets.end())
+    throw Error("parameter ~preset = " + json_text(config.node.preset) + ": " + "unknown planner preset");
+  const fgdwa::PlannerPreset preset = fgdwa::planner_preset(config.node.preset);
+  config.planner = preset.params;
+  config.fuzzy = preset.fuzzy;
+  try {
+    const fgdwa::RobotPreset robot = fgdwa::robot_preset(config.node.robot);
+    config.limits = robot.limits;
+    config.footprint = robot.footprint;
+  } catch (const Error& e) {
+    throw Error("parameter ~robot = " + json_text(config.node.robot) + ": " + e.what());
+  }
+
+  std::set<std::string> known;
+  for (const Entry& entry : table) {
+    known.insert(entry.name);
+    read(entry);
+  }
+  std::vector<std::string> names;
+  ros::param::getParamNames(names);
+  const std::string prefix = private_nh.getNamespace() + "/";
+  for (const std::string& full : names) {
+    if (full.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string name = full.substr(prefix.size());
+    if (!known.count(name))
+      throw Error("parameter ~" + name + ": unknown to fgdwa_node (see docs/ros.md for the names it reads)");
+  }
+  if (private_nh.hasParam("footprint") && private_nh.hasParam("footprint_radius"))
+    throw Error("parameters ~footprint and ~footprint_radius: give one of them, not both");
+
+  config.node.validate();
+  check("limits", config.limits);
+  check("planner", config.planner);
+  check("navigator", config.navigator);
+  check("detect_window", config.detect_window);
+  fgdwa::LidarParams lidar;
+  lidar.noise_std = config.lidar_noise_std;
+  check("lidar", lidar);
+  // Critic names and their params are checked when a planner is built: build one now, not at the first goal.
+  try {
+    fgdwa::LocalPlanner planner(config.limits, config.footprint, config.planner);
+  } catch (const Error& e) {
+    throw Error(std::string("parameters ~planner/critics: ") + e.what());
+  }
+  return config;
+}
+
+std::string NodeConfig::to_json() const {
+  // entries() wants mutable fields to read into; writing them out changes nothing.
+  NodeConfig& self = const_cast<NodeConfig&>(*this);
+  std::string out = "{";
+  bool first = true;
+  for (const Entry& entry : entries(self)) {
+    out += std::string(first ? "" : ", ") + json_text(entry.name) + ": " + entry.json();
+    first = false;
+  }
+  return out + "}";
+}
+
+}  // namespace fgdwa_ros

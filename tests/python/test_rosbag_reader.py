@@ -1,0 +1,138 @@
+"""fgdwa.rosbag_reader against bags written by ROS's own rosbag (Debian's
+python3-rosbag under /usr/bin/python3, which make test installs)."""
+
+import json
+import subprocess
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from fgdwa import FgdwaError
+from fgdwa.cli import main
+from fgdwa.replay import quaternion_yaw, scan_ranges
+from fgdwa.rosbag_reader import (
+    decode_diagnostics,
+    decode_laser_scan,
+    decode_odometry,
+    decode_string,
+    decode_twist,
+    read_bag,
+    topic_of_type,
+    topics,
+)
+
+ROS_PYTHON = "/usr/bin/python3"
+
+WRITER = textwrap.dedent("""
+    import math, sys
+    import rosbag, rospy
+    from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus, KeyValue
+    from geometry_msgs.msg import Twist
+    from nav_msgs.msg import Odometry
+    from sensor_msgs.msg import LaserScan
+    from std_msgs.msg import String
+
+    path, compression = sys.argv[1], sys.argv[2]
+    with rosbag.Bag(path, "w", compression=compression, chunk_threshold=2000) as bag:
+        for k in range(5):
+            t = rospy.Time(100 + k, 250000000)
+            scan = LaserScan()
+            scan.header.stamp, scan.header.frame_id = t, "front_laser"
+            scan.angle_min, scan.angle_max, scan.angle_increment = -2.0, 2.0, 1.0
+            scan.range_min, scan.range_max = 0.1, 30.0
+            scan.ranges = [1.5 + k, float("inf"), float("nan"), float("-inf"), 0.05]
+            scan.intensities = [1.0] * 5
+            bag.write("/front/scan", scan, t)
+            odom = Odometry()
+            odom.header.stamp, odom.header.frame_id, odom.child_frame_id = t, "odom", "base_link"
+            odom.pose.pose.position.x, odom.pose.pose.position.y = 0.5 * k, -0.25
+            odom.pose.pose.orientation.z, odom.pose.pose.orientation.w = math.sin(0.15 * k), math.cos(0.15 * k)
+            odom.twist.twist.linear.x, odom.twist.twist.angular.z = 0.75, -0.5
+            bag.write("/odometry/filtered", odom, t)
+            cmd = Twist()
+            cmd.linear.x, cmd.angular.z = 0.1 * k, 0.2
+            bag.write("/cmd_vel", cmd, t)
+            diag = DiagnosticArray()
+            diag.status = [DiagnosticStatus(level=0, name="fgdwa_node: cycle", message="Following (Ok)",
+                                            values=[KeyValue("time", str(k)), KeyValue("v", "0.5")])]
+            bag.write("/diagnostics", diag, t)
+        bag.write("/fgdwa_node/events", String(data='{"event": "goal", "goal": [10, 0]}'), rospy.Time(106))
+""")
+
+
+def _write_bag(tmp_path: Path, compression: str) -> Path:
+    probe = subprocess.run([ROS_PYTHON, "-c", "import rosbag"], capture_output=True, text=True) \
+        if Path(ROS_PYTHON).exists() else None
+    if probe is None or probe.returncode != 0:
+        pytest.skip("ROS's rosbag module is not importable by /usr/bin/python3 (make test installs it)")
+    path = tmp_path / f"test_{compression}.bag"
+    done = subprocess.run([ROS_PYTHON, "-c", WRITER, str(path), compression], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return path
+
+
+@pytest.mark.parametrize("compression", ["none", "bz2"])
+def test_reads_what_rosbag_wrote(tmp_path, compression):
+    bag = _write_bag(tmp_path, compression)
+    messages = list(read_bag(bag))
+    assert [m.topic for m in messages[:4]] == ["/front/scan", "/odometry/filtered", "/cmd_vel", "/diagnostics"]
+    assert len(messages) == 21
+    found = topics(bag)
+    assert found["/front/scan"] == ("sensor_msgs/LaserScan", 5)
+    assert found["/fgdwa_node/events"] == ("std_msgs/String", 1)
+    assert topic_of_type(found, "nav_msgs/Odometry", None, "bag") == "/odometry/filtered"
+
+    scans = [decode_laser_scan(m.data) for m in messages if m.topic == "/front/scan"]
+    odoms = [decode_odometry(m.data) for m in messages if m.topic == "/odometry/filtered"]
+    cmds = [decode_twist(m.data) for m in messages if m.topic == "/cmd_vel"]
+    for k, (scan, odom, cmd) in enumerate(zip(scans, odoms, cmds)):
+        assert scan.stamp == pytest.approx(100.25 + k, abs=1e-9)
+        assert scan.frame_id == "front_laser"
+        assert (scan.angle_min, scan.angle_increment, scan.range_min) == pytest.approx((-2.0, 1.0, 0.1))
+        assert scan.ranges[0] == pytest.approx(1.5 + k) and np.isposinf(scan.ranges[1])
+        assert np.isnan(scan.ranges[2]) and np.isneginf(scan.ranges[3])
+        assert (odom.frame_id, odom.child_frame_id) == ("odom", "base_link")
+        assert odom.position[:2] == (0.5 * k, -0.25)
+        assert quaternion_yaw(*odom.orientation) == pytest.approx(0.3 * k)
+        assert (odom.linear[0], odom.angular[2]) == (0.75, -0.5)
+        assert cmd == pytest.approx((0.1 * k, 0.2))
+    assert messages[0].time == pytest.approx(100.25)
+    diag = decode_diagnostics(next(m.data for m in messages if m.topic == "/diagnostics"))
+    assert diag == [("fgdwa_node: cycle", "Following (Ok)", {"time": "0", "v": "0.5"})]
+    event = json.loads(decode_string(messages[-1].data))
+    assert event == {"event": "goal", "goal": [10, 0]}
+
+
+def test_scan_ranges_follow_rep_117(tmp_path):
+    scan = decode_laser_scan(next(m.data for m in read_bag(_write_bag(tmp_path, "none"))
+                                  if m.topic == "/front/scan"))
+    ranges = scan_ranges(scan)
+    # a reading, no return (+inf), invalid (NaN), too near (-inf: a hit at range_min), below range_min (invalid)
+    assert ranges[0] == pytest.approx(1.5)
+    assert np.isposinf(ranges[1]) and np.isposinf(ranges[2]) and np.isposinf(ranges[4])
+    assert ranges[3] == pytest.approx(0.1)
+
+
+def test_bad_bags_are_refused_with_the_reason(tmp_path):
+    not_bag = tmp_path / "x.bag"
+    not_bag.write_bytes(b"#ROSRECORD V1.2\nxxxx")
+    with pytest.raises(FgdwaError, match="not a ROS bag of format 2.0"):
+        list(read_bag(not_bag))
+    with pytest.raises(FgdwaError, match="no such file"):
+        list(read_bag(tmp_path / "missing.bag"))
+    whole = _write_bag(tmp_path, "none").read_bytes()
+    cut = tmp_path / "cut.bag"
+    cut.write_bytes(whole[: len(whole) // 2])
+    with pytest.raises(FgdwaError, match="truncated"):
+        list(read_bag(cut))
+    with pytest.raises(FgdwaError, match="message shorter than its type"):
+        decode_odometry(b"\x00" * 40)
+
+
+def test_replay_says_what_the_bag_lacks(tmp_path, capsys):
+    bag = _write_bag(tmp_path, "none")
+    assert main(["replay", str(bag), "--out", str(tmp_path / "replay")]) == 2
+    err = capsys.readouterr().err
+    assert "no fgdwa_node cycle diagnostics or navigator events" in err and "/fgdwa_node/events" in err
