@@ -54,19 +54,10 @@ void init_perception(py::module_& m) {
              s.angle_min = angle_min;
              s.angle_increment = angle_increment;
              s.max_range = max_range;
-             py::array array;
-             try {
-               array = py::array::ensure(ranges);
-             } catch (const py::error_already_set&) {
-             }
-             if (!array || (array.dtype().kind() != 'f' && array.dtype().kind() != 'i' && array.dtype().kind() != 'u'))
-               throw Error("ranges: expected a one-dimensional array of numbers");
-             auto values = py::array_t<double, py::array::c_style>::ensure(array);
-             if (values.ndim() != 1) throw Error("ranges: expected shape (n), got " + std::to_string(values.ndim()) +
-                                                 " dimensions");
+             const auto values = float_array(ranges, "ranges", 1, 0, /*allow_infinite=*/true);
              s.ranges.assign(values.data(), values.data() + values.size());
              for (std::size_t i = 0; i < s.ranges.size(); ++i)
-               if (std::isnan(s.ranges[i]) || s.ranges[i] < 0.0)
+               if (s.ranges[i] < 0.0)
                  throw Error("ranges[" + std::to_string(i) + "] = " + std::to_string(s.ranges[i]) +
                              ": must be >= 0 (+inf for no hit)");
              return s;

@@ -5,7 +5,8 @@
 
 namespace fgdwa::py_convert {
 
-py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::string& name, int ndim, long width) {
+py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::string& name, int ndim, long width,
+                                                    bool allow_infinite) {
   py::array array;
   try {
     array = py::array::ensure(obj);
@@ -26,8 +27,11 @@ py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::s
     throw Error(name + ": expected shape " + want.str() + ", got " + got.str());
   }
   const double* data = out.data();
-  for (py::ssize_t i = 0; i < out.size(); ++i)
-    if (!std::isfinite(data[i])) throw Error(name + ": element " + std::to_string(i) + " is not finite");
+  for (py::ssize_t i = 0; i < out.size(); ++i) {
+    if (allow_infinite && std::isnan(data[i])) throw Error(name + "[" + std::to_string(i) + "] is NaN");
+    if (!allow_infinite && !std::isfinite(data[i]))
+      throw Error(name + ": element " + std::to_string(i) + " is not finite");
+  }
   return out;
 }
 

@@ -18,8 +18,10 @@ namespace fgdwa::py_convert {
 namespace py = pybind11;
 
 // A float64 C-contiguous copy of `obj` with the given trailing width
-// (`width` 0: one-dimensional), or an error naming `name`.
-py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::string& name, int ndim, long width);
+// (`width` 0: one-dimensional), or an error naming `name`. Every element must be
+// finite; with `allow_infinite`, +-inf pass (a lidar's no-hit) and only NaN is refused.
+py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::string& name, int ndim, long width,
+                                                    bool allow_infinite = false);
 
 Vec2 to_vec2(py::handle obj, const std::string& name);
 Pose2 to_pose(py::handle obj, const std::string& name);
