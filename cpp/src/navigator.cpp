@@ -306,30 +306,29 @@ void Navigator::locate_hits(const Scan& scan) {
   // Only the tracker and the learnt map ask whether a hit is on the known map.
   const bool prior = known_field_ && known_field_->has_obstacles() && (scan_map_ || params_.track_moving);
   hits_.assign(n, Vec2::Zero());
-  on_prior_.assign(n, 0);
+  // A hit on the known map's obstacles is neither segmented (they are static)
+  // nor marked in the scan map (it teaches nothing new, and hits that noise
+  // carries past a thin obstacle would thicken it).
+  segment_mask_.assign(n, 1);
   for (std::size_t i = 0; i < n; ++i) {
     const double r = scan.ranges[i];
     if (!std::isfinite(r)) continue;
     const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
     hits_[i] = Vec2(scan.pose.x + r * std::cos(a), scan.pose.y + r * std::sin(a));
-    on_prior_[i] = prior && known_field_->distance(hits_[i]) <= tolerance;
+    if (prior && known_field_->distance(hits_[i]) <= tolerance) segment_mask_[i] = 0;
   }
+  keep_hit_ = segment_mask_;
 }
 
 void Navigator::track(const Scan& scan, double time) {
   const std::size_t n = scan.ranges.size();
-  // A hit on the known map's obstacles is not segmented: they are static.
-  // Every other hit is, the scan map's settled cells included: a slow mover
-  // that is not yet labelled marks its cells scan after scan, and masking
-  // them would cut it up and hide it from the tracker. An object cut by the
-  // field of view's edge is tracked too; its cluster is occluded, so its
-  // centre weighs less in the moving test.
+  // Every hit off the known map's obstacles is segmented (locate_hits), the
+  // scan map's settled cells included: a slow mover that is not yet labelled
+  // marks its cells scan after scan, and masking them would cut it up and
+  // hide it from the tracker. An object cut by the field of view's edge is
+  // tracked too; its cluster is occluded, so its centre weighs less in the
+  // moving test.
   const double tolerance = hit_tolerance();
-  segment_mask_.assign(n, 1);
-  keep_hit_.assign(n, 1);
-  const std::vector<Vec2>& hits = hits_;
-  for (std::size_t i = 0; i < n; ++i)
-    if (on_prior_[i]) segment_mask_[i] = 0;
   std::vector<Cluster> clusters = segment_scan(scan, params_.segment, &segment_mask_);
   tracker_.update(clusters, time, &scan);
   record_.tracked = tracker_.moving_discs();
@@ -342,7 +341,7 @@ void Navigator::track(const Scan& scan, double time) {
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(scan.ranges[i])) continue;
     for (const Disc& d : record_.tracked)
-      if ((hits[i] - d.center).norm() <= d.radius + tolerance) keep_hit_[i] = 0;
+      if ((hits_[i] - d.center).norm() <= d.radius + tolerance) keep_hit_[i] = 0;
   }
 }
 
@@ -462,11 +461,6 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
 
   tic = Clock::now();
   if (scan_map_ && scan) {
-    if (!tracking) keep_hit_.assign(scan->ranges.size(), 1);
-    // Hits on the known map's obstacles teach nothing new; marked, those that
-    // noise carries past a thin obstacle would thicken it.
-    for (std::size_t i = 0; i < on_prior_.size(); ++i)
-      if (on_prior_[i]) keep_hit_[i] = 0;
     record_.new_cells = scan_map_->integrate(*scan, &keep_hit_);
     if (record_.new_cells) {
       if (known_map_) {

@@ -213,7 +213,8 @@ class Navigator {
   // Segments and tracks the scan's hits the map does not hold as static; sets
   // tracked_ and, per beam, whether its hit goes into the map (keep_hit_).
   void track(const Scan& scan, double time);
-  // Each beam's hit point, and whether it lies on the known map's obstacles (hits_, on_prior_).
+  // Each beam's hit point (hits_); a hit on the known map's obstacles is
+  // neither segmented nor kept for the scan map (segment_mask_, keep_hit_).
   void locate_hits(const Scan& scan);
   // m: a hit this near an obstacle of the map is on it (half a cell and 3 std of range noise).
   double hit_tolerance() const;
@@ -228,8 +229,8 @@ class Navigator {
   Controller controller_;
   Tracker tracker_;
   std::vector<Disc> discs_now_;                // the known discs and the tracked movers, this cycle
-  std::vector<std::uint8_t> segment_mask_, keep_hit_, on_prior_;  // per beam
-  std::vector<Vec2> hits_;                                        // per beam, this cycle's (0 where no hit)
+  std::vector<std::uint8_t> segment_mask_, keep_hit_;  // per beam
+  std::vector<Vec2> hits_;                             // per beam, this cycle's (0 where no hit)
   std::unique_ptr<ScanMap> scan_map_;                    // MapMode::Scan
   std::unique_ptr<OccupancyGrid> known_map_;             // MapMode::Known
   std::unique_ptr<OccupancyGrid> planning_map_;          // MapMode::Known: the known map and the obstacles learnt
