@@ -140,18 +140,7 @@ def _planner_overrides(reader: ValueReader, config: Mapping[str, Any], base: Pla
     for name in PLANNER_KEYS:
         if config.get(name) is None:
             continue
-        value = config[name]
-        kind = type(getattr(base, name))
-        if name == "critics":
-            value = reader.critics(value, name)
-        elif kind is float:
-            value = reader.number(value, name)
-        elif kind is int:
-            value = reader.integer(value, name, low=1)
-        elif kind is bool:
-            value = reader.boolean(value, name)
-        else:
-            value = reader.string(value, name)
+        value = reader.planner_field(name, config[name], name)
         reader.core(name, config[name], lambda: params_with(base, **{name: value}))
         overrides[name] = value
     return overrides

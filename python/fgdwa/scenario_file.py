@@ -27,7 +27,6 @@ from fgdwa._core import (
     Footprint,
     LidarParams,
     OccupancyGrid,
-    PlannerParams,
     RobotLimits,
     planner_preset,
     preset_names,
@@ -45,8 +44,6 @@ _TOP_KEYS = ("name", "description", "map", "terrain", "unknown_obstacles", "movi
              "robot", "planner", "global_planner", "lidar", "detect_window", "variability", "max_steps",
              "goal_tolerance")
 _LIMIT_FIELDS = ("v_min", "v_max", "omega_max", "acc_v", "acc_omega", "brake_v", "brake_omega")
-# The type of each planner override, from the bound PlannerParams' defaults.
-_OVERRIDE_TYPES = {name: type(getattr(PlannerParams(), name)) for name in PARAM_FIELDS}
 
 
 def shipped_scenarios() -> list:
@@ -269,17 +266,7 @@ class _Reader(MapReader, FeasibilityChecks):
         overrides = {}
         for name, item in raw.items():
             fkey = join_key(okey, name)
-            kind = _OVERRIDE_TYPES.get(name)
-            if kind is float:
-                item = self.number(item, fkey)
-            elif kind is int:
-                item = self.integer(item, fkey, low=1)
-            elif kind is str:
-                item = self.string(item, fkey)
-            elif kind is bool:
-                item = self.boolean(item, fkey)
-            elif kind is list:
-                item = self.critics(item, fkey)
+            item = self.planner_field(name, item, fkey)
             self.core(fkey, raw[name], lambda: params_with(base, **{name: item}))
             overrides[name] = item
         self.core(okey, raw, lambda: params_with(base, **overrides))

@@ -12,7 +12,7 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 import yaml
 
-from fgdwa._core import FgdwaError, critic_names
+from fgdwa._core import FgdwaError, PlannerParams, critic_names
 
 
 class _StrictLoader(yaml.SafeLoader):
@@ -187,3 +187,20 @@ class ValueReader:
                     self.fail(join_key(join_key(ckey, "params"), str(pname)), pvalue, "expected a number or a word")
             critics.append({"name": name, "weight": weight, "params": dict(params)})
         return critics
+
+    def planner_field(self, name: str, value: Any, key: str) -> Any:
+        """``value`` for PlannerParams' field ``name``, read by the type of its default
+        (a number, a count of at least 1, a flag, a word or a critic list); errors name ``key``."""
+        kind = type(getattr(_PLANNER_DEFAULTS, name))
+        if kind is list:
+            return self.critics(value, key)
+        if kind is float:
+            return self.number(value, key)
+        if kind is int:
+            return self.integer(value, key, low=1)
+        if kind is bool:
+            return self.boolean(value, key)
+        return self.string(value, key)
+
+
+_PLANNER_DEFAULTS = PlannerParams()
