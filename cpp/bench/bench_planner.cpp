@@ -4,6 +4,8 @@
 // at 0.6 m/s from 32 seeded starts in free space. LocalPlanner::plan is timed
 // with each clearance source: the distance field (FieldClearance) and the exact
 // FCL world (CollisionWorld); and with the field for the Jackal's rectangle.
+// Also what building the field of that map costs, updating it for one cell
+// (with the field's bytes per cell), and building the FCL world.
 //
 //   build/cmake/cpp/bench/bench_planner   (median of 10 repetitions, in microseconds;
 //   the target for the field variant with the circle is 100 us; the Jackal's
@@ -92,6 +94,25 @@ void BM_BuildDistanceField(benchmark::State& bench) {
   for (auto _ : bench) benchmark::DoNotOptimize(DistanceField(scene.grid).has_obstacles());
 }
 
+// What a noisy hit costs the field: a random cell flips and flips back (two
+// updates per iteration), as a scan map's cells come and go.
+void BM_UpdateDistanceField(benchmark::State& bench) {
+  const Scene scene;
+  OccupancyGrid grid = scene.grid;
+  DistanceField field(grid);
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<std::size_t> cell(0, grid.cells().size() - 1);
+  for (auto _ : bench) {
+    const std::size_t i = cell(rng);
+    for (int k = 0; k < 2; ++k) {
+      grid.set(i, grid.cells()[i] == 0);
+      benchmark::DoNotOptimize(field.update(grid, {i}));
+    }
+  }
+  bench.counters["cells"] = static_cast<double>(grid.cells().size());
+  bench.counters["bytes_per_cell"] = field.bytes_per_cell();
+}
+
 void BM_BuildCollisionWorld(benchmark::State& bench) {
   const Scene scene;
   for (auto _ : bench) benchmark::DoNotOptimize(CollisionWorld(scene.grid).boxes().size());
@@ -103,6 +124,7 @@ BENCHMARK(BM_PlanFieldClearance)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)
 BENCHMARK(BM_PlanFieldClearanceJackal)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanCollisionWorld)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_BuildDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
+BENCHMARK(BM_UpdateDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_BuildCollisionWorld)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 
 }  // namespace

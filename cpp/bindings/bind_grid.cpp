@@ -126,7 +126,8 @@ void init_grid(py::module_& m) {
       .def_property_readonly("cells",
                              [](const DistanceField& f) {
                                py::array_t<double> out({f.grid().rows(), f.grid().cols()});
-                               std::copy(f.cell_distances().begin(), f.cell_distances().end(), out.mutable_data());
+                               const std::vector<double> distances = f.cell_distances();
+                               std::copy(distances.begin(), distances.end(), out.mutable_data());
                                return out;
                              })
       .def(

@@ -102,79 +102,22 @@ void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vec
 }
 }  // namespace
 
-DistanceField::DistanceField(const OccupancyGrid& grid) : DistanceField(grid, nullptr) {}
-
-DistanceField::DistanceField(const OccupancyGrid& grid, const DistanceField& previous)
-    : DistanceField(grid, &previous) {}
-
-DistanceField::DistanceField(const OccupancyGrid& grid, const DistanceField* previous) : grid_(grid) {
-  if (previous) {
-    const OccupancyGrid& before = previous->grid();
-    if (before.rows() != grid.rows() || before.cols() != grid.cols() || before.resolution() != grid.resolution() ||
-        before.origin() != grid.origin())
-      throw Error("DistanceField: the previous field's grid has another layout (rows, cols, resolution or origin)");
-  }
+DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   const int rows = grid.rows(), cols = grid.cols();
   const std::size_t n_cells = static_cast<std::size_t>(rows) * cols;
-  std::vector<double> squared(n_cells);
-  for (std::size_t i = 0; i < n_cells; ++i) squared[i] = grid.cells()[i] != 0 ? 0.0 : kFar;
-  has_obstacles_ = grid.occupied_count() > 0;
-
-  // Columns first (nearest obstacle row per column), then rows, keeping the
-  // argmin of each pass so every cell knows its nearest occupied cell.
+  constexpr std::size_t kMaxCells = std::numeric_limits<std::int32_t>::max();
+  if (n_cells > kMaxCells)
+    throw Error(describe("DistanceField grid", std::to_string(rows) + " x " + std::to_string(cols) + " cells",
+                         "at most " + std::to_string(kMaxCells) + " cells"));
+  occupied_ = grid.occupied_count();
   const int n = std::max(rows, cols);
-  std::vector<double> f(n), d(n), z(n + 1);
-  std::vector<int> v(n), arg(n);
-  std::vector<int> nearest_row(n_cells), nearest_col(n_cells);
-  for (int c = 0; c < cols; ++c) {
-    for (int r = 0; r < rows; ++r) f[r] = squared[grid.index(r, c)];
-    distance_transform_1d(f.data(), rows, d.data(), arg.data(), v, z);
-    for (int r = 0; r < rows; ++r) {
-      squared[grid.index(r, c)] = d[r];
-      nearest_row[grid.index(r, c)] = arg[r];
-    }
-  }
-  for (int r = 0; r < rows; ++r) {
-    double* row = &squared[grid.index(r, 0)];
-    std::copy(row, row + cols, f.begin());
-    distance_transform_1d(f.data(), cols, row, arg.data(), v, z);
-    for (int c = 0; c < cols; ++c) nearest_col[grid.index(r, c)] = arg[c];
-  }
-  distances_.resize(n_cells);
-  std::vector<long>& nearest = nearest_;
-  nearest.resize(n_cells);
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c) {
-      const std::size_t i = grid.index(r, c);
-      const bool far = squared[i] >= 0.5 * kFar;
-      distances_[i] = far ? kInf : std::sqrt(squared[i]) * grid.resolution();
-      const int col = nearest_col[i];
-      nearest[i] = far ? -1 : static_cast<long>(grid.index(nearest_row[grid.index(r, col)], col));
-    }
-
-  // A cell's candidates and piece bounds depend only on the nearest obstacles
-  // of the cells within two of it: where none of those changed, the previous
-  // field's are taken as they are.
-  std::vector<std::uint8_t> reuse(n_cells, 0);
-  if (previous) {
-    std::vector<std::uint8_t> changed(n_cells), near_change(n_cells, 0);
-    for (std::size_t i = 0; i < n_cells; ++i) changed[i] = nearest[i] != previous->nearest_[i];
-    for (int r = 0; r < rows; ++r)  // within two columns
-      for (int c = 0; c < cols; ++c)
-        for (int cc = std::max(0, c - 2); cc <= std::min(cols - 1, c + 2); ++cc)
-          near_change[grid.index(r, c)] |= changed[grid.index(r, cc)];
-    for (int r = 0; r < rows; ++r)  // then within two rows
-      for (int c = 0; c < cols; ++c) {
-        bool any = false;
-        for (int rr = std::max(0, r - 2); rr <= std::min(rows - 1, r + 2); ++rr) any = any || near_change[grid.index(rr, c)];
-        reuse[grid.index(r, c)] = !any;
-      }
-  }
-
-  // The obstacle square nearest to a point is the one nearest to a cell centre
-  // close to it: each cell keeps the distinct nearest obstacles of the cells
-  // within two of it, usually one to three.
-  candidate_start_.assign(n_cells + 1, 0);
+  f_.resize(n);
+  d_.resize(n);
+  z_.resize(n + 1);
+  v_.resize(n);
+  arg_.resize(n);
+  column_nearest_.assign(n_cells, -1);
+  nearest_.assign(n_cells, -1);
   // Pieces of about kBoundPiece metres, at least 2 x 2 per cell, and no more
   // than kMaxBoundPieces in all.
   constexpr double kBoundPiece = 0.025;
@@ -187,104 +130,274 @@ DistanceField::DistanceField(const OccupancyGrid& grid, const DistanceField* pre
   bound_cols_ = static_cast<double>(sub * cols);
   bound_rows_ = static_cast<double>(sub * rows);
   bound_stride_ = static_cast<std::size_t>(sub * cols);
+  candidates_.assign(n_cells, CellCandidates{kInf, kInf, kInf, kInf, 0, 0});
+  piece_scratch_.resize(static_cast<std::size_t>(sub) * sub);
+  gap_x_.resize(sub);
+  gap_y_.resize(sub);
   piece_lower_bound_.assign(n_cells * sub * sub, std::numeric_limits<float>::infinity());
-  std::vector<double> nearest_piece(static_cast<std::size_t>(sub * sub)), gap_x(sub), gap_y(sub);  // squared
-  std::vector<long> found;  // a cell's distinct candidates, as grid indices
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c) {
-      const std::size_t first = candidates_.size();
-      if (reuse[grid.index(r, c)]) {
-        const std::size_t i = grid.index(r, c);
-        candidates_.insert(candidates_.end(),
-                           previous->candidates_.begin() + static_cast<std::ptrdiff_t>(previous->candidate_start_[i]),
-                           previous->candidates_.begin() + static_cast<std::ptrdiff_t>(previous->candidate_start_[i + 1]));
-        for (int pr = 0; pr < sub; ++pr) {
-          const std::size_t at = static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c);
-          std::copy_n(previous->piece_lower_bound_.begin() + static_cast<std::ptrdiff_t>(at), sub,
-                      piece_lower_bound_.begin() + static_cast<std::ptrdiff_t>(at));
-        }
-        candidate_start_[i + 1] = candidates_.size();
-        continue;
-      }
-      found.clear();
-      for (int dr = -2; dr <= 2; ++dr)
-        for (int dc = -2; dc <= 2; ++dc) {
-          const int rr = std::clamp(r + dr, 0, rows - 1), cc = std::clamp(c + dc, 0, cols - 1);
-          const long o = nearest[grid.index(rr, cc)];
-          if (o >= 0 && std::find(found.begin(), found.end(), o) == found.end()) found.push_back(o);
-        }
-      for (const long o : found)
-        candidates_.push_back(grid.cell_center(static_cast<int>(o / cols), static_cast<int>(o % cols)));
-      // Drop the candidates that cannot be nearest anywhere in the cell: their
-      // square is farther from the whole cell than some other candidate's square
-      // is from the cell's farthest corner. Clustered maps leave a dozen
-      // candidates per cell before this and one to three after, and distance()
-      // spends its time in this loop.
-      const Vec2 centre = grid.cell_center(r, c);
-      const double res = grid.resolution();
-      // A square's largest distance from the cell is from the far corner: the
-      // centre-to-centre distance.
-      double reach = kInf;
-      for (std::size_t k = first; k < candidates_.size(); ++k) reach = std::min(reach, (centre - candidates_[k]).norm());
-      const auto beyond = [&](const Vec2& o) {
-        const double dx = std::max(std::abs(centre.x() - o.x()) - res, 0.0);
-        const double dy = std::max(std::abs(centre.y() - o.y()) - res, 0.0);
-        const double limit = reach + 1e-9 * res;
-        return dx * dx + dy * dy > limit * limit;
-      };
-      candidates_.erase(std::remove_if(candidates_.begin() + static_cast<std::ptrdiff_t>(first), candidates_.end(), beyond),
-                        candidates_.end());
-      // The candidates hold the nearest obstacle of every point of the cell, so
-      // the nearest of them to a piece of the cell bounds that piece: an
-      // obstacle square of half-size res / 2 against a piece of half-size
-      // piece / 2. Its gaps along x and y depend on the piece's column and row
-      // alone, so they are squared once per candidate.
-      const double piece = res / sub, reach_apart = 0.5 * (res + piece);
-      std::fill(nearest_piece.begin(), nearest_piece.end(), kInf);
-      for (std::size_t k = first; k < candidates_.size(); ++k) {
-        for (int j = 0; j < sub; ++j) {
-          const double offset = (j + 0.5) * piece - 0.5 * res;
-          const double gx = std::max(std::abs(centre.x() + offset - candidates_[k].x()) - reach_apart, 0.0);
-          const double gy = std::max(std::abs(centre.y() + offset - candidates_[k].y()) - reach_apart, 0.0);
-          gap_x[j] = gx * gx;
-          gap_y[j] = gy * gy;
-        }
-        for (int pr = 0; pr < sub; ++pr)
-          for (int pc = 0; pc < sub; ++pc)
-            nearest_piece[pr * sub + pc] = std::min(nearest_piece[pr * sub + pc], gap_x[pc] + gap_y[pr]);
-      }
-      for (int pr = 0; pr < sub; ++pr)
-        for (int pc = 0; pc < sub; ++pc) {
-          // Lowered by 2^-22 before rounding to single precision (relative
-          // error at most 2^-24), so the stored value stays below the bound.
-          const double bound = std::sqrt(nearest_piece[pr * sub + pc]) * (1.0 - 0x1p-22);
-          piece_lower_bound_[static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c + pc)] =
-              static_cast<float>(bound);
-        }
-      candidate_start_[grid.index(r, c) + 1] = candidates_.size();
+  for (int c = 0; c < cols; ++c) column_pass(c, 0, rows - 1);
+  for (int r = 0; r < rows; ++r) row_pass(r, nullptr);
+  if (occupied_ > 0)
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c) look_up_data(r, c);
+  row_first_.resize(rows);
+  row_last_.resize(rows);
+  col_first_.resize(cols);
+  col_last_.resize(cols);
+  for (int r = 0; r < rows; ++r) row_outermost(r);
+  for (int c = 0; c < cols; ++c) col_outermost(c);
+}
+
+DistanceField::DistanceField(const OccupancyGrid& grid, const DistanceField& previous) : DistanceField(previous) {
+  update(grid);
+}
+
+void DistanceField::column_pass(int col, int from, int to) {
+  const auto occupied = [&](int r) { return grid_.occupied(r, col); };
+  int lower = -1;  // the nearest occupied row at or below r
+  for (int r = from; r >= 0; --r)
+    if (occupied(r)) {
+      lower = r;
+      break;
+    }
+  for (int r = from; r <= to; ++r) {
+    if (occupied(r)) lower = r;
+    column_nearest_[grid_.index(r, col)] = lower;
+  }
+  int upper = -1;  // the nearest occupied row at or above r
+  for (int r = to; r < grid_.rows(); ++r)
+    if (occupied(r)) {
+      upper = r;
+      break;
+    }
+  for (int r = to; r >= from; --r) {
+    if (occupied(r)) upper = r;
+    std::int32_t& best = column_nearest_[grid_.index(r, col)];
+    if (upper >= 0 && (best < 0 || upper - r < r - best)) best = upper;  // a tie keeps the lower row
+  }
+}
+
+void DistanceField::row_pass(int row, std::vector<std::size_t>* changed) {
+  const int cols = grid_.cols();
+  const std::int32_t* nearest_row = &column_nearest_[grid_.index(row, 0)];
+  for (int c = 0; c < cols; ++c) {
+    const double dr = row - nearest_row[c];
+    f_[c] = nearest_row[c] < 0 ? kFar : dr * dr;
+  }
+  distance_transform_1d(f_.data(), cols, d_.data(), arg_.data(), v_, z_);
+  for (int c = 0; c < cols; ++c) {
+    const std::int32_t nearest =
+        d_[c] >= 0.5 * kFar ? -1 : static_cast<std::int32_t>(grid_.index(nearest_row[arg_[c]], arg_[c]));
+    std::int32_t& now = nearest_[grid_.index(row, c)];
+    if (nearest == now) continue;
+    now = nearest;
+    if (changed) changed->push_back(grid_.index(row, c));
+  }
+}
+
+void DistanceField::look_up_data(int r, int c) {
+  const int rows = grid_.rows(), cols = grid_.cols();
+  const double res = grid_.resolution();
+  // The obstacle square nearest to a point is the one nearest to a cell centre
+  // close to it: each cell keeps the distinct nearest obstacles of the cells
+  // within two of it.
+  std::int32_t found[25];
+  int count = 0;
+  for (int dr = -2; dr <= 2; ++dr)
+    for (int dc = -2; dc <= 2; ++dc) {
+      const int rr = std::clamp(r + dr, 0, rows - 1), cc = std::clamp(c + dc, 0, cols - 1);
+      const std::int32_t o = nearest_[grid_.index(rr, cc)];
+      if (o >= 0 && std::find(found, found + count, o) == found + count) found[count++] = o;
+    }
+  Vec2 centres[25];
+  for (int k = 0; k < count; ++k) centres[k] = grid_.cell_center(found[k] / cols, found[k] % cols);
+  // Drop the candidates that cannot be nearest anywhere in the cell: their
+  // square is farther from the whole cell than some other candidate's square
+  // is from the cell's farthest corner. Clustered maps leave a dozen
+  // candidates per cell before this and one to three after, and distance()
+  // spends its time in this loop.
+  const Vec2 centre = grid_.cell_center(r, c);
+  double reach = kInf;
+  for (int k = 0; k < count; ++k) reach = std::min(reach, (centre - centres[k]).norm());
+  const auto beyond = [&](const Vec2& o) {
+    const double dx = std::max(std::abs(centre.x() - o.x()) - res, 0.0);
+    const double dy = std::max(std::abs(centre.y() - o.y()) - res, 0.0);
+    const double limit = reach + 1e-9 * res;
+    return dx * dx + dy * dy > limit * limit;
+  };
+  count = static_cast<int>(std::remove_if(centres, centres + count, beyond) - centres);
+
+  // The candidates hold the nearest obstacle of every point of the cell, so
+  // the nearest of them to a piece of the cell bounds that piece: an
+  // obstacle square of half-size res / 2 against a piece of half-size
+  // piece / 2. Its gaps along x and y depend on the piece's column and row
+  // alone, so they are squared once per candidate.
+  const int sub = subdivisions_;
+  const double piece = res / sub, reach_apart = 0.5 * (res + piece);
+  std::vector<double>& nearest_piece = piece_scratch_;  // squared, as are the gaps
+  std::vector<double>& gap_x = gap_x_;
+  std::vector<double>& gap_y = gap_y_;
+  std::fill(nearest_piece.begin(), nearest_piece.end(), kInf);
+  for (int k = 0; k < count; ++k) {
+    for (int j = 0; j < sub; ++j) {
+      const double offset = (j + 0.5) * piece - 0.5 * res;
+      const double gx = std::max(std::abs(centre.x() + offset - centres[k].x()) - reach_apart, 0.0);
+      const double gy = std::max(std::abs(centre.y() + offset - centres[k].y()) - reach_apart, 0.0);
+      gap_x[j] = gx * gx;
+      gap_y[j] = gy * gy;
+    }
+    for (int pr = 0; pr < sub; ++pr)
+      for (int pc = 0; pc < sub; ++pc)
+        nearest_piece[pr * sub + pc] = std::min(nearest_piece[pr * sub + pc], gap_x[pc] + gap_y[pr]);
+  }
+  for (int pr = 0; pr < sub; ++pr)
+    for (int pc = 0; pc < sub; ++pc) {
+      // Lowered by 2^-22 before rounding to single precision (relative
+      // error at most 2^-24), so the stored value stays below the bound.
+      const double bound = std::sqrt(nearest_piece[pr * sub + pc]) * (1.0 - 0x1p-22);
+      piece_lower_bound_[static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c + pc)] =
+          static_cast<float>(bound);
     }
 
-  cell_candidates_.resize(n_cells);
-  for (std::size_t i = 0; i < n_cells; ++i) {
-    const std::size_t begin = candidate_start_[i], end = candidate_start_[i + 1];
-    const Vec2 a = end > begin ? candidates_[begin] : Vec2(kInf, kInf);
-    const Vec2 b = end > begin + 1 ? candidates_[begin + 1] : a;
-    cell_candidates_[i] = CellCandidates{a.x(), a.y(), b.x(), b.y(), static_cast<std::uint32_t>(std::min(begin + 2, end)),
-                                         static_cast<std::uint32_t>(end)};
+  CellCandidates& cell = candidates_[grid_.index(r, c)];
+  more_garbage_ += cell.more_count;
+  const Vec2 first = count > 0 ? centres[0] : Vec2(kInf, kInf);
+  const Vec2 second = count > 1 ? centres[1] : first;
+  cell = CellCandidates{first.x(), first.y(), second.x(), second.y(), 0, 0};
+  if (count > 2) {
+    cell.more = static_cast<std::uint32_t>(more_.size());
+    cell.more_count = static_cast<std::uint32_t>(count - 2);
+    more_.insert(more_.end(), centres + 2, centres + count);
   }
+}
 
-  row_first_.assign(rows, -1);
-  row_last_.assign(rows, -1);
-  col_first_.assign(cols, -1);
-  col_last_.assign(cols, -1);
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c)
-      if (grid.occupied(r, c)) {
-        if (row_first_[r] < 0) row_first_[r] = c;
-        row_last_[r] = c;
-        if (col_first_[c] < 0) col_first_[c] = r;
-        col_last_[c] = r;
+void DistanceField::compact_more() {
+  std::vector<Vec2> kept;
+  kept.reserve(more_.size() - more_garbage_);
+  for (CellCandidates& cell : candidates_) {
+    if (!cell.more_count) continue;
+    const std::uint32_t at = static_cast<std::uint32_t>(kept.size());
+    kept.insert(kept.end(), more_.begin() + cell.more, more_.begin() + cell.more + cell.more_count);
+    cell.more = at;
+  }
+  more_ = std::move(kept);
+  more_garbage_ = 0;
+}
+
+std::size_t DistanceField::update(const OccupancyGrid& grid) {
+  std::vector<std::size_t> differ;
+  const std::vector<std::uint8_t>& now = grid_.cells();
+  if (grid.cells().size() == now.size())
+    for (std::size_t i = 0; i < now.size(); ++i)
+      if ((grid.cells()[i] != 0) != (now[i] != 0)) differ.push_back(i);
+  return update(grid, differ);
+}
+
+std::size_t DistanceField::update(const OccupancyGrid& grid, const std::vector<std::size_t>& cells) {
+  if (grid.rows() != grid_.rows() || grid.cols() != grid_.cols() || grid.resolution() != grid_.resolution() ||
+      grid.origin() != grid_.origin())
+    throw Error("DistanceField::update: the grid has another layout (rows, cols, resolution or origin) than the field's");
+  const int rows = grid_.rows(), cols = grid_.cols();
+  for (const std::size_t i : cells)  // all checked before anything changes
+    if (i >= grid.cells().size())
+      throw Error(describe("DistanceField::update cell", i, "must be below rows x cols = " + std::to_string(grid.cells().size())));
+  std::vector<std::size_t> flipped;
+  for (const std::size_t i : cells) {
+    const bool occupied = grid.cells()[i] != 0;
+    if (occupied == (grid_.cells()[i] != 0)) continue;
+    grid_.set(i, occupied);
+    occupied_ = occupied ? occupied_ + 1 : occupied_ - 1;
+    flipped.push_back(i);
+  }
+  if (flipped.empty()) return 0;
+
+  // A cell's column run changes between the occupied cells above and below it.
+  std::vector<int> dirty_rows;
+  for (const std::size_t i : flipped) {
+    const int r0 = static_cast<int>(i / cols), c0 = static_cast<int>(i % cols);
+    int below = r0 - 1, above = r0 + 1;
+    while (below >= 0 && !grid_.occupied(below, c0)) --below;
+    while (above < rows && !grid_.occupied(above, c0)) ++above;
+    column_pass(c0, below + 1, above - 1);
+    for (int r = below + 1; r < above; ++r) dirty_rows.push_back(r);
+  }
+  std::sort(dirty_rows.begin(), dirty_rows.end());
+  dirty_rows.erase(std::unique(dirty_rows.begin(), dirty_rows.end()), dirty_rows.end());
+  std::vector<std::size_t> changed;
+  for (const int r : dirty_rows) row_pass(r, &changed);
+
+  // Look-up data read the nearest obstacles of the cells within two.
+  std::vector<std::size_t> stale;
+  stale_mark_.resize(grid_.cells().size());
+  for (const std::size_t i : changed) {
+    const int r = static_cast<int>(i / cols), c = static_cast<int>(i % cols);
+    for (int rr = std::max(0, r - 2); rr <= std::min(rows - 1, r + 2); ++rr)
+      for (int cc = std::max(0, c - 2); cc <= std::min(cols - 1, c + 2); ++cc) {
+        const std::size_t j = grid_.index(rr, cc);
+        if (stale_mark_[j]) continue;
+        stale_mark_[j] = 1;
+        stale.push_back(j);
       }
+  }
+  for (const std::size_t i : stale) {
+    look_up_data(static_cast<int>(i / cols), static_cast<int>(i % cols));
+    stale_mark_[i] = 0;
+  }
+  if (more_garbage_ > 4096 && 2 * more_garbage_ > more_.size()) compact_more();
+
+  std::vector<int> flipped_rows, flipped_cols;
+  for (const std::size_t i : flipped) {
+    flipped_rows.push_back(static_cast<int>(i / cols));
+    flipped_cols.push_back(static_cast<int>(i % cols));
+  }
+  for (std::vector<int>* lines : {&flipped_rows, &flipped_cols}) {
+    std::sort(lines->begin(), lines->end());
+    lines->erase(std::unique(lines->begin(), lines->end()), lines->end());
+  }
+  for (const int r : flipped_rows) row_outermost(r);
+  for (const int c : flipped_cols) col_outermost(c);
+  return flipped.size();
+}
+
+void DistanceField::row_outermost(int row) {
+  row_first_[row] = row_last_[row] = -1;
+  for (int c = 0; c < grid_.cols(); ++c)
+    if (grid_.occupied(row, c)) {
+      if (row_first_[row] < 0) row_first_[row] = c;
+      row_last_[row] = c;
+    }
+}
+
+void DistanceField::col_outermost(int col) {
+  col_first_[col] = col_last_[col] = -1;
+  for (int r = 0; r < grid_.rows(); ++r)
+    if (grid_.occupied(r, col)) {
+      if (col_first_[col] < 0) col_first_[col] = r;
+      col_last_[col] = r;
+    }
+}
+
+double DistanceField::cell_distance(int row, int col) const {
+  const std::int32_t o = nearest_[grid_.index(row, col)];
+  if (o < 0) return kInf;
+  const double dr = row - o / grid_.cols(), dc = col - o % grid_.cols();
+  return std::sqrt(dr * dr + dc * dc) * grid_.resolution();
+}
+
+std::vector<double> DistanceField::cell_distances() const {
+  std::vector<double> out(nearest_.size());
+  for (int r = 0; r < grid_.rows(); ++r)
+    for (int c = 0; c < grid_.cols(); ++c) out[grid_.index(r, c)] = cell_distance(r, c);
+  return out;
+}
+
+double DistanceField::bytes_per_cell() const {
+  const auto bytes = [](const auto& v) { return static_cast<double>(v.capacity() * sizeof(v[0])); };
+  const double total = sizeof(*this) + bytes(grid_.cells()) + bytes(column_nearest_) + bytes(nearest_) + bytes(candidates_) +
+                       bytes(more_) + bytes(piece_lower_bound_) + bytes(row_first_) + bytes(row_last_) + bytes(col_first_) +
+                       bytes(col_last_) + bytes(f_) + bytes(d_) + bytes(z_) + bytes(v_) + bytes(arg_) +
+                       bytes(piece_scratch_) + bytes(gap_x_) + bytes(gap_y_) + bytes(stale_mark_);
+  return total / static_cast<double>(nearest_.size());
 }
 
 namespace {
@@ -313,7 +426,7 @@ double segment_square_distance2(const Vec2& a, const Vec2& d, double h) {
 }  // namespace
 
 double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
-  if (!has_obstacles_) return kInf;
+  if (!has_obstacles()) return kInf;
   const double ax = (a.x() - grid_.origin().x()) * inverse_resolution_, ay = (a.y() - grid_.origin().y()) * inverse_resolution_;
   const double bx = (b.x() - grid_.origin().x()) * inverse_resolution_, by = (b.y() - grid_.origin().y()) * inverse_resolution_;
   const double x0 = std::min(ax, bx), x1 = std::max(ax, bx), y0 = std::min(ay, by), y1 = std::max(ay, by);
@@ -330,16 +443,16 @@ double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
   };
   for (int r = static_cast<int>(y0); r <= static_cast<int>(y1); ++r)
     for (int c = static_cast<int>(x0); c <= static_cast<int>(x1); ++c) {
-      const CellCandidates& near = cell_candidates_[grid_.index(r, c)];
+      const CellCandidates& near = candidates_[grid_.index(r, c)];
       consider(Vec2(near.x0, near.y0));
       if (near.x1 != near.x0 || near.y1 != near.y0) consider(Vec2(near.x1, near.y1));
-      for (std::size_t k = near.more_begin; k < near.more_end; ++k) consider(candidates_[k]);
+      for (std::uint32_t k = 0; k < near.more_count; ++k) consider(more_[near.more + k]);
     }
   return std::sqrt(best);
 }
 
 double DistanceField::distance(const Vec2& p) const {
-  if (!has_obstacles_) return kInf;
+  if (!has_obstacles()) return kInf;
   const double half = 0.5 * grid_.resolution();
   const int rows = grid_.rows(), cols = grid_.cols();
   const double gx = (p.x() - grid_.origin().x()) * inverse_resolution_;
@@ -364,9 +477,9 @@ double DistanceField::distance(const Vec2& p) const {
   } else {
     // Inside the grid (its far edges included): the candidates of p's cell.
     const std::size_t cell = grid_.index(std::min(static_cast<int>(gy), rows - 1), std::min(static_cast<int>(gx), cols - 1));
-    const CellCandidates& near = cell_candidates_[cell];
+    const CellCandidates& near = candidates_[cell];
     best = std::min(square_distance(Vec2(near.x0, near.y0)), square_distance(Vec2(near.x1, near.y1)));
-    for (std::size_t k = near.more_begin; k < near.more_end; ++k) best = std::min(best, square_distance(candidates_[k]));
+    for (std::uint32_t k = 0; k < near.more_count; ++k) best = std::min(best, square_distance(more_[near.more + k]));
   }
   return std::sqrt(best);
 }

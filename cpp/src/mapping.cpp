@@ -43,10 +43,9 @@ ScanMap::ScanMap(int rows, int cols, double resolution, Vec2 origin, const Occup
     : params_(params),
       grid_(rows, cols, resolution, origin,
             std::vector<std::uint8_t>(static_cast<std::size_t>(std::max(rows, 0)) * std::max(cols, 0), 0)),
-      cells_(grid_.cells()),
-      states_(cells_.size(), static_cast<std::uint8_t>(CellState::Unknown)),
-      log_odds_(cells_.size(), 0.0f),
-      tallies_(cells_.size()) {
+      states_(grid_.cells().size(), static_cast<std::uint8_t>(CellState::Unknown)),
+      log_odds_(grid_.cells().size(), 0.0f),
+      tallies_(grid_.cells().size()) {
   params_.validate();
 }
 
@@ -72,12 +71,14 @@ int ScanMap::update(std::size_t cell, double delta) {
   state = static_cast<std::uint8_t>(after);
   if (after == before) return 0;
   if (after == CellState::Occupied) {
-    cells_[cell] = 1;
+    grid_.set(cell, true);
+    changed_.push_back(cell);
     ++occupied_;
     return 1;
   }
   if (before == CellState::Occupied) {
-    cells_[cell] = 0;
+    grid_.set(cell, false);
+    changed_.push_back(cell);
     --occupied_;
     return -1;
   }
@@ -132,6 +133,7 @@ void ScanMap::next_scan() {
     scan_id_ = 1;
   }
   touched_.clear();
+  changed_.clear();
 }
 
 ScanMap::Tally& ScanMap::tally(std::size_t cell) {
@@ -194,19 +196,19 @@ std::size_t ScanMap::mark(const std::vector<Vec2>& points) {
 }
 
 std::size_t ScanMap::commit(std::size_t changed) {
-  if (changed) {
-    stale_ = true;
-    grid_ = OccupancyGrid(grid_.rows(), grid_.cols(), grid_.resolution(), grid_.origin(), cells_);
-  }
+  pending_.insert(pending_.end(), changed_.begin(), changed_.end());
   return changed;
 }
 
 std::shared_ptr<const DistanceField> ScanMap::field() {
-  if (stale_) {
-    // After the first build, only the neighbourhoods of the changed cells are recomputed.
-    field_ = field_ ? std::make_shared<const DistanceField>(grid_, *field_) : std::make_shared<const DistanceField>(grid_);
-    stale_ = false;
+  if (!field_) {
+    field_ = std::make_shared<DistanceField>(grid_);
+  } else if (!pending_.empty()) {
+    // A field that someone else still holds stays as they saw it: the update goes to a copy.
+    if (field_.use_count() > 1) field_ = std::make_shared<DistanceField>(*field_);
+    field_->update(grid_, pending_);
   }
+  pending_.clear();
   return field_;
 }
 

@@ -463,14 +463,18 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   if (scan_map_ && scan) {
     record_.new_cells = scan_map_->integrate(*scan, &keep_hit_);
     if (record_.new_cells) {
+      // The planner lets go of the map while it changes, so that a field no one
+      // else holds is updated in place.
+      controller_.set_map(nullptr);
       if (known_map_) {
         // The known map with what the scans found that it lacks.
-        std::vector<std::uint8_t> cells = known_map_->cells();
-        const std::vector<std::uint8_t>& seen = scan_map_->grid().cells();
-        for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = cells[i] || seen[i];
-        *planning_map_ = OccupancyGrid(known_map_->rows(), known_map_->cols(),
-                                       known_map_->resolution(), known_map_->origin(), std::move(cells));
-        controller_.set_map(std::make_shared<const DistanceField>(*planning_map_, *controller_.map()));
+        const std::vector<std::size_t>& changed = scan_map_->changed_cells();
+        for (const std::size_t i : changed)
+          planning_map_->set(i, known_map_->cells()[i] != 0 || scan_map_->grid().cells()[i] != 0);
+        if (!planning_field_ || planning_field_.use_count() > 1)
+          planning_field_ = std::make_shared<DistanceField>(planning_field_ ? *planning_field_ : *known_field_);
+        planning_field_->update(*planning_map_, changed);
+        controller_.set_map(planning_field_);
       } else {
         controller_.set_map(scan_map_->field());
       }

@@ -152,5 +152,48 @@ TEST(DistanceField, UpdatedFromAnEarlierFieldEqualsAFreshOne) {
   expect_error_naming([&] { DistanceField(other, *previous); }, "layout");
 }
 
+// One field updated in place, round after round, by the listed cells alone
+// (duplicates and unchanged cells among them), through an empty map and back,
+// answers as a fresh build every round.
+TEST(DistanceField, UpdatedInPlaceByTheChangedCellsEqualsAFreshOne) {
+  std::mt19937 rng(22);
+  const int rows = 40, cols = 60;
+  const Vec2 origin(0.5, -1.0);
+  OccupancyGrid grid = test::random_rectangles(rng, rows, cols, 0.1, origin, 0.15);
+  DistanceField field(grid);
+  std::uniform_int_distribution<std::size_t> cell(0, grid.cells().size() - 1);
+  std::uniform_real_distribution<double> x(-0.5, 7.5), y(-2.0, 4.0);
+  std::bernoulli_distribution coin(0.5);
+  for (int round = 0; round < 60; ++round) {
+    std::vector<std::size_t> listed;
+    if (round == 20 || round == 21) {  // everything cleared, then one cell back
+      for (std::size_t i = 0; i < grid.cells().size(); ++i) listed.push_back(i);
+      for (const std::size_t i : listed) grid.set(i, round == 21 && i == listed.size() / 2);
+    } else {
+      const int n = round % 5 == 0 ? 300 : 1 + round % 7;
+      for (int k = 0; k < n; ++k) {
+        const std::size_t i = cell(rng);
+        grid.set(i, coin(rng));
+        listed.push_back(i);
+        if (k % 3 == 0) listed.push_back(i);    // listed twice
+        if (k % 4 == 0) listed.push_back(cell(rng));  // listed, perhaps unchanged
+      }
+    }
+    field.update(grid, listed);
+    const DistanceField fresh(grid);
+    ASSERT_EQ(field.grid().cells(), grid.cells()) << "round " << round;
+    ASSERT_EQ(field.has_obstacles(), fresh.has_obstacles()) << "round " << round;
+    ASSERT_EQ(field.cell_distances(), fresh.cell_distances()) << "round " << round;
+    for (int i = 0; i < 3000; ++i) {
+      const Vec2 p(x(rng), y(rng)), q = p + Vec2(0.07, -0.05);
+      ASSERT_EQ(field.distance(p), fresh.distance(p)) << "round " << round << " at " << p.transpose();
+      ASSERT_EQ(field.lower_bound(p), fresh.lower_bound(p)) << "round " << round << " at " << p.transpose();
+      const double a = field.segment_distance(p, q), b = fresh.segment_distance(p, q);
+      ASSERT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << "round " << round << " at " << p.transpose();
+    }
+  }
+  expect_error_naming([&] { field.update(grid, {grid.cells().size()}); }, "cell");
+}
+
 }  // namespace
 }  // namespace fgdwa

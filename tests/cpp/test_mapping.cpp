@@ -56,8 +56,14 @@ TEST(ScanMap, FieldIsRebuiltAfterNewCells) {
   EXPECT_TRUE(field->has_obstacles());
   EXPECT_NEAR(field->distance(Vec2(3.5, 2.25)), 1.0, 1e-12);
   EXPECT_EQ(map.mark({Vec2(4.9, 4.9)}), 1u);
-  EXPECT_NE(map.field(), field);
+  EXPECT_EQ(map.changed_cells(), std::vector<std::size_t>{map.grid().index(9, 9)});
+  const auto after = map.field();
+  EXPECT_NE(after, field);
   EXPECT_EQ(map.occupied_count(), 2u);
+  EXPECT_EQ(after->distance(Vec2(4.75, 4.75)), 0.0);
+  // The field handed out before stays as it was.
+  EXPECT_EQ(field->grid().occupied_count(), 1u);
+  EXPECT_NEAR(field->distance(Vec2(4.75, 4.75)), std::hypot(2.25, 2.25), 1e-12);
 }
 
 TEST(ScanMap, BadLayoutIsAnError) {
@@ -77,9 +83,9 @@ Scan scan_of(const OccupancyGrid& truth, const Pose2& pose, double noise_std, st
 
 void expect_field_equals_fresh_build(const ScanMap& map, const DistanceField& field) {
   const DistanceField fresh(map.grid());
-  ASSERT_EQ(field.cell_distances().size(), fresh.cell_distances().size());
-  for (std::size_t i = 0; i < fresh.cell_distances().size(); ++i)
-    ASSERT_EQ(field.cell_distances()[i], fresh.cell_distances()[i]) << "cell " << i;
+  const std::vector<double> got = field.cell_distances(), expected = fresh.cell_distances();
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) ASSERT_EQ(got[i], expected[i]) << "cell " << i;
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> x(-0.5, 4.5), y(-0.5, 2.5);
   for (int i = 0; i < 500; ++i) {
@@ -119,6 +125,29 @@ TEST(ScanMap, ARemovedObstacleClearsAndTheFieldFollows) {
   EXPECT_NE(after, field);
   expect_field_equals_fresh_build(map, *after);
   EXPECT_GT(after->distance(Vec2(2.0, 1.0)), 1.5);
+}
+
+// Noisy scans from a robot driving past a wall, the field taken and let go
+// every cycle as a navigator does (so it is updated in place), or kept a
+// cycle (so the update goes to a copy): each cycle's field is a fresh build's.
+TEST(ScanMap, TheFieldFollowsNoisyScansExactlyInPlaceOrInACopy) {
+  const OccupancyGrid truth = wall_grid();
+  OccupancyParams params;
+  params.range_std = 0.03;
+  ScanMap map(truth, params);
+  std::shared_ptr<const DistanceField> kept;
+  const DistanceField* last = nullptr;
+  int in_place = 0;
+  for (int k = 0; k < 40; ++k) {
+    map.integrate(scan_of(truth, Pose2{0.5 + 0.04 * k, 0.3 + 0.02 * k, 0.1}, 0.03, 300 + k));
+    const auto field = map.field();
+    in_place += field.get() == last;
+    expect_field_equals_fresh_build(map, *field);
+    last = field.get();
+    kept = k % 5 == 0 ? field : nullptr;
+  }
+  EXPECT_GT(in_place, 0);
+  EXPECT_GT(map.occupied_count(), 5u);
 }
 
 TEST(ScanMap, RangeNoiseDoesNotNarrowTheFreeSide) {

@@ -32,6 +32,8 @@ class OccupancyGrid {
   bool occupied_at(const Vec2& p) const;
   std::size_t index(int row, int col) const { return static_cast<std::size_t>(row) * cols_ + col; }
   std::size_t occupied_count() const;
+  // Marks cell `index` (a grid index) occupied or free.
+  void set(std::size_t index, bool occupied) { cells_.at(index) = occupied ? 1 : 0; }
 
  private:
   int rows_;
@@ -67,7 +69,8 @@ class TerrainGrid {
   std::vector<std::uint8_t> grades_;
 };
 
-// Exact Euclidean distance transform of a grid (Felzenszwalb and Huttenlocher).
+// Exact Euclidean distance transform of a grid (Felzenszwalb and Huttenlocher),
+// kept up to date as cells change.
 //
 // `cell_distance(row, col)` is measured between cell centres: from this cell's
 // centre to the nearest occupied cell's centre, in metres (0 on occupied cells,
@@ -77,19 +80,35 @@ class TerrainGrid {
 // square (0 inside one), measured exactly to the nearest obstacles of the cells
 // around `p`; outside the grid, exactly to the outermost obstacle of each row or
 // column facing `p`.
+//
+// A build is linear in the cells. update() recomputes the column runs around
+// each changed cell, the rows those runs cross, and the look-up data of the
+// cells whose nearest obstacle changed and of their neighbours: its cost
+// follows the change, and it gives the same field as a fresh build.
+// bytes_per_cell() says what a field holds.
+//
+// Threads: const methods may run concurrently on one field; update() may not
+// run while anything else uses the field.
 class DistanceField {
  public:
   explicit DistanceField(const OccupancyGrid& grid);
-  // The same field as DistanceField(grid), built faster from the field of an
-  // earlier grid with the same layout (a map that gained or lost a few
-  // obstacles): where the nearest obstacles around a cell did not change, its
-  // look-up data is copied. Throws fgdwa::Error if the layouts differ.
+  // The field of `grid`, from the field of an earlier grid with the same
+  // layout: a copy of `previous` brought to `grid` by update(). Throws
+  // fgdwa::Error if the layouts differ.
   DistanceField(const OccupancyGrid& grid, const DistanceField& previous);
 
+  // Brings the field to `grid` (the same layout, else fgdwa::Error); the
+  // result equals DistanceField(grid). Returns how many cells changed
+  // occupancy. The first form compares every cell; the second only `cells`
+  // (grid indices; every other cell must be unchanged), so its cost follows
+  // the change alone.
+  std::size_t update(const OccupancyGrid& grid);
+  std::size_t update(const OccupancyGrid& grid, const std::vector<std::size_t>& cells);
+
   const OccupancyGrid& grid() const { return grid_; }
-  double cell_distance(int row, int col) const { return distances_[grid_.index(row, col)]; }
-  const std::vector<double>& cell_distances() const { return distances_; }
-  bool has_obstacles() const { return has_obstacles_; }
+  double cell_distance(int row, int col) const;
+  std::vector<double> cell_distances() const;
+  bool has_obstacles() const { return occupied_ > 0; }
   double distance(const Vec2& p) const;
   // The distance from the segment ab to the nearest obstacle square, exactly,
   // from the candidates of the cells its bounding box covers (meant for
@@ -102,7 +121,7 @@ class DistanceField {
   double lower_bound(const Vec2& p) const { return lower_bounds()(p.x(), p.y()); }
 
   // The table behind lower_bound(), copied out so that a loop over many points
-  // keeps it in registers. Valid while the field lives.
+  // keeps it in registers. Valid while the field lives and is not updated.
   struct LowerBounds {
     const float* pieces;  // null: no obstacles
     double origin_x, origin_y, inverse_piece;
@@ -116,7 +135,7 @@ class DistanceField {
     }
   };
   LowerBounds lower_bounds() const {
-    return LowerBounds{has_obstacles_ ? piece_lower_bound_.data() : nullptr,
+    return LowerBounds{has_obstacles() ? piece_lower_bound_.data() : nullptr,
                        grid_.origin().x(),
                        grid_.origin().y(),
                        inverse_piece_,
@@ -125,25 +144,36 @@ class DistanceField {
                        static_cast<std::ptrdiff_t>(bound_stride_)};
   }
   int bound_subdivisions() const { return subdivisions_; }
+  // Bytes held per cell, everything counted (the field's copy of the grid too).
+  double bytes_per_cell() const;
 
  private:
-  DistanceField(const OccupancyGrid& grid, const DistanceField* previous);
+  // The nearest occupied row of column `col` for rows [from, to].
+  void column_pass(int col, int from, int to);
+  // The nearest obstacles of row `row` from the column runs; appends the cells whose nearest changed.
+  void row_pass(int row, std::vector<std::size_t>* changed);
+  // Candidates and piece bounds of one cell, from the nearest obstacles around it.
+  void look_up_data(int row, int col);
+  void row_outermost(int row);
+  void col_outermost(int col);
+  void compact_more();
 
   OccupancyGrid grid_;
-  std::vector<double> distances_;
-  std::vector<long> nearest_;  // grid index of each cell's nearest obstacle cell, -1 for none
-  // Per cell, the centres of the obstacles that can be nearest to a point in it
-  // (compressed rows: cell i owns candidates_[candidate_start_[i] .. candidate_start_[i + 1])).
-  std::vector<std::size_t> candidate_start_;
-  std::vector<Vec2> candidates_;
-  // The same, laid out for distance(): per cell its first two candidates (the
-  // first twice if it has one) beside the range of any others, so most
-  // look-ups read one record and run no loop.
+  std::size_t occupied_ = 0;
+  // Per cell: the row of the nearest occupied cell in its column (-1: none),
+  // and its nearest occupied cell (a grid index, -1: none).
+  std::vector<std::int32_t> column_nearest_;
+  std::vector<std::int32_t> nearest_;
+  // Per cell, the centres of the obstacles that can be nearest to a point in
+  // it (usually one to three): the first two inline (the first twice if it has
+  // one; +inf if none), any others more_[more, more + more_count).
   struct CellCandidates {
     double x0, y0, x1, y1;
-    std::uint32_t more_begin, more_end;
+    std::uint32_t more, more_count;
   };
-  std::vector<CellCandidates> cell_candidates_;
+  std::vector<CellCandidates> candidates_;
+  std::vector<Vec2> more_;
+  std::size_t more_garbage_ = 0;
   // Outermost occupied column of each row and row of each column, -1 for none.
   std::vector<int> row_first_, row_last_, col_first_, col_last_;
   // Per piece of a cell (subdivisions_ x subdivisions_ per cell): its distance
@@ -154,7 +184,11 @@ class DistanceField {
   double inverse_piece_ = 1.0;           // pieces per metre
   double bound_cols_ = 0.0, bound_rows_ = 0.0;  // pieces across and down the grid
   std::size_t bound_stride_ = 0;
-  bool has_obstacles_ = false;
+  // Scratch of the passes.
+  std::vector<double> f_, d_, z_;
+  std::vector<int> v_, arg_;
+  std::vector<double> piece_scratch_, gap_x_, gap_y_;
+  std::vector<std::uint8_t> stale_mark_;  // per cell, while update() runs; all 0 between calls
 };
 
 }  // namespace fgdwa

@@ -68,8 +68,13 @@ class ScanMap {
   // The map so far: occupied cells are obstacles, unknown and free cells are not.
   const OccupancyGrid& grid() const { return grid_; }
   // Its distance field, brought up to date on the first call after changes
-  // (incrementally: equal to a fresh build of grid()).
+  // (incrementally: equal to a fresh build of grid()). A field returned
+  // earlier never changes: while anyone still holds it, the update goes to a
+  // copy; otherwise it is made in place.
   std::shared_ptr<const DistanceField> field();
+  // The cells (grid indices) that turned occupied or stopped being occupied
+  // in the last integrate() or mark().
+  const std::vector<std::size_t>& changed_cells() const { return changed_; }
   std::size_t occupied_count() const { return occupied_; }
   // Cells observed at least once.
   std::size_t known_count() const { return known_; }
@@ -94,7 +99,6 @@ class ScanMap {
 
   OccupancyParams params_;
   OccupancyGrid grid_;
-  std::vector<std::uint8_t> cells_;
   std::vector<std::uint8_t> states_;
   std::vector<float> log_odds_;
   // Per cell, the last scan that reached it and that scan's beams ending and
@@ -107,8 +111,9 @@ class ScanMap {
   std::uint32_t scan_id_ = 0;
   std::vector<std::size_t> touched_;
   std::size_t occupied_ = 0, known_ = 0;
-  bool stale_ = true;
-  std::shared_ptr<const DistanceField> field_;
+  std::vector<std::size_t> changed_;  // cells that flipped in the last integrate() or mark()
+  std::vector<std::size_t> pending_;  // cells that flipped since field() last ran
+  std::shared_ptr<DistanceField> field_;
 };
 
 // Whether the path ahead of `position` passes closer than `clearance` to an

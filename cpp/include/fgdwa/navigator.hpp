@@ -235,6 +235,7 @@ class Navigator {
   std::unique_ptr<OccupancyGrid> known_map_;             // MapMode::Known
   std::unique_ptr<OccupancyGrid> planning_map_;          // MapMode::Known: the known map and the obstacles learnt
   std::shared_ptr<const DistanceField> known_field_;
+  std::shared_ptr<DistanceField> planning_field_;         // MapMode::Known: planning_map_'s field, once it differs
   std::vector<std::uint8_t> closed_;                     // cells given up after stalls
   std::vector<double> radii_;                            // the inflation ladder, m
   bool has_goal_ = false;
