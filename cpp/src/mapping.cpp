@@ -196,19 +196,29 @@ std::size_t ScanMap::mark(const std::vector<Vec2>& points) {
 }
 
 std::size_t ScanMap::commit(std::size_t changed) {
-  pending_.insert(pending_.end(), changed_.begin(), changed_.end());
+  // Kept only for a field to update, and no longer than the map: past that a
+  // whole comparison costs no more.
+  if (field_ && !pending_all_) {
+    pending_.insert(pending_.end(), changed_.begin(), changed_.end());
+    if (pending_.size() > grid_.cells().size()) {
+      pending_.clear();
+      pending_all_ = true;
+    }
+  }
   return changed;
 }
 
 std::shared_ptr<const DistanceField> ScanMap::field() {
   if (!field_) {
     field_ = std::make_shared<DistanceField>(grid_);
-  } else if (!pending_.empty()) {
+  } else if (!pending_.empty() || pending_all_) {
     // A field that someone else still holds stays as they saw it: the update goes to a copy.
     if (field_.use_count() > 1) field_ = std::make_shared<DistanceField>(*field_);
-    field_->update(grid_, pending_);
+    if (pending_all_) field_->update(grid_);
+    else field_->update(grid_, pending_);
   }
   pending_.clear();
+  pending_all_ = false;
   return field_;
 }
 

@@ -150,6 +150,24 @@ TEST(ScanMap, TheFieldFollowsNoisyScansExactlyInPlaceOrInACopy) {
   EXPECT_GT(map.occupied_count(), 5u);
 }
 
+// A field taken once and then not asked for while the map changes more times
+// than it has cells (the scan map stops listing them then) still comes out exact.
+TEST(ScanMap, AFieldLeftUntakenThroughManyChangesStillComesOutExact) {
+  std::vector<std::uint8_t> wall(3 * 8, 0);
+  for (int r = 0; r < 3; ++r) wall[r * 8 + 6] = 1;
+  const OccupancyGrid with(3, 8, 0.1, Vec2(0.0, 0.0), wall);
+  const OccupancyGrid without(3, 8, 0.1, Vec2(0.0, 0.0), std::vector<std::uint8_t>(3 * 8, 0));
+  ScanMap map(with);
+  EXPECT_FALSE(map.field()->has_obstacles());
+  std::size_t flips = 0;
+  for (int k = 0; k < 400 && flips <= 2 * with.cells().size(); ++k) {
+    map.integrate(scan_of((k / 12) % 2 ? without : with, Pose2{0.15, 0.15, 0.0}, 0.0, 500 + k));
+    flips += map.changed_cells().size();
+  }
+  EXPECT_GT(flips, 2 * with.cells().size());
+  expect_field_equals_fresh_build(map, *map.field());
+}
+
 TEST(ScanMap, RangeNoiseDoesNotNarrowTheFreeSide) {
   // 3 cm noise: half the readings fall short of the wall's face, in the free
   // cell before it. That cell must stay free, or every gap narrows by a cell.

@@ -113,6 +113,7 @@ class ScanMap {
   std::size_t occupied_ = 0, known_ = 0;
   std::vector<std::size_t> changed_;  // cells that flipped in the last integrate() or mark()
   std::vector<std::size_t> pending_;  // cells that flipped since field() last ran
+  bool pending_all_ = false;          // too many to list: compare every cell
   std::shared_ptr<DistanceField> field_;
 };
 
