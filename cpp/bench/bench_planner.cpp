@@ -3,7 +3,8 @@
 // in seeded random rectangles, a circle footprint of 0.25 m, the robot cruising
 // at 0.6 m/s from 32 seeded starts in free space. LocalPlanner::plan is timed
 // with each clearance source: the distance field (FieldClearance) and the exact
-// FCL world (CollisionWorld); and with the field for the Jackal's rectangle.
+// FCL world (CollisionWorld); and with the field for the Jackal's rectangle,
+// also from starts near the map's edge whose rollouts leave the grid.
 // Also what building the field of that map costs, updating it for one cell
 // (with the field's bytes per cell), and building the FCL world.
 //
@@ -40,12 +41,22 @@ struct Scene {
   std::vector<Vec2> goals;
   LocalPlanner planner;  // 21 x 21, dt 0.15, 3 s
 
-  explicit Scene(const Footprint& footprint = Footprint::circle(0.25))
+  // at_edge: starts 0.4-0.8 m inside the map's border with goals 2 m beyond
+  // it, so that the rollouts leave the grid (outside counts as free).
+  explicit Scene(const Footprint& footprint = Footprint::circle(0.25), bool at_edge = false)
       : planner(RobotLimits{}, footprint, PlannerParams{}) {
-    std::uniform_real_distribution<double> where(0.5, 9.5), jitter(-0.5, 0.5);
+    std::uniform_real_distribution<double> where(0.5, 9.5), jitter(-0.5, 0.5), inside(0.4, 0.8);
+    std::uniform_int_distribution<int> side(0, 3);
     while (static_cast<int>(states.size()) < kStarts) {
-      const Vec2 start(where(rng), where(rng)), goal(where(rng), where(rng));
-      if (field.distance(start) < 0.45 || (goal - start).norm() < 3.0) continue;
+      Vec2 start(where(rng), where(rng)), goal(where(rng), where(rng));
+      if (at_edge) {
+        const int s = side(rng);
+        const double along = where(rng), in = inside(rng);
+        const Vec2 outward = s == 0 ? Vec2(-1, 0) : s == 1 ? Vec2(1, 0) : s == 2 ? Vec2(0, -1) : Vec2(0, 1);
+        start = s < 2 ? Vec2(s == 0 ? in : 10.0 - in, along) : Vec2(along, s == 2 ? in : 10.0 - in);
+        goal = start + (in + 2.0) * outward;
+      }
+      if (field.distance(start) < 0.45 || (goal - start).norm() < (at_edge ? 2.0 : 3.0)) continue;
       const double heading = std::atan2(goal.y() - start.y(), goal.x() - start.x()) + jitter(rng);
       states.push_back(RobotState{Pose2{start.x(), start.y(), heading}, Twist{0.6, 0.0}});
       goals.push_back(goal);
@@ -78,6 +89,13 @@ void BM_PlanFieldClearance(benchmark::State& bench) {
 // "jackal", the BARN robot), with the default limits.
 void BM_PlanFieldClearanceJackal(benchmark::State& bench) {
   Scene scene(robot_preset("jackal").footprint);
+  const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
+  plan_cycles(bench, scene, world);
+}
+
+// The Jackal near the map's edge, its rollouts leaving the grid.
+void BM_PlanFieldClearanceJackalAtEdge(benchmark::State& bench) {
+  Scene scene(robot_preset("jackal").footprint, true);
   const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
   plan_cycles(bench, scene, world);
 }
@@ -122,6 +140,7 @@ void BM_BuildCollisionWorld(benchmark::State& bench) {
 // robot sees cycle after cycle; 32: a spread of situations).
 BENCHMARK(BM_PlanFieldClearance)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanFieldClearanceJackal)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PlanFieldClearanceJackalAtEdge)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanCollisionWorld)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_BuildDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_UpdateDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);

@@ -463,17 +463,34 @@ double DistanceField::distance(const Vec2& p) const {
     return dx * dx + dy * dy;
   };
   double best = kInf;
+  // Lines (rows or columns) taken outward from the one nearest p, each
+  // through `candidate(line)`, until a line's gap alone (its distance from p
+  // across the lines, `across` in cells) is no nearer than the best so far:
+  // the same minimum as over every line.
+  const auto outward = [&](int lines, double across, const auto& candidate) {
+    const int nearest = std::clamp(static_cast<int>(std::floor(across)), 0, lines - 1);
+    const auto gap = [&](int line) {
+      const double g = std::max(std::abs(line + 0.5 - across) - 0.5, 0.0) * grid_.resolution();
+      return g * g;
+    };
+    // The gap is rounded unlike the candidates' distances: a line within a
+    // rounding error of the best is still taken.
+    for (int line = nearest; line >= 0 && gap(line) * (1.0 - 1e-9) < best; --line) candidate(line);
+    for (int line = nearest + 1; line < lines && gap(line) * (1.0 - 1e-9) < best; ++line) candidate(line);
+  };
   if (gx < 0.0 || gx > cols) {
     // Outside the grid every cell of a row lies on the same side of p in x, so
     // the row's outermost obstacle toward p is its nearest.
     const std::vector<int>& outermost = gx < 0.0 ? row_first_ : row_last_;
-    for (int r = 0; r < rows; ++r)
+    outward(rows, gy, [&](int r) {
       if (outermost[r] >= 0) best = std::min(best, square_distance(grid_.cell_center(r, outermost[r])));
+    });
   } else if (gy < 0.0 || gy > rows) {
     // Likewise per column in y.
     const std::vector<int>& outermost = gy < 0.0 ? col_first_ : col_last_;
-    for (int c = 0; c < cols; ++c)
+    outward(cols, gx, [&](int c) {
       if (outermost[c] >= 0) best = std::min(best, square_distance(grid_.cell_center(outermost[c], c)));
+    });
   } else {
     // Inside the grid (its far edges included): the candidates of p's cell.
     const std::size_t cell = grid_.index(std::min(static_cast<int>(gy), rows - 1), std::min(static_cast<int>(gx), cols - 1));

@@ -831,6 +831,10 @@ TEST(DistanceField, LowerBoundNeverExceedsTheDistance) {
     const bool inside = p.x() > -1.0 && p.x() < 7.0 && p.y() > 0.5 && p.y() < 6.5;
     if (inside) {
       ASSERT_GE(bound, d - piece_diagonal - 1e-6);  // no looser than its piece
+    } else {
+      // Outside, free space: at least as far as the grid's edge.
+      const double edge = std::hypot(std::max({-1.0 - p.x(), 0.0, p.x() - 7.0}), std::max({0.5 - p.y(), 0.0, p.y() - 6.5}));
+      ASSERT_GE(bound, edge * (1.0 - 1e-9));
     }
   }
 }

@@ -4,6 +4,8 @@
 // Cell (row, col) covers x in [origin.x + col res, origin.x + (col + 1) res) and
 // y in [origin.y + row res, origin.y + (row + 1) res): row 0 is the bottom row.
 // Space outside the grid is free.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -115,9 +117,11 @@ class DistanceField {
   // segments of about a cell); NaN when that box leaves the grid.
   double segment_distance(const Vec2& a, const Vec2& b) const;
   // A value never above distance(p), from one table look-up: the distance
-  // between the piece of p's cell that holds p and the nearest obstacle square
-  // (0 outside the grid). Cells are cut into bound_subdivisions() x
-  // bound_subdivisions() pieces of about 2.5 cm, at least 2 x 2.
+  // between the piece of p's cell that holds p and the nearest obstacle square.
+  // Cells are cut into bound_subdivisions() x bound_subdivisions() pieces of
+  // about 2.5 cm, at least 2 x 2. Outside the grid, from the point q of the
+  // grid's edge nearest p: every obstacle lies in the grid, beyond q as seen
+  // from p, so hypot(|p - q|, the bound at q) holds.
   double lower_bound(const Vec2& p) const { return lower_bounds()(p.x(), p.y()); }
 
   // The table behind lower_bound(), copied out so that a loop over many points
@@ -130,8 +134,19 @@ class DistanceField {
     double operator()(double x, double y) const {
       if (!pieces) return std::numeric_limits<double>::infinity();
       const double gx = (x - origin_x) * inverse_piece, gy = (y - origin_y) * inverse_piece;
-      if (!(gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows)) return 0.0;
-      return pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
+      if (gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows)
+        return pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
+      return outside(gx, gy);
+    }
+    // Not a number in, 0 out: never above the distance.
+    double outside(double gx, double gy) const {
+      if (std::isnan(gx) || std::isnan(gy)) return 0.0;
+      const double qx = std::clamp(gx, 0.0, cols), qy = std::clamp(gy, 0.0, rows);
+      const double at_q = pieces[static_cast<std::ptrdiff_t>(std::min(qy, rows - 1.0)) * stride +
+                                 static_cast<std::ptrdiff_t>(std::min(qx, cols - 1.0))];
+      const double dx = (gx - qx) / inverse_piece, dy = (gy - qy) / inverse_piece;
+      // Lowered a little below the rounding of the sum.
+      return std::sqrt(dx * dx + dy * dy + at_q * at_q) * (1.0 - 1e-12);
     }
   };
   LowerBounds lower_bounds() const {
