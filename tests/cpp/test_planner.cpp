@@ -794,9 +794,15 @@ void expect_bounds_change_nothing(const Footprint& footprint) {
                        {Disc{Vec2(5.0, 5.0), 0.3, Vec2(0.2, -0.1)}});
   const WithoutBounds exact(world);
   LocalPlanner bounded(RobotLimits{}, footprint), plain(RobotLimits{}, footprint);
+  // Starts anywhere in the map, then near its edge (within 0.6 m, some just
+  // outside), where rollouts leave the grid and the bounds come from its edge.
+  std::uniform_real_distribution<double> near_edge(-0.2, 0.6);
+  std::bernoulli_distribution coin(0.5);
   int cycles = 0;
-  while (cycles < 60) {
-    const RobotState state{Pose2{where(rng), where(rng), heading(rng)}, Twist{speed(rng), turn(rng)}};
+  while (cycles < 100) {
+    Vec2 start(where(rng), where(rng));
+    if (cycles >= 60) start[coin(rng) ? 0 : 1] = coin(rng) ? near_edge(rng) : 10.0 - near_edge(rng);
+    const RobotState state{Pose2{start.x(), start.y(), heading(rng)}, Twist{speed(rng), turn(rng)}};
     if (world.clearance(footprint, state.pose, 0.0) < 0.05) continue;
     const Vec2 goal(where(rng), where(rng));
     const PlanResult& a = bounded.plan(state, goal, world);
