@@ -200,7 +200,8 @@ void init_tracking(py::module_& m) {
       .def_property_readonly("time", &Tracker::time, "s, of the last update (NaN before the first).")
       .def("moving_discs", &Tracker::moving_discs,
            "Moving tracks (confirmed or coasting) as Discs with their window velocity, radius grown by "
-           "uncertainty_sigmas position std devs.")
+           "uncertainty_sigmas position std devs and growing by uncertainty_sigmas std devs of the filter's speed "
+           "per second ahead.")
       .def(
           "explains",
           [](const Tracker& t, py::handle point, double margin) { return t.explains(to_vec2(point, "point"), margin); },

@@ -258,7 +258,7 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   context.footprint = &footprint_;
   score_and_choose(context);
 
-  const int evasion = result_.best_index < 0 ? latest_moving_contact() : -1;
+  const int evasion = result_.best_index < 0 ? best_evasion(world) : -1;
   if (evasion >= 0) {
     result_.best_index = evasion;
     result_.status = Status::Evading;
@@ -298,6 +298,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const ClearanceSource& fixed = world.static_part();
   const double clearance_now = fixed.clearance(footprint_, state.pose, 0.0);
   const double margin = contact_margin(clearance_now, params_.safety_margin);
+  margin_ = margin;
   const double start_clearance = clearance_now - margin;
   const double obstacle_travel = fixed.obstacle_speed() * params_.dt;
   const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
@@ -418,17 +419,64 @@ double LocalPlanner::first_moving_contact(const Pose2& start, const Twist& cmd, 
   return contact;
 }
 
-int LocalPlanner::latest_moving_contact() const {
+namespace {
+
+// The command a robot reaches from `from` heading for `to` within one period dt.
+double ramp(double from, double to, double rise, double fall, double dt) {
+  if (to > from) return std::min(to, from + rise * dt);
+  return std::max(to, from - fall * dt);
+}
+
+}  // namespace
+
+LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world) const {
+  const Twist& first = result_.samples[i];
+  const Trajectory& poses = rollouts_[i];
+  Escape best{result_.moving_contact[i], -std::numeric_limits<double>::infinity()};
+  // A contact in the first period cannot be helped by what follows it.
+  if (!(result_.moving_contact[i] > params_.dt) || poses.empty()) return best;
+  const ClearanceSource& fixed = world.static_part();
+  const double half_step_base = 0.5 * params_.dt * world.obstacle_speed();
+  const int n_targets = kEscapeTargets;
+  for (int a = 0; a < n_targets; ++a) {
+    const double v_target = limits_.v_min + (limits_.v_max - limits_.v_min) * a / (n_targets - 1);
+    for (int b = 0; b < n_targets; ++b) {
+      const double omega_target = limits_.omega_max * (2.0 * b / (n_targets - 1) - 1.0);
+      Pose2 pose = poses[0];
+      Twist twist = first;
+      double contact = std::numeric_limits<double>::infinity(), room = std::numeric_limits<double>::infinity();
+      for (int k = 1; k < n_steps_; ++k) {
+        twist.v = ramp(twist.v, v_target, limits_.acc_v, limits_.braking_v(), params_.dt);
+        twist.omega = ramp(twist.omega, omega_target, limits_.acc_omega, limits_.braking_omega(), params_.dt);
+        pose = step(pose, twist, params_.dt);
+        const double t = (k + 1) * params_.dt;
+        const double half_step = half_step_base + 0.5 * params_.dt * (std::abs(twist.v) +
+                                                                      footprint_.radius() * std::abs(twist.omega));
+        const double c = world.moving_clearance(footprint_, pose, t);
+        room = std::min(room, c);
+        if (c - margin_ <= half_step || fixed.clearance(footprint_, pose, t) - margin_ <= 0.0) {
+          contact = t;
+          break;
+        }
+      }
+      if (contact > best.contact || (contact == best.contact && room > best.room)) best = Escape{contact, room};
+    }
+  }
+  return best;
+}
+
+int LocalPlanner::best_evasion(const ClearanceSource& world) const {
   int best = -1;
+  Escape best_escape{};
   for (std::size_t i = 0; i < result_.samples.size(); ++i) {
     if (result_.reasons[i] != RejectReason::Moving) continue;
-    if (best < 0) {
+    const Escape e = escape_after(i, world);
+    if (best < 0 || e.contact > best_escape.contact ||
+        (e.contact == best_escape.contact &&
+         (e.room > best_escape.room || (e.room == best_escape.room && escape_[i] > escape_[static_cast<std::size_t>(best)])))) {
       best = static_cast<int>(i);
-      continue;
+      best_escape = e;
     }
-    const std::size_t b = static_cast<std::size_t>(best);
-    const double ti = result_.moving_contact[i], tb = result_.moving_contact[b];
-    if (ti > tb || (ti == tb && escape_[i] > escape_[b])) best = static_cast<int>(i);
   }
   return best;
 }

@@ -351,11 +351,14 @@ std::vector<Disc> Tracker::moving_discs() const {
   std::vector<Disc> discs;
   for (const Track& t : tracks_) {
     if (!t.moving || t.status == TrackStatus::Tentative) continue;
-    // The prediction spreads with the velocity's own uncertainty.
+    // Predicted with the window velocity, the steadier estimate of where it is
+    // heading; spreading with the filter's speed uncertainty, which holds the
+    // model's acceleration noise: how far a turn or a reversal may take it
+    // from the line. The window fit's own std says only how well the past
+    // second's mean velocity is known, a tenth of that or less.
     discs.push_back(Disc{t.position,
                          t.radius + std::min(params_.uncertainty_sigmas * t.position_std(), params_.max_uncertainty),
-                         t.window_velocity,
-                         params_.uncertainty_sigmas * t.window_speed_std});
+                         t.window_velocity, params_.uncertainty_sigmas * t.speed_std()});
   }
   return discs;
 }

@@ -1586,7 +1586,7 @@ class Tracker:
         """
     def moving_discs(self) -> list[Disc]:
         """
-        Moving tracks (confirmed or coasting) as Discs with their window velocity, radius grown by uncertainty_sigmas position std devs.
+        Moving tracks (confirmed or coasting) as Discs with their window velocity, radius grown by uncertainty_sigmas position std devs and growing by uncertainty_sigmas std devs of the filter's speed per second ahead.
         """
     def reset(self) -> None:
         """

@@ -249,6 +249,9 @@ TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
     ASSERT_EQ(discs.size(), 1u);
     EXPECT_GT(discs[0].radius, t.radius);  // grown by the position's uncertainty
     EXPECT_EQ(discs[0].velocity, t.window_velocity);
+    // Ahead it spreads as the filter's speed uncertainty does: room for a turn or a reversal.
+    EXPECT_DOUBLE_EQ(discs[0].growth, tracker.params().uncertainty_sigmas * t.speed_std());
+    EXPECT_GT(discs[0].growth, 0.1);
     worst = std::max(worst, (discs[0].velocity - mover.velocity).norm());
     worst_filter = std::max(worst_filter, (t.velocity - mover.velocity).norm());
   }

@@ -27,7 +27,8 @@ enum class Status : std::uint8_t {
   NoAdmissibleVelocity,  // every sample was rejected: the command brakes
   GoalReached,           // within goal_tolerance of the goal: the command brakes
   Evading,               // every sample meets a moving obstacle soon, standing still too: the command is the
-                         // one that meets it latest (among those the static obstacles admit)
+                         // one (among those the static obstacles admit) after which the robot can get
+                         // away best: its best continuation meets a mover or a wall latest
 };
 
 enum class RejectReason : std::uint8_t {
@@ -209,10 +210,22 @@ class LocalPlanner {
   double first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
                               const ClearanceSource& world, double margin, int last, double& closest,
                               double& escape) const;
-  // Among the samples rejected only for a moving obstacle, the one that meets
-  // it latest (then the one farthest from it at the horizon and from the
-  // static obstacles all along); -1 if there is none.
-  int latest_moving_contact() const;
+  // How well a robot can get away after one period of a sample: the latest
+  // first contact (s, +inf: none within the rollout) with a mover or a wall
+  // over continuations that head for kEscapeTargets^2 commands spread over the
+  // whole velocity range at the acceleration limits, then the most room (m) to
+  // the movers along it.
+  struct Escape {
+    double contact = -std::numeric_limits<double>::infinity();
+    double room = -std::numeric_limits<double>::infinity();
+  };
+  static constexpr int kEscapeTargets = 5;
+  Escape escape_after(std::size_t i, const ClearanceSource& world) const;
+  // Among the samples rejected only for a moving obstacle, the one whose best
+  // continuation meets a mover or a wall latest (then keeps the most room, then
+  // is farthest from the movers at the horizon); -1 if there is none.
+  int best_evasion(const ClearanceSource& world) const;
+  double margin_ = 0.0;  // this cycle's contact margin (m)
 
   std::shared_ptr<const TerrainGrid> terrain_;
   PassingFactors passing_factors_ = kDefaultPassingFactors;

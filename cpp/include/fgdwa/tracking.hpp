@@ -78,7 +78,7 @@ struct TrackerParams {
   double moving_window = 1.0;       // s: the window speed is the slope of a line fitted to the centres this far back (occluded ones weigh less)
   double free_margin = 0.1;         // m: a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
   double max_speed = 3.0;           // m/s; an association implying more is rejected
-  double uncertainty_sigmas = 2.0;  // position std devs added to a moving disc's radius
+  double uncertainty_sigmas = 2.0;  // std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead
   double max_uncertainty = 0.3;     // m, the most the position's uncertainty adds to it (a coasting track's grows)
   void validate() const;
 };
@@ -93,7 +93,7 @@ struct Track {
   bool moving = false;     // confirmed, fast enough with confidence, and displacing free space (with hysteresis)
   // m/s, slope of a line through the centres (occluded ones weighing less) of the last
   // moving_window (as of the last association): steadier than `velocity`,
-  // half a window late through turns. The moving label and moving_discs use it.
+  // half a window late through turns. The moving label and moving_discs' predicted velocity use it.
   Vec2 window_velocity = Vec2::Zero();
   double window_speed_std = 0.0;  // m/s, its std (infinite until three centres)
   int hits = 0;            // associations, the first cluster included
@@ -130,7 +130,10 @@ class Tracker {
 
   // Moving tracks, confirmed or lost (still coasting), as discs at the last
   // update's time with their window velocity; the radius grown by
-  // uncertainty_sigmas position std devs.
+  // uncertainty_sigmas position std devs (at most max_uncertainty) and, per
+  // second ahead, by uncertainty_sigmas std devs of the filter's speed (Disc::growth):
+  // the spread that the model's acceleration noise (accel_std) gives a mover
+  // that may turn or reverse.
   std::vector<Disc> moving_discs() const;
   // Whether `point` lies within `margin` (m) of the grown disc of a confirmed
   // moving track, e.g. a hit the static map should not take.
