@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "step_sweep.hpp"
 #include "validation.hpp"
@@ -399,10 +400,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
 double LocalPlanner::first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
                                           const ClearanceSource& world, double margin, int last,
                                           double& closest, double& escape) const {
-  // A contact between two poses leaves one of them within half the relative
-  // motion of the step: the robot's drive and turn and the obstacle's travel.
-  const double half_step = 0.5 * params_.dt *
-                           (std::abs(cmd.v) + footprint_.radius() * std::abs(cmd.omega) + world.obstacle_speed());
+  const double half_step = half_step_motion(cmd, world.obstacle_speed());
   double contact = std::numeric_limits<double>::infinity();
   closest = world.moving_clearance(footprint_, start, 0.0);
   escape = closest;
@@ -429,6 +427,10 @@ double ramp(double from, double to, double rise, double fall, double dt) {
 
 }  // namespace
 
+double LocalPlanner::half_step_motion(const Twist& twist, double obstacle_speed) const {
+  return 0.5 * params_.dt * (std::abs(twist.v) + footprint_.radius() * std::abs(twist.omega) + obstacle_speed);
+}
+
 LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world) const {
   const Twist& first = result_.samples[i];
   const Trajectory& poses = rollouts_[i];
@@ -436,7 +438,7 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
   // A contact in the first period cannot be helped by what follows it.
   if (!(result_.moving_contact[i] > params_.dt) || poses.empty()) return best;
   const ClearanceSource& fixed = world.static_part();
-  const double half_step_base = 0.5 * params_.dt * world.obstacle_speed();
+  const double moving_margin = margin_;
   const int n_targets = kEscapeTargets;
   for (int a = 0; a < n_targets; ++a) {
     const double v_target = limits_.v_min + (limits_.v_max - limits_.v_min) * a / (n_targets - 1);
@@ -450,11 +452,10 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
         twist.omega = ramp(twist.omega, omega_target, limits_.acc_omega, limits_.braking_omega(), params_.dt);
         pose = step(pose, twist, params_.dt);
         const double t = (k + 1) * params_.dt;
-        const double half_step = half_step_base + 0.5 * params_.dt * (std::abs(twist.v) +
-                                                                      footprint_.radius() * std::abs(twist.omega));
         const double c = world.moving_clearance(footprint_, pose, t);
         room = std::min(room, c);
-        if (c - margin_ <= half_step || fixed.clearance(footprint_, pose, t) - margin_ <= 0.0) {
+        if (c - moving_margin <= half_step_motion(twist, world.obstacle_speed()) ||
+            fixed.clearance(footprint_, pose, t) - margin_ <= 0.0) {
           contact = t;
           break;
         }
@@ -467,15 +468,14 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
 
 int LocalPlanner::best_evasion(const ClearanceSource& world) const {
   int best = -1;
-  Escape best_escape{};
+  std::tuple<double, double, double> best_key;
   for (std::size_t i = 0; i < result_.samples.size(); ++i) {
     if (result_.reasons[i] != RejectReason::Moving) continue;
     const Escape e = escape_after(i, world);
-    if (best < 0 || e.contact > best_escape.contact ||
-        (e.contact == best_escape.contact &&
-         (e.room > best_escape.room || (e.room == best_escape.room && escape_[i] > escape_[static_cast<std::size_t>(best)])))) {
+    const auto key = std::make_tuple(e.contact, e.room, escape_[i]);
+    if (best < 0 || key > best_key) {  // strict: ties keep the first sample
       best = static_cast<int>(i);
-      best_escape = e;
+      best_key = key;
     }
   }
   return best;

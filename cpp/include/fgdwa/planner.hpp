@@ -210,6 +210,10 @@ class LocalPlanner {
   double first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
                               const ClearanceSource& world, double margin, int last, double& closest,
                               double& escape) const;
+  // A contact between two poses a period apart leaves one of them within half
+  // the relative motion of the step: the robot's drive and turn at `twist` and
+  // the obstacles' travel at `obstacle_speed` (m/s).
+  double half_step_motion(const Twist& twist, double obstacle_speed) const;
   // How well a robot can get away after one period of a sample: the latest
   // first contact (s, +inf: none within the rollout) with a mover or a wall
   // over continuations that head for kEscapeTargets^2 commands spread over the
