@@ -438,7 +438,7 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
   // A contact in the first period cannot be helped by what follows it.
   if (!(result_.moving_contact[i] > params_.dt) || poses.empty()) return best;
   const ClearanceSource& fixed = world.static_part();
-  const double moving_margin = margin_;
+  const double moving_margin = std::max(margin_, 0.0);  // as first_moving_contact counts it
   const int n_targets = kEscapeTargets;
   for (int a = 0; a < n_targets; ++a) {
     const double v_target = limits_.v_min + (limits_.v_max - limits_.v_min) * a / (n_targets - 1);
