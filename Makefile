@@ -40,28 +40,30 @@ $(VENV)/.tools: | $(BIN)/python
 	$(BIN)/python -m pip install -q "scikit-build-core>=0.8" "pybind11>=2.11" "cmake>=3.16" ninja
 	touch $@
 
-$(VENV)/.installed: $(SOURCES) | $(VENV)/.tools
-	$(BIN)/python -m pip install -q --no-build-isolation ".[test,irsim]"
-	touch $@
+# One build tree for everything: the wheel's build also compiles the C++
+# suites, the benchmarks and the ROS node there, so the core is compiled once
+# and test-cpp and bench only build what changed since.
+BUILD_SETTINGS := -C build-dir=$(BUILD) -C cmake.define.BUILD_TESTING=ON \
+	-C cmake.define.FGDWA_BUILD_BENCHMARKS=ON -C cmake.define.FGDWA_BUILD_ROS=AUTO \
+	-C cmake.define.FGDWA_TEST_PYTHON=$(abspath $(BIN))/python
 
-$(BUILD)/build.ninja: CMakeLists.txt | $(VENV)/.tools
-	$(BIN)/cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \
-	  -DFGDWA_BUILD_BENCHMARKS=ON -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja \
-	  -DFGDWA_TEST_PYTHON=$(abspath $(BIN))/python
+$(VENV)/.installed: $(SOURCES) | $(VENV)/.tools
+	$(BIN)/python -m pip install -q --no-build-isolation $(BUILD_SETTINGS) ".[test,irsim]"
+	touch $@
 
 demo: setup
 	$(BIN)/fgdwa run demo --planner fgdwa --out $(OUT)/demo --gif $(OUT)/demo/demo.gif
 
 test: setup test-cpp test-python
 
-test-cpp: system-packages $(BUILD)/build.ninja
+test-cpp: setup
 	$(BIN)/cmake --build $(BUILD) -j $(JOBS)
 	$(BIN)/ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
 test-python: setup
 	$(BIN)/python -m pytest -q tests/python
 
-bench: system-packages $(BUILD)/build.ninja
+bench: setup
 	$(BIN)/cmake --build $(BUILD) -j $(JOBS) --target bench_planner bench_global bench_fgdwa bench_navigator
 	$(BUILD)/cpp/bench/bench_planner
 	$(BUILD)/cpp/bench/bench_global
