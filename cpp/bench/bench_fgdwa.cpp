@@ -58,7 +58,7 @@
 //                     other critics: admissibility, normalisation, choosing,
 //                     key-node tracking, set_weight, the controller's glue.
 // Cross-check: BM_Similarity replays the similarity critic directly (prepare,
-// then score on each recorded admissible rollout) outside the planner.
+// then score_all on the recorded admissible rollouts, as plan() does) outside the planner.
 //
 //   build/cmake/cpp/bench/bench_fgdwa      (about 25 s; the target for BM_Cycle is a median <= 0.5 ms)
 //
@@ -335,12 +335,15 @@ void BM_Rollouts(benchmark::State& bench) {
 
 void score_with(benchmark::State& bench, std::vector<std::unique_ptr<Critic>>& critics) {
   Scene& s = scene();
+  std::vector<double> scores;
   over_positions(bench, [&](std::size_t i) {
     const Position& pos = s.positions[i];
     double sum = 0.0;
+    scores.resize(pos.admissible.size());
     for (auto& critic : critics) {
       critic->prepare(pos.context);
-      for (const Rollout& r : pos.admissible) sum += critic->score(r);
+      critic->score_all(pos.admissible, scores.data());
+      for (double score : scores) sum += score;
     }
     benchmark::DoNotOptimize(sum);
   });

@@ -37,9 +37,38 @@ void SimilarityCritic::prepare(const CriticContext& context) {
                                                              : std::max(context.state.twist.v, params_.v_ref_min);
   reference_samples(*context.path, context.state.pose.position(), v_ref, context.dt, context.n_steps,
                     params_.sampling, reference_);
+  origin_ = context.state.pose.position();
+  reference_x_.resize(reference_.size());
+  reference_y_.resize(reference_.size());
+  for (std::size_t j = 0; j < reference_.size(); ++j) {
+    reference_x_[j] = static_cast<float>(reference_[j].x() - origin_.x());
+    reference_y_[j] = static_cast<float>(reference_[j].y() - origin_.y());
+  }
+}
+
+void SimilarityCritic::score_f32(const Rollout* rollouts, std::size_t count, double* out) const {
+  const std::size_t n = rollouts[0].poses->size();
+  batch_x_f32_.resize(n * count);
+  batch_y_f32_.resize(n * count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const Trajectory& poses = *rollouts[k].poses;
+    for (std::size_t i = 0; i < n; ++i) {
+      batch_x_f32_[i * count + k] = static_cast<float>(poses[i].x - origin_.x());
+      batch_y_f32_[i * count + k] = static_cast<float>(poses[i].y - origin_.y());
+    }
+  }
+  dtw_f32_.resize(count);
+  workspace_.distance_batch_f32(batch_x_f32_.data(), batch_y_f32_.data(), n, count, reference_x_.data(),
+                                reference_y_.data(), reference_x_.size(), dtw_f32_.data());
+  for (std::size_t k = 0; k < count; ++k) out[k] = 1.0 / (static_cast<double>(dtw_f32_[k]) + 1.0);
 }
 
 double SimilarityCritic::score(const Rollout& rollout) const {
+  if (single_precision() && !rollout.poses->empty()) {
+    double out;
+    score_f32(&rollout, 1, &out);
+    return out;
+  }
   const Trajectory& poses = *rollout.poses;
   positions_.resize(poses.size());
   for (std::size_t i = 0; i < poses.size(); ++i) positions_[i] = poses[i].position();
@@ -52,8 +81,9 @@ void SimilarityCritic::score_all(const std::vector<Rollout>& rollouts, double* o
     return;
   }
   // Batches of rollouts side by side: the DTW recurrence of one rollout is a
-  // chain of dependent steps, several rollouts in step keep the processor busy.
-  constexpr std::size_t kBatch = 32;
+  // chain of dependent steps, several rollouts in step keep the processor busy
+  // (64 floats: 4 to 16 vectors, whatever the instruction set).
+  constexpr std::size_t kBatch = 64;
   for (std::size_t first = 0; first < rollouts.size(); first += kBatch) {
     const std::size_t count = std::min(kBatch, rollouts.size() - first);
     const std::size_t n = rollouts[first].poses->size();
@@ -61,6 +91,10 @@ void SimilarityCritic::score_all(const std::vector<Rollout>& rollouts, double* o
     for (std::size_t k = 1; k < count; ++k) same_length = same_length && rollouts[first + k].poses->size() == n;
     if (!same_length || n == 0) {
       for (std::size_t k = 0; k < count; ++k) out[first + k] = score(rollouts[first + k]);
+      continue;
+    }
+    if (single_precision()) {
+      score_f32(&rollouts[first], count, out + first);
       continue;
     }
     batch_x_.resize(n * count);
@@ -121,6 +155,11 @@ std::unique_ptr<Critic> make_similarity(Params& p, Options& o) {
   const double band = take(p, "band", kNoBand);
   if (band != std::floor(band)) throw Error(detail::describe("critic similarity: band", band, "must be a whole number"));
   params.band = static_cast<int>(band);
+  const std::string precision = take_option(o, "precision", "single");
+  if (precision == "double")
+    params.precision = DtwPrecision::Double;
+  else if (precision != "single")
+    throw Error("critic similarity: precision = '" + precision + "': expected 'single' or 'double'");
   return std::make_unique<SimilarityCritic>(params);
 }
 

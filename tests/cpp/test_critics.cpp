@@ -2,9 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <random>
 
+#include <hwy/targets.h>
+
 #include "fgdwa/critics.hpp"
+#include "fgdwa/dtw.hpp"
+#include "fgdwa/path.hpp"
 #include "test_support.hpp"
 
 namespace fgdwa {
@@ -83,6 +89,90 @@ TEST(MakeCritic, RejectsUnknownNamesParametersAndBadValues) {
   expect_error_naming([] { make_critic({"clearance", 1.0, {{"cap", -1.0}}}); }, "cap");
   expect_error_naming([] { make_critic({"clearance", 1.0, {{"cap", std::nan("")}}}); }, "cap");
   expect_error_naming([] { make_critic({"velocity", std::nan(""), {}}); }, "weight");
+}
+
+// The float batch DTW: each sequence's result is its double DTW within float
+// rounding, whatever its place in the batch, and every instruction set the
+// processor runs gives the same bits.
+TEST(DtwSingle, MatchesDoubleAndGivesTheSameBitsOnEveryInstructionSet) {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+  DtwWorkspace workspace;
+  std::vector<std::vector<float>> results;
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_FALSE(targets.empty());
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    std::mt19937 same(7);
+    std::vector<float> all;
+    // Batch sizes round the lane counts (4, 8, 16) and a scalar tail.
+    for (std::size_t count : {1u, 3u, 8u, 17u, 64u}) {
+      for (std::size_t n : {1u, 2u, 20u}) {
+        const std::size_t m = 1 + same() % 25;
+        std::vector<float> ax(n * count), ay(n * count), bx(m), by(m), out(count);
+        for (float& v : ax) v = u(same);
+        for (float& v : ay) v = u(same);
+        for (float& v : bx) v = u(same);
+        for (float& v : by) v = u(same);
+        workspace.distance_batch_f32(ax.data(), ay.data(), n, count, bx.data(), by.data(), m, out.data());
+        std::vector<Vec2> b(m);
+        for (std::size_t j = 0; j < m; ++j) b[j] = Vec2(bx[j], by[j]);
+        for (std::size_t k = 0; k < count; ++k) {
+          std::vector<Vec2> a(n);
+          for (std::size_t i = 0; i < n; ++i) a[i] = Vec2(ax[i * count + k], ay[i * count + k]);
+          const double exact = dtw(a, b);
+          EXPECT_NEAR(out[k], exact, 1e-5 * (n + m) * (1.0 + exact));
+        }
+        all.insert(all.end(), out.begin(), out.end());
+      }
+    }
+    results.push_back(all);
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  for (std::size_t t = 1; t < results.size(); ++t) {
+    ASSERT_EQ(results[t].size(), results[0].size());
+    EXPECT_EQ(std::memcmp(results[t].data(), results[0].data(), results[0].size() * sizeof(float)), 0)
+        << hwy::TargetName(targets[t]) << " against " << hwy::TargetName(targets[0]);
+  }
+  std::printf("DTW batch checked on %zu instruction sets; dispatched: %s\n", targets.size(), dtw_instruction_set());
+  EXPECT_THROW(workspace.distance_batch_f32(nullptr, nullptr, 0, 1, nullptr, nullptr, 1, nullptr), Error);
+}
+
+// With the similarity critic in single precision, a rollout scores alike alone
+// and in a batch, and within float rounding of double precision.
+TEST(SimilarityCritic, SinglePrecisionScoresAloneAsInABatchAndCloseToDouble) {
+  const GlobalPath path({Vec2(100.0, 50.0), Vec2(103.0, 51.0), Vec2(105.0, 54.0)});
+  CriticContext context;
+  context.state.pose = Pose2{100.1, 50.05, 0.3};
+  context.dt = 0.1;
+  context.n_steps = 20;
+  context.path = &path;
+  context.v_max = 1.2;
+  auto single = make_critic(CriticConfig("similarity"));
+  auto reference = make_critic(CriticConfig("similarity", 1.0, {}, {{"precision", "double"}}));
+  single->prepare(context);
+  reference->prepare(context);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Trajectory> trajectories(37);
+  std::vector<Rollout> batch;
+  for (Trajectory& poses : trajectories) {
+    const double v = 0.6 + 0.5 * u(rng), w = u(rng);
+    Pose2 p = context.state.pose;
+    for (int i = 0; i <= 20; ++i) {
+      poses.push_back(p);
+      p = Pose2{p.x + v * 0.1 * std::cos(p.theta), p.y + v * 0.1 * std::sin(p.theta), p.theta + w * 0.1};
+    }
+    batch.push_back(rollout_ending_at(poses));
+  }
+  std::vector<double> scores(batch.size());
+  single->score_all(batch, scores.data());
+  for (std::size_t k = 0; k < batch.size(); ++k) {
+    EXPECT_EQ(scores[k], single->score(batch[k]));
+    EXPECT_NEAR(scores[k], reference->score(batch[k]), 1e-6);
+  }
+  EXPECT_THROW(make_critic(CriticConfig("similarity", 1.0, {}, {{"precision", "half"}})), Error);
 }
 
 }  // namespace

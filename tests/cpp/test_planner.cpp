@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
+#include <functional>
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -11,6 +13,7 @@
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/collision.hpp"
 #include "fgdwa/planner.hpp"
+#include "fgdwa/presets.hpp"
 #include "test_support.hpp"
 
 namespace fgdwa {
@@ -856,7 +859,6 @@ TEST(LocalPlanner, OpenSpaceAdmitsEverySample) {
   for (double d : r.free_distance) EXPECT_TRUE(std::isinf(d));
   for (double c : r.min_clearance) EXPECT_TRUE(std::isinf(c));
 }
-
 }  // namespace
 }  // namespace fgdwa
 
@@ -966,6 +968,67 @@ TEST(DistanceField, SegmentDistanceIsTheNearestPointOfTheSegment) {
   EXPECT_TRUE(std::isnan(field.segment_distance(Vec2(-1.05, 1.0), Vec2(-0.95, 1.0))));
   const DistanceField empty(OccupancyGrid(10, 10, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(100, 0)));
   EXPECT_TRUE(std::isinf(empty.segment_distance(Vec2(0.2, 0.2), Vec2(0.3, 0.3))));
+}
+
+// The single-precision DTW must not change what the planner drives: over
+// 10 000 random cycles the chosen sample is the double-precision one's, except
+// where the reference's two best totals lie within 1e-6 (a tie either may win).
+TEST(LocalPlanner, SinglePrecisionDtwChoosesAsDoubleDoes) {
+  const RobotLimits limits;
+  const Footprint fp = Footprint::circle(0.25);
+  const auto planner_with = [&](const std::string& precision, double similarity_weight) {
+    PlannerParams params = planner_preset("fgdwa").params;
+    for (CriticConfig& c : params.critics)
+      if (c.name == "similarity") {
+        c.options["precision"] = precision;
+        c.weight = similarity_weight;
+      }
+    return LocalPlanner(limits, fp, params);
+  };
+  int cycles = 0, chosen = 0, ties = 0;
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (unsigned seed = 1; seed <= 100; ++seed) {
+    std::mt19937 rng(900 + seed);
+    // Far from the origin, where a float's digits would not hold millimetres.
+    const Vec2 origin(200.0 * u(rng) - 100.0, 200.0 * u(rng) - 100.0);
+    const Vec2 start = origin + Vec2(4.0, 4.0);
+    const OccupancyGrid grid = test::random_rectangles(rng, 80, 80, 0.1, origin, 0.05, 6, start, 0.6);
+    const FieldClearance world(std::make_shared<const DistanceField>(grid));
+    const double weight = 0.05 + 2.0 * u(rng);
+    LocalPlanner single = planner_with("single", weight), reference = planner_with("double", weight);
+    for (int trial = 0; trial < 100; ++trial) {
+      std::vector<Vec2> points{start};
+      for (int k = 0; k < 1 + trial % 4; ++k) points.push_back(points.back() + Vec2(3.0 * u(rng) - 1.5, 3.0 * u(rng) - 1.5));
+      const GlobalPath path(points);
+      single.set_global_path(path);
+      reference.set_global_path(path);
+      const RobotState state = random_state(rng, limits, start);
+      const Vec2 goal = points.back();
+      const int a = single.plan(state, goal, world).best_index;
+      const PlanResult& r = reference.plan(state, goal, world);
+      ++cycles;
+      if (r.best_index < 0) {
+        EXPECT_EQ(a, -1);
+        continue;
+      }
+      ++chosen;
+      if (a == r.best_index) continue;
+      ASSERT_GE(a, 0);
+      // Which samples tie for first in the reference?
+      std::vector<double> totals(r.total.data(), r.total.data() + r.total.size());
+      std::nth_element(totals.begin(), totals.begin() + 1, totals.end(), std::greater<double>());
+      const bool tie = totals[0] - totals[1] <= 1e-6;
+      EXPECT_TRUE(tie) << "seed " << seed << " trial " << trial << ": single chose " << a << ", double "
+                       << r.best_index << " (totals " << r.total[a] << " and " << r.total[r.best_index] << ")";
+      if (tie) {
+        ++ties;
+        EXPECT_LE(r.total[r.best_index] - r.total[a], 1e-6);  // the other sample of the tie
+      }
+    }
+  }
+  std::printf("single vs double DTW: %d cycles, %d with a choice, %d differ within a 1e-6 tie\n", cycles, chosen, ties);
+  EXPECT_EQ(cycles, 10000);
+  EXPECT_GT(chosen, 9000);
 }
 
 }  // namespace

@@ -92,16 +92,23 @@ def test_reference_samples_at_a_corner():
 
 
 def test_similarity_critic_scores_1_over_dtw_plus_1():
-    params = fgdwa.PlannerParams(critics=[("similarity", 1.0, {"v_ref_min": 0.1, "reference_speed": "current"})])
+    options = {"v_ref_min": 0.1, "reference_speed": "current"}
+    params = fgdwa.PlannerParams(critics=[("similarity", 1.0, dict(options, precision="double"))])
     planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), params)
     planner.set_global_path([[0.0, 0.0], [20.0, 0.0]])
     state = fgdwa.RobotState((1.0, 0.5, 0.0), (0.6, 0.0))
     result = planner.plan(state, (20.0, 0.0), fgdwa.FieldClearance())
     rollouts = planner.rollouts()
     e = fgdwa.reference_samples(planner.global_path, (1.0, 0.5), 0.6, 0.15, 20)
+    single = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2),
+                                fgdwa.PlannerParams(critics=[("similarity", 1.0, options)]))
+    single.set_global_path([[0.0, 0.0], [20.0, 0.0]])
+    single_result = single.plan(state, (20.0, 0.0), fgdwa.FieldClearance())
     for i in range(0, len(rollouts), 37):
         expected = 1.0 / (fgdwa.dtw(rollouts[i][:, :2], e) + 1.0)
-        assert result.raw[i, 0] == expected  # the batched DTW repeats the single one bit for bit
+        assert result.raw[i, 0] == expected  # the batched double DTW repeats the single one bit for bit
+        # The default single precision: float rounding, relative to the robot.
+        assert single_result.raw[i, 0] == pytest.approx(expected, rel=1e-6)
     # The rollout that bends toward the path is the most similar one.
     best = int(np.argmax(result.raw[:, 0]))
     assert result.samples[best][1] < 0.0
@@ -114,7 +121,9 @@ def test_similarity_critic_scores_1_over_dtw_plus_1():
     limit.set_global_path([[0.0, 0.0], [20.0, 0.0]])
     r = limit.plan(state, (20.0, 0.0), fgdwa.FieldClearance())
     e_limit = fgdwa.reference_samples(limit.global_path, (1.0, 0.5), 1.2, 0.15, 20)
-    assert r.raw[0, 0] == pytest.approx(1.0 / (fgdwa.dtw(limit.rollouts()[0][:, :2], e_limit) + 1.0), rel=1e-12)
+    assert r.raw[0, 0] == pytest.approx(1.0 / (fgdwa.dtw(limit.rollouts()[0][:, :2], e_limit) + 1.0), rel=1e-6)
+    with pytest.raises(fgdwa.FgdwaError, match="precision"):
+        fgdwa.CriticConfig("similarity", 1.0, {"precision": "half"})
     with pytest.raises(fgdwa.FgdwaError, match="reference_speed"):
         fgdwa.CriticConfig("similarity", 1.0, {"reference_speed": "fast"})
     with pytest.raises(fgdwa.FgdwaError, match="sampling"):

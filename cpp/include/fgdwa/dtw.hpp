@@ -29,9 +29,21 @@ class DtwWorkspace {
   void distance_batch(const double* ax, const double* ay, std::size_t n, std::size_t count, const Vec2* b,
                       std::size_t m, double* out);
 
+  // The same in single precision, vectorised with the widest instruction set
+  // the processor has (dtw_instruction_set()). Every instruction set gives
+  // the same bits. Keep coordinates small (relative to a nearby origin): a
+  // float carries 7 digits.
+  void distance_batch_f32(const float* ax, const float* ay, std::size_t n, std::size_t count, const float* bx,
+                          const float* by, std::size_t m, float* out);
+
  private:
   std::vector<double> previous_, current_, bx_, by_, row_, left_;
+  std::vector<float> rows_f32_;
 };
+
+// The instruction set distance_batch_f32 runs with on this processor ("AVX2",
+// "NEON", ...).
+const char* dtw_instruction_set();
 
 // One-off DTW; throws fgdwa::Error on an empty sequence or a non-finite point.
 double dtw(const std::vector<Vec2>& a, const std::vector<Vec2>& b, int band = kNoBand);
