@@ -5,6 +5,7 @@
 // with each clearance source: the distance field (FieldClearance) and the exact
 // FCL world (CollisionWorld); and with the field for the Jackal's rectangle,
 // also from starts near the map's edge whose rollouts leave the grid.
+// Then PythonRobotics' DWA example with point obstacles (PeerScene below).
 // Also what building the field of that map costs, updating it for one cell
 // (with the field's bytes per cell), and building the FCL world.
 //
@@ -14,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <random>
 #include <vector>
@@ -106,6 +108,81 @@ void BM_PlanCollisionWorld(benchmark::State& bench) {
   plan_cycles(bench, scene, world);
 }
 
+// PythonRobotics' DWA example (PathPlanning/DynamicWindowApproach, the peer
+// case of tests/cpp/test_closed_loop.cpp): its 15 point obstacles, a circle of
+// 1 m, v <= 1 m/s, |omega| <= 40 deg/s, 0.2 m/s^2 and 40 deg/s^2, dt 0.1 s over
+// 3 s (30 poses), 3 x 80 = 240 samples, heading 0.15, clearance 0.2 and
+// velocity 1.0. The states are those of one closed-loop drive from (0, 0) to
+// (10, 10), replayed cycle after cycle. The points are zero-radius discs, or
+// the same points rasterised into a 0.1 m grid: the two should cost alike.
+struct PeerScene {
+  static constexpr double kDeg = M_PI / 180.0;
+  std::vector<Disc> points;
+  RobotLimits limits;
+  PlannerParams params;
+  std::vector<RobotState> states;
+  const Vec2 goal{10.0, 10.0};
+
+  PeerScene() {
+    const double xy[][2] = {{-1, -1}, {0, 2},  {4, 2},  {5, 4},   {5, 5},   {5, 6},   {5, 9},  {8, 9},
+                            {7, 9},   {8, 10}, {9, 11}, {12, 13}, {12, 12}, {15, 15}, {13, 13}};
+    for (const auto& p : xy) points.push_back(Disc{Vec2(p[0], p[1]), 0.0, Vec2::Zero()});
+    limits.v_max = 1.0;
+    limits.omega_max = 40 * kDeg;
+    limits.acc_v = 0.2;
+    limits.acc_omega = 40 * kDeg;
+    params.dt = 0.1;
+    params.sim_time = 3.0;
+    params.window = WindowParams{3, 80};
+    params.goal_tolerance = 1.0;
+    params.critics = {{"heading", 0.15, {}}, {"clearance", 0.2, {}}, {"velocity", 1.0, {}}};
+    LocalPlanner planner = make_planner();
+    const FieldClearance world(nullptr, points);
+    RobotState state{Pose2{0.0, 0.0, M_PI / 8}, Twist{0.0, 0.0}};
+    for (int cycle = 0; cycle < 1000; ++cycle) {
+      states.push_back(state);
+      const PlanResult& result = planner.plan(state, goal, world);
+      if (result.status == Status::GoalReached) break;
+      state = RobotState{step(state.pose, result.command, params.dt), result.command};
+    }
+  }
+  LocalPlanner make_planner() const { return LocalPlanner(limits, Footprint::circle(1.0), params); }
+  // The points as occupied cells of a 0.1 m grid over (-2, -2)-(17, 17).
+  OccupancyGrid rasterised() const {
+    const double res = 0.1;
+    const int cells = 190;
+    std::vector<std::uint8_t> occupied(static_cast<std::size_t>(cells) * cells, 0);
+    for (const Disc& d : points) {
+      const int col = static_cast<int>(std::floor((d.center.x() + 2.0) / res));
+      const int row = static_cast<int>(std::floor((d.center.y() + 2.0) / res));
+      occupied[static_cast<std::size_t>(row) * cells + col] = 1;
+    }
+    return OccupancyGrid(cells, cells, res, Vec2(-2.0, -2.0), std::move(occupied));
+  }
+};
+
+void plan_peer(benchmark::State& bench, const ClearanceSource& world) {
+  static const PeerScene scene;
+  LocalPlanner planner = scene.make_planner();
+  std::size_t i = 0;
+  for (auto _ : bench) {
+    benchmark::DoNotOptimize(planner.plan(scene.states[i], scene.goal, world).command);
+    i = (i + 1) % scene.states.size();
+  }
+  bench.counters["samples"] = static_cast<double>(planner.last_result().samples.size());
+  bench.counters["cycles"] = static_cast<double>(scene.states.size());
+}
+
+void BM_PeerPointObstacles(benchmark::State& bench) {
+  const PeerScene scene;
+  plan_peer(bench, FieldClearance(nullptr, scene.points));
+}
+
+void BM_PeerRasterised(benchmark::State& bench) {
+  const PeerScene scene;
+  plan_peer(bench, FieldClearance(std::make_shared<const DistanceField>(scene.rasterised())));
+}
+
 // Building the clearance sources is a per-map cost, not a per-cycle one.
 void BM_BuildDistanceField(benchmark::State& bench) {
   const Scene scene;
@@ -142,6 +219,8 @@ BENCHMARK(BM_PlanFieldClearance)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)
 BENCHMARK(BM_PlanFieldClearanceJackal)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanFieldClearanceJackalAtEdge)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanCollisionWorld)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PeerPointObstacles)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PeerRasterised)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_BuildDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_UpdateDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_BuildCollisionWorld)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);

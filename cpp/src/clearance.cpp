@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
+#include "disc_distance.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -29,7 +31,24 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
     obstacle_speed_ = std::max(obstacle_speed_, d.velocity.norm() + d.growth);
   }
   discs_ = std::move(discs);
+  static_discs_ = StaticDiscs{};
+  moving_.clear();
+  for (const Disc& d : discs_) {
+    if (d.growth <= 0.0 && d.velocity.isZero()) {
+      static_discs_.x.push_back(d.center.x());
+      static_discs_.y.push_back(d.center.y());
+      static_discs_.radius.push_back(d.radius);
+    } else {
+      moving_.push_back(d);
+    }
+  }
   split_moving();
+}
+
+double FieldClearance::StaticDiscs::distance(double px, double py, double inflate) const {
+  double best = std::numeric_limits<double>::infinity();
+  detail::lower_to_discs(&px, &py, 1, x.data(), y.data(), radius.data(), x.size(), inflate, &best);
+  return best;
 }
 
 // The static part shares the fields: new fields are handed to it, and only
@@ -207,10 +226,27 @@ void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Tr
       for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], bound(poses[k].x, poses[k].y) - r);
     }
   }
-  for (const Disc& disc : discs_)
+  if (!static_discs_.x.empty()) {
+    // Positions column by column, so that lanes carry poses.
+    thread_local std::vector<double> px, py;
+    px.resize(n);
+    py.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      px[k] = poses[k].x;
+      py[k] = poses[k].y;
+    }
+    const StaticDiscs& d = static_discs_;
+    detail::lower_to_discs(px.data(), py.data(), n, d.x.data(), d.y.data(), d.radius.data(), d.x.size(), r, out);
+  }
+  for (const Disc& disc : moving_)
     for (std::size_t k = 0; k < n; ++k)
-      out[k] = std::min(out[k], (disc.center_at(static_cast<double>(k + 1) * dt) - poses[k].position()).norm() -
-                                    disc.radius_at(static_cast<double>(k + 1) * dt) - r);
+      out[k] = std::min(out[k], ((disc.center_at(static_cast<double>(k + 1) * dt) - poses[k].position()).norm() - r) -
+                                    disc.radius_at(static_cast<double>(k + 1) * dt));
+}
+
+bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {
+  const auto empty = [](const std::shared_ptr<const DistanceField>& field) { return !field || !field->has_obstacles(); };
+  return footprint.is_circle() && empty(field_) && empty(sensed_);
 }
 
 double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose, double t) {
@@ -233,7 +269,18 @@ double FieldClearance::moving_clearance(const Footprint& footprint, const Pose2&
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
   double best = field_clearance(field_.get(), footprint, pose);
   if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose));
-  for (const Disc& disc : discs_)
+  if (footprint.is_circle()) {
+    if (!static_discs_.x.empty()) best = std::min(best, static_discs_.distance(pose.x, pose.y, footprint.radius()));
+  } else {
+    const StaticDiscs& d = static_discs_;
+    for (std::size_t j = 0; j < d.x.size(); ++j) {
+      const Vec2 centre(d.x[j], d.y[j]);
+      // The circumscribed circle settles the far ones.
+      if ((centre - pose.position()).norm() - d.radius[j] - footprint.radius() >= best) continue;
+      best = std::min(best, footprint.signed_distance(pose, centre) - d.radius[j]);
+    }
+  }
+  for (const Disc& disc : moving_)
     best = std::min(best, footprint.signed_distance(pose, disc.center_at(t)) - disc.radius_at(t));
   return best;
 }

@@ -310,6 +310,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const double cos_start = std::cos(state.pose.theta), sin_start = std::sin(state.pose.theta);
   // Samples come v-major: the headings of the first row serve every row.
   const std::size_t n_omega = static_cast<std::size_t>(params_.window.n_omega);
+  const bool bounds_exact = fixed.lower_bounds_exact(footprint_);
   headings_.resize(std::min(n_omega, n));
   for (std::size_t j = 0; j < headings_.size(); ++j)
     headings_[j].assign(state.pose.theta, cos_start, sin_start, result_.samples[j].omega, params_.dt, n_steps_);
@@ -323,7 +324,10 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     // settle contact or the minimum. The result is the same as evaluating
     // every pose exactly.
     fixed.clearance_lower_bounds(footprint_, poses, params_.dt, bounds_.data());
-    std::fill(exact_.begin(), exact_.end(), std::numeric_limits<double>::quiet_NaN());
+    if (bounds_exact)
+      for (int k = 0; k < n_steps_; ++k) exact_[static_cast<std::size_t>(k)] = bounds_[static_cast<std::size_t>(k)] - margin;
+    else
+      std::fill(exact_.begin(), exact_.end(), std::numeric_limits<double>::quiet_NaN());
     const auto exact = [&](int k) {
       double& c = exact_[static_cast<std::size_t>(k)];
       if (std::isnan(c))

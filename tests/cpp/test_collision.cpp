@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -199,6 +201,54 @@ TEST(CollisionWorld, GridAndDiscsTogetherTakeTheNearest) {
   world.set_discs({});
   EXPECT_NEAR(world.clearance(fp, pose, 3.0), 0.3, 1e-6);
   EXPECT_THROW(world.set_discs({Disc{Vec2(0, 0), -1.0, Vec2::Zero()}}), Error);
+}
+
+// Discs that neither move nor grow are kept column by column and scanned in one
+// vectorised loop; the clearance is still the plain minimum over every disc,
+// bit for bit for a circle, and the lower bounds never exceed it.
+TEST(FieldClearance, StillAndMovingDiscsGiveThePlainMinimumOverEveryDisc) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-5.0, 5.0), radius(0.0, 0.4), speed(-0.8, 0.8);
+  const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
+  for (int world = 0; world < 50; ++world) {
+    std::vector<Disc> discs;
+    const int count = 1 + world % 40;
+    for (int j = 0; j < count; ++j) {
+      Disc d{Vec2(u(rng), u(rng)), world % 3 == 0 ? 0.0 : radius(rng), Vec2::Zero()};
+      if (j % 4 == 1) d.velocity = Vec2(speed(rng), speed(rng));  // every fourth one moves
+      discs.push_back(d);
+    }
+    const FieldClearance source(nullptr, discs);
+    for (int trial = 0; trial < 40; ++trial) {
+      const Pose2 pose{u(rng), u(rng), M_PI * u(rng) / 5.0};
+      const double t = 0.1 * (trial % 10);
+      for (const Footprint& fp : {Footprint::circle(0.25), rectangle}) {
+        double brute = std::numeric_limits<double>::infinity();
+        for (const Disc& d : discs) brute = std::min(brute, fp.signed_distance(pose, d.center_at(t)) - d.radius_at(t));
+        if (fp.is_circle())
+          EXPECT_EQ(source.clearance(fp, pose, t), brute);
+        else
+          EXPECT_NEAR(source.clearance(fp, pose, t), brute, 1e-12);
+      }
+    }
+    // Among discs alone a circle's bounds are its clearances, which the planner then takes as they are.
+    EXPECT_TRUE(source.lower_bounds_exact(Footprint::circle(0.25)));
+    EXPECT_FALSE(source.lower_bounds_exact(rectangle));
+    const FieldClearance mapped(std::make_shared<const DistanceField>(OccupancyGrid(2, 2, 0.1, Vec2(0, 0), {1, 0, 0, 0})),
+                                discs);
+    EXPECT_FALSE(mapped.lower_bounds_exact(Footprint::circle(0.25)));  // a grid's bounds are bounds
+    // Lower bounds along a rollout, pose k at (k + 1) dt.
+    const Trajectory poses = rollout(Pose2{u(rng), u(rng), 0.3}, Twist{0.8, 0.4}, 0.1, 30);
+    std::vector<double> bounds(poses.size());
+    for (const Footprint& fp : {Footprint::circle(0.25), rectangle}) {
+      source.clearance_lower_bounds(fp, poses, 0.1, bounds.data());
+      for (std::size_t k = 0; k < poses.size(); ++k) {
+        const double exact = source.clearance(fp, poses[k], 0.1 * static_cast<double>(k + 1));
+        EXPECT_LE(bounds[k], exact + 1e-12);
+        if (fp.is_circle()) EXPECT_EQ(bounds[k], exact);  // a circle's bound is its clearance
+      }
+    }
+  }
 }
 
 }  // namespace
