@@ -34,12 +34,12 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
   static_discs_ = StaticDiscs{};
   moving_.clear();
   for (const Disc& d : discs_) {
-    if (d.growth <= 0.0 && d.velocity.isZero()) {
+    if (d.moves()) {
+      moving_.push_back(d);
+    } else {
       static_discs_.x.push_back(d.center.x());
       static_discs_.y.push_back(d.center.y());
       static_discs_.radius.push_back(d.radius);
-    } else {
-      moving_.push_back(d);
     }
   }
   split_moving();
@@ -70,7 +70,7 @@ void FieldClearance::split_moving() {
   if (obstacle_speed_ <= 0.0) return;
   std::vector<Disc> still;
   for (const Disc& d : discs_)
-    if (d.growth <= 0.0 && d.velocity.isZero()) still.push_back(d);
+    if (!d.moves()) still.push_back(d);
   fixed_ = std::make_shared<FieldClearance>(field_, std::move(still));
   fixed_->set_sensed(sensed_);
 }
@@ -252,7 +252,7 @@ bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {
 double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose, double t) {
   double best = std::numeric_limits<double>::infinity();
   for (const Disc& disc : discs) {
-    if (disc.growth <= 0.0 && disc.velocity.isZero()) continue;
+    if (!disc.moves()) continue;
     const Vec2 centre = disc.center_at(t);
     const double radius = disc.radius_at(t);
     // The circumscribed circle settles the far ones.
@@ -263,7 +263,7 @@ double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& fo
 }
 
 double FieldClearance::moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const {
-  return moving_disc_clearance(discs_, footprint, pose, t);
+  return moving_disc_clearance(moving_, footprint, pose, t);
 }
 
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
@@ -280,9 +280,7 @@ double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, 
       best = std::min(best, footprint.signed_distance(pose, centre) - d.radius[j]);
     }
   }
-  for (const Disc& disc : moving_)
-    best = std::min(best, footprint.signed_distance(pose, disc.center_at(t)) - disc.radius_at(t));
-  return best;
+  return std::min(best, moving_clearance(footprint, pose, t));
 }
 
 }  // namespace fgdwa

@@ -21,6 +21,8 @@ struct Disc {
   Vec2 velocity = Vec2::Zero();  // m/s
   double growth = 0.0;           // m/s, radius added per second ahead
   Vec2 center_at(double t) const { return center + t * velocity; }
+  // Whether it moves or grows: otherwise it is a static obstacle.
+  bool moves() const { return growth > 0.0 || !velocity.isZero(); }
   double radius_at(double t) const { return radius + growth * t; }
   void validate() const;
 };
