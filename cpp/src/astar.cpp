@@ -21,17 +21,22 @@ const char* to_string(GlobalStatus status) {
 
 void TerrainCost::validate() const {
   detail::require_non_negative("w_risk", w_risk);
-  for (std::size_t g = 0; g < risk.size(); ++g) detail::require_non_negative("risk[" + std::to_string(g) + "]", risk[g]);
+  detail::require_at_most("w_risk", w_risk, 1e6);
+  for (std::size_t g = 0; g < risk.size(); ++g) {
+    detail::require_non_negative("risk[" + std::to_string(g) + "]", risk[g]);
+    detail::require_at_most("risk[" + std::to_string(g) + "]", risk[g], 1e6);
+  }
 }
 
 void AStarParams::validate() const {
-  detail::require_non_negative("inflation_radius", inflation_radius);
+  detail::require_distance("inflation_radius", inflation_radius);
   detail::require_non_negative("unknown_cost", unknown_cost);
+  detail::require_at_most("unknown_cost", unknown_cost, 1e6);
   terrain.validate();
 }
 
 std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_radius, const TerrainGrid* terrain) {
-  detail::require_non_negative("inflation_radius", inflation_radius);
+  detail::require_distance("inflation_radius", inflation_radius);
   if (terrain && !terrain->matches(grid)) throw Error("terrain: its cells must match the occupancy grid's");
   // Grade-4 cells keep the footprint off as obstacles do: the local planner
   // rejects a footprint over them, so a path hugging them could not be followed.
@@ -125,10 +130,8 @@ bool AStarPlanner::line_of_sight(const Vec2& a, const Vec2& b, int max_grade) co
 
 GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
   const auto tic = std::chrono::steady_clock::now();
-  detail::require_finite("start x", start.x());
-  detail::require_finite("start y", start.y());
-  detail::require_finite("goal x", goal.x());
-  detail::require_finite("goal y", goal.y());
+  detail::require_point("start", start);
+  detail::require_point("goal", goal);
   int sr, sc, gr, gc;
   if (!grid_.cell_of(start, sr, sc))
     throw Error("start (" + std::to_string(start.x()) + ", " + std::to_string(start.y()) + ") lies outside the map");

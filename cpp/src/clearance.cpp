@@ -11,12 +11,11 @@
 namespace fgdwa {
 
 void Disc::validate() const {
-  detail::require_finite("disc center x", center.x());
-  detail::require_finite("disc center y", center.y());
-  detail::require_non_negative("disc radius", radius);
-  detail::require_finite("disc velocity x", velocity.x());
-  detail::require_finite("disc velocity y", velocity.y());
+  detail::require_point("disc center", center);
+  detail::require_distance("disc radius", radius);
+  detail::require_xy("disc velocity", velocity.x(), velocity.y(), limits::kMaxSpeed);
   detail::require_non_negative("disc growth", growth);
+  detail::require_at_most("disc growth", growth, limits::kMaxSpeed);
 }
 
 FieldClearance::FieldClearance(std::shared_ptr<const DistanceField> field, std::vector<Disc> discs)
@@ -25,6 +24,8 @@ FieldClearance::FieldClearance(std::shared_ptr<const DistanceField> field, std::
 }
 
 void FieldClearance::set_discs(std::vector<Disc> discs) {
+  if (discs.size() > static_cast<std::size_t>(limits::kMaxDiscs))
+    throw Error(detail::describe("discs", discs.size(), "at most " + std::to_string(limits::kMaxDiscs)));
   obstacle_speed_ = 0.0;
   for (const Disc& d : discs) {
     d.validate();
@@ -172,12 +173,15 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   // An obstacle cell can sit wholly inside a footprint wider than a cell.
   const OccupancyGrid& grid = field->grid();
   const double r = footprint.radius();
-  int r0, c0, r1, c1;
   const Vec2 lo = pose.position() - Vec2(r, r), hi = pose.position() + Vec2(r, r);
-  r0 = std::max(0, static_cast<int>(std::floor((lo.y() - grid.origin().y()) / res)));
-  c0 = std::max(0, static_cast<int>(std::floor((lo.x() - grid.origin().x()) / res)));
-  r1 = std::min(grid.rows() - 1, static_cast<int>(std::floor((hi.y() - grid.origin().y()) / res)));
-  c1 = std::min(grid.cols() - 1, static_cast<int>(std::floor((hi.x() - grid.origin().x()) / res)));
+  // Clamped before the cast: a query far off the grid has no int index.
+  const auto index = [&](double coordinate, double origin, int count) {
+    return static_cast<int>(std::clamp(std::floor((coordinate - origin) / res), -1.0, static_cast<double>(count)));
+  };
+  const int r0 = std::max(0, index(lo.y(), grid.origin().y(), grid.rows()));
+  const int c0 = std::max(0, index(lo.x(), grid.origin().x(), grid.cols()));
+  const int r1 = std::min(grid.rows() - 1, index(hi.y(), grid.origin().y(), grid.rows()));
+  const int c1 = std::min(grid.cols() - 1, index(hi.x(), grid.origin().x(), grid.cols()));
   for (int row = r0; row <= r1; ++row)
     for (int col = c0; col <= c1; ++col)
       if (grid.occupied(row, col) && footprint.contains(pose, grid.cell_center(row, col))) return 0.0;
@@ -209,6 +213,8 @@ double polygon_lower_bound(const DistanceField* field, const DistanceField* sens
 
 void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
                                             double* out) const {
+  detail::require_query_poses("poses", poses);
+  detail::require_time_step("dt", dt);
   const double r = footprint.radius();
   const std::size_t n = poses.size();
   if (!footprint.is_circle()) {
@@ -250,6 +256,8 @@ bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {
 }
 
 double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose, double t) {
+  detail::require_query_pose("pose", pose);
+  detail::require_magnitude("t", t, limits::kMaxHorizon);
   double best = std::numeric_limits<double>::infinity();
   for (const Disc& disc : discs) {
     if (!disc.moves()) continue;
@@ -263,10 +271,14 @@ double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& fo
 }
 
 double FieldClearance::moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const {
+  detail::require_query_pose("pose", pose);
+  detail::require_magnitude("t", t, limits::kMaxHorizon);
   return moving_disc_clearance(moving_, footprint, pose, t);
 }
 
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
+  detail::require_query_pose("pose", pose);
+  detail::require_magnitude("t", t, limits::kMaxHorizon);
   double best = field_clearance(field_.get(), footprint, pose);
   if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose));
   if (footprint.is_circle()) {

@@ -1,5 +1,7 @@
 #include "fgdwa/collision.hpp"
 
+#include "validation.hpp"
+
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/convex.h>
@@ -139,6 +141,8 @@ CollisionWorld::CollisionWorld(CollisionWorld&&) noexcept = default;
 CollisionWorld& CollisionWorld::operator=(CollisionWorld&&) noexcept = default;
 
 void CollisionWorld::set_discs(std::vector<Disc> discs) {
+  if (discs.size() > static_cast<std::size_t>(limits::kMaxDiscs))
+    throw Error(detail::describe("discs", discs.size(), "at most " + std::to_string(limits::kMaxDiscs)));
   for (const Disc& d : discs) d.validate();
   impl_->discs = std::move(discs);
   impl_->disc_geometry.clear();
@@ -161,6 +165,8 @@ double CollisionWorld::obstacle_speed() const {
 const std::vector<CellRect>& CollisionWorld::boxes() const { return impl_->boxes; }
 
 double CollisionWorld::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
+  detail::require_query_pose("pose", pose);
+  detail::require_magnitude("t", t, limits::kMaxHorizon);
   fcl::CollisionObjectd robot(footprint_geometry(footprint), planar_transform(pose.x, pose.y, pose.theta));
   robot.computeAABB();
   DistanceData data;
@@ -178,6 +184,8 @@ double CollisionWorld::clearance(const Footprint& footprint, const Pose2& pose, 
 }
 
 bool CollisionWorld::in_collision(const Footprint& footprint, const Pose2& pose, double t) const {
+  detail::require_query_pose("pose", pose);
+  detail::require_magnitude("t", t, limits::kMaxHorizon);
   fcl::CollisionObjectd robot(footprint_geometry(footprint), planar_transform(pose.x, pose.y, pose.theta));
   robot.computeAABB();
   bool hit = false;

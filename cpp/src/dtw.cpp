@@ -4,11 +4,15 @@
 #include <cmath>
 #include <limits>
 
+#include "dtw_checks.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
 
 double DtwWorkspace::distance(const Vec2* a, std::size_t n, const Vec2* b, std::size_t m, int band) {
+  detail::check_dtw_sizes(n, m, 1, band);
+  detail::require_points("a", a, n, limits::kMaxQueryCoordinate);
+  detail::require_points("b", b, m, limits::kMaxQueryCoordinate);
   constexpr double kInf = std::numeric_limits<double>::infinity();
   bx_.resize(m);
   by_.resize(m);
@@ -62,6 +66,10 @@ double DtwWorkspace::distance(const Vec2* a, std::size_t n, const Vec2* b, std::
 
 void DtwWorkspace::distance_batch(const double* ax, const double* ay, std::size_t n, std::size_t count,
                                   const Vec2* b, std::size_t m, double* out) {
+  detail::check_dtw_sizes(n, m, count, kNoBand);
+  detail::check_dtw_coordinates("ax", ax, n * count);
+  detail::check_dtw_coordinates("ay", ay, n * count);
+  detail::require_points("b", b, m, limits::kMaxQueryCoordinate);
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const std::size_t K = count;
   bx_.resize(m);
@@ -110,10 +118,6 @@ void DtwWorkspace::distance_batch(const double* ax, const double* ay, std::size_
 }
 
 double dtw(const std::vector<Vec2>& a, const std::vector<Vec2>& b, int band) {
-  if (a.empty() || b.empty()) throw Error("dtw: both sequences need at least one point");
-  for (const auto* seq : {&a, &b})
-    for (const Vec2& p : *seq)
-      if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw Error("dtw: a point is not finite");
   DtwWorkspace workspace;
   return workspace.distance(a, b, band);
 }

@@ -75,6 +75,7 @@ HWY_AFTER_NAMESPACE();
 
 #include "fgdwa/dtw.hpp"
 #include "fgdwa/error.hpp"
+#include "dtw_checks.hpp"
 
 namespace fgdwa {
 
@@ -82,7 +83,11 @@ HWY_EXPORT(DtwBatchF32);
 
 void DtwWorkspace::distance_batch_f32(const float* ax, const float* ay, std::size_t n, std::size_t count,
                                       const float* bx, const float* by, std::size_t m, float* out) {
-  if (n == 0 || m == 0 || count == 0) throw Error("DTW batch: the sequences and the batch need at least one point");
+  detail::check_dtw_sizes(n, m, count, kNoBand);
+  detail::check_dtw_coordinates("ax", ax, n * count);
+  detail::check_dtw_coordinates("ay", ay, n * count);
+  detail::check_dtw_coordinates("bx", bx, m);
+  detail::check_dtw_coordinates("by", by, m);
   rows_f32_.resize(2 * m * count + count);
   float* previous = rows_f32_.data();
   HWY_DYNAMIC_DISPATCH(DtwBatchF32)(ax, ay, n, count, bx, by, m, previous, previous + m * count,

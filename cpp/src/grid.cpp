@@ -12,11 +12,15 @@ using detail::describe;
 
 OccupancyGrid::OccupancyGrid(int rows, int cols, double resolution, Vec2 origin, std::vector<std::uint8_t> cells)
     : rows_(rows), cols_(cols), resolution_(resolution), origin_(origin), cells_(std::move(cells)) {
-  detail::require_at_least("grid rows", rows, 1);
-  detail::require_at_least("grid cols", cols, 1);
-  detail::require_positive("grid resolution", resolution);
-  detail::require_finite("grid origin x", origin.x());
-  detail::require_finite("grid origin y", origin.y());
+  detail::require_count("grid rows", rows, 1, limits::kMaxGridCells);
+  detail::require_count("grid cols", cols, 1, limits::kMaxGridCells);
+  if (static_cast<long>(rows) * cols > limits::kMaxGridCells)
+    throw Error(describe("grid size", std::to_string(rows) + " x " + std::to_string(cols),
+                         "at most " + std::to_string(limits::kMaxGridCells) + " cells"));
+  detail::require_resolution("grid resolution", resolution);
+  detail::require_point("grid origin", origin);
+  // The far corner too: every point of the grid is a valid query point.
+  detail::require_point("grid far corner", origin + Vec2(cols * resolution, rows * resolution));
   const std::size_t expected = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   if (cells_.size() != expected)
     throw Error(describe("grid cells", cells_.size(), "expected rows x cols = " + std::to_string(expected)));
@@ -104,11 +108,10 @@ void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vec
 
 DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   const int rows = grid.rows(), cols = grid.cols();
+  // The grid's constructor bounds the cells (limits::kMaxGridCells), so cell
+  // indices fit the 32-bit tables.
   const std::size_t n_cells = static_cast<std::size_t>(rows) * cols;
-  constexpr std::size_t kMaxCells = std::numeric_limits<std::int32_t>::max();
-  if (n_cells > kMaxCells)
-    throw Error(describe("DistanceField grid", std::to_string(rows) + " x " + std::to_string(cols) + " cells",
-                         "at most " + std::to_string(kMaxCells) + " cells"));
+  static_assert(limits::kMaxGridCells <= std::numeric_limits<std::int32_t>::max());
   occupied_ = grid.occupied_count();
   const int n = std::max(rows, cols);
   f_.resize(n);
@@ -378,6 +381,8 @@ void DistanceField::col_outermost(int col) {
 }
 
 double DistanceField::cell_distance(int row, int col) const {
+  if (!grid_.in_bounds(row, col))
+    throw Error("cell (" + std::to_string(row) + ", " + std::to_string(col) + ") is outside the grid");
   const std::int32_t o = nearest_[grid_.index(row, col)];
   if (o < 0) return kInf;
   const double dr = row - o / grid_.cols(), dc = col - o % grid_.cols();
@@ -426,6 +431,8 @@ double segment_square_distance2(const Vec2& a, const Vec2& d, double h) {
 }  // namespace
 
 double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
+  detail::require_query_point("a", a);
+  detail::require_query_point("b", b);
   if (!has_obstacles()) return kInf;
   const double ax = (a.x() - grid_.origin().x()) * inverse_resolution_, ay = (a.y() - grid_.origin().y()) * inverse_resolution_;
   const double bx = (b.x() - grid_.origin().x()) * inverse_resolution_, by = (b.y() - grid_.origin().y()) * inverse_resolution_;
@@ -452,6 +459,7 @@ double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
 }
 
 double DistanceField::distance(const Vec2& p) const {
+  detail::require_query_point("point", p);
   if (!has_obstacles()) return kInf;
   const double half = 0.5 * grid_.resolution();
   const int rows = grid_.rows(), cols = grid_.cols();
@@ -468,7 +476,7 @@ double DistanceField::distance(const Vec2& p) const {
   // across the lines, `across` in cells) is no nearer than the best so far:
   // the same minimum as over every line.
   const auto outward = [&](int lines, double across, const auto& candidate) {
-    const int nearest = std::clamp(static_cast<int>(std::floor(across)), 0, lines - 1);
+    const int nearest = static_cast<int>(std::clamp(std::floor(across), 0.0, lines - 1.0));
     const auto gap = [&](int line) {
       const double g = std::max(std::abs(line + 0.5 - across) - 0.5, 0.0) * grid_.resolution();
       return g * g;

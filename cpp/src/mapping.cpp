@@ -149,9 +149,7 @@ std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>
   if (keep_hit && keep_hit->size() != scan.ranges.size())
     throw Error("ScanMap::integrate: keep_hit has " + std::to_string(keep_hit->size()) + " entries for a scan of " +
                 std::to_string(scan.ranges.size()) + " beams");
-  detail::require_finite("scan pose x", scan.pose.x);
-  detail::require_finite("scan pose y", scan.pose.y);
-  detail::require_finite("scan pose theta", scan.pose.theta);
+  scan.validate();
   next_scan();
   // A hit lies on an obstacle's surface, where rounding may put it in the free
   // cell beside; a micrometre further along the beam it is inside. Range
@@ -185,6 +183,9 @@ std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>
 }
 
 std::size_t ScanMap::mark(const std::vector<Vec2>& points) {
+  if (points.size() > static_cast<std::size_t>(limits::kMaxPoints))
+    throw Error(detail::describe("points", points.size(), "at most " + std::to_string(limits::kMaxPoints)));
+  detail::require_points("points", points.data(), points.size(), limits::kMaxQueryCoordinate);
   next_scan();
   for (const Vec2& p : points) {
     std::size_t cell = 0;
@@ -223,15 +224,20 @@ std::shared_ptr<const DistanceField> ScanMap::field() {
 }
 
 bool path_blocked(const GlobalPath& path, const Vec2& position, const DistanceField& field, double clearance) {
-  detail::require_finite("position x", position.x());
-  detail::require_finite("position y", position.y());
-  detail::require_finite("clearance", clearance);
+  detail::require_query_point("position", position);
+  detail::require_magnitude("clearance", clearance, limits::kMaxLength);
   if (!field.has_obstacles()) return false;
   const double spacing = 0.5 * field.grid().resolution();
   const double end = path.length();
-  for (double s = path.project(position).arc_length;; s += spacing) {
-    if (field.distance(path.point_at(std::min(s, end))) < clearance) return true;
+  // The field is 1-Lipschitz and the path no shorter than the straight line,
+  // so from a point at distance d nothing nearer than `clearance` lies within
+  // d - clearance along it: far from obstacles the walk takes long strides.
+  // Path lengths are bounded (limits::kMaxPathLength), so s + spacing > s.
+  for (double s = path.project(position).arc_length;;) {
+    const double d = field.distance(path.point_at(std::min(s, end)));
+    if (d < clearance) return true;
     if (s >= end) return false;
+    s += std::max(spacing, d - clearance);
   }
 }
 

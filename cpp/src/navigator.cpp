@@ -40,26 +40,34 @@ const char* to_string(MapMode mode) {
 }
 
 void NavigatorParams::validate() const {
-  detail::require_non_negative("path_margin", path_margin);
+  const auto time = [](const char* field, double value) {
+    detail::require_non_negative(field, value);
+    detail::require_at_most(field, value, limits::kMaxHorizon);
+  };
+  detail::require_distance("path_margin", path_margin);
   detail::require_positive("replan_period", replan_period);
-  detail::require_non_negative("stall_time", stall_time);
-  detail::require_non_negative("stall_distance", stall_distance);
-  detail::require_non_negative("give_up_length", give_up_length);
-  detail::require_non_negative("keep_clear", keep_clear);
-  detail::require_non_negative("sensed_close_radius", sensed_close_radius);
-  detail::require_non_negative("backup_distance", backup_distance);
+  time("replan_period", replan_period);
+  time("stall_time", stall_time);
+  detail::require_distance("stall_distance", stall_distance);
+  detail::require_distance("give_up_length", give_up_length);
+  detail::require_distance("keep_clear", keep_clear);
+  detail::require_distance("sensed_close_radius", sensed_close_radius);
+  detail::require_distance("backup_distance", backup_distance);
   detail::require_positive("backup_speed", backup_speed);
+  detail::require_at_most("backup_speed", backup_speed, limits::kMaxSpeed);
   detail::require_non_negative("rotate_limit", rotate_limit);
-  detail::require_non_negative("wait_time", wait_time);
-  detail::require_non_negative("wait_radius", wait_radius);
-  detail::require_at_least("max_recoveries", max_recoveries, 0);
-  detail::require_non_negative("progress_reset", progress_reset);
-  detail::require_at_least("record_top_k", record_top_k, 0);
+  detail::require_at_most("rotate_limit", rotate_limit, limits::kMaxAngle);
+  time("wait_time", wait_time);
+  detail::require_distance("wait_radius", wait_radius);
+  detail::require_count("max_recoveries", max_recoveries, 0, 1000000);
+  detail::require_distance("progress_reset", progress_reset);
+  detail::require_count("record_top_k", record_top_k, 0, limits::kMaxWindowSamples);
   occupancy.validate();
   segment.validate();
   tracker.validate();
   detail::require_non_negative("unknown_cost", unknown_cost);
-  detail::require_non_negative("mover_margin", mover_margin);
+  detail::require_at_most("unknown_cost", unknown_cost, 1e6);
+  detail::require_distance("mover_margin", mover_margin);
 }
 
 namespace {
@@ -123,11 +131,11 @@ const OccupancyGrid& Navigator::map() const { return planning_map_ ? *planning_m
 bool Navigator::needs_path() const { return controller_.planner().needs_path(); }
 
 void Navigator::set_goal(const Vec2& goal) {
-  detail::require_finite("goal x", goal.x());
-  detail::require_finite("goal y", goal.y());
+  detail::require_point("goal", goal);
   int row, col;
   if (!map().cell_of(goal, row, col))
-    throw Error(detail::describe("goal", "(" + std::to_string(goal.x()) + ", " + std::to_string(goal.y()) + ")",
+    throw Error(detail::describe("goal",
+                                 "(" + detail::format_number(goal.x()) + ", " + detail::format_number(goal.y()) + ")",
                                  "lies off the map"));
   goal_ = goal;
   has_goal_ = true;
@@ -428,10 +436,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
     if (scan->ranges.size() != static_cast<std::size_t>(lidar_.beams))
       throw Error("scan: " + std::to_string(scan->ranges.size()) + " ranges, but the lidar has " +
                   std::to_string(lidar_.beams) + " beams");
-    for (std::size_t i = 0; i < scan->ranges.size(); ++i)
-      if (std::isnan(scan->ranges[i]) || scan->ranges[i] < 0.0)
-        throw Error(detail::describe("scan range[" + std::to_string(i) + "]", scan->ranges[i],
-                                     "must be >= 0 (+inf for no hit)"));
+    scan->validate();
   }
   for (const Disc& d : discs) d.validate();
 

@@ -40,12 +40,13 @@ void OmplParams::validate() const {
     throw Error("planner = '" + planner + "': unknown OMPL planner (known: " + known + ")");
   }
   detail::require_positive("time_limit", time_limit);
-  detail::require_non_negative("range", range);
-  detail::require_non_negative("inflation_radius", inflation_radius);
+  detail::require_at_most("time_limit", time_limit, limits::kMaxHorizon);
+  detail::require_distance("range", range);
+  detail::require_distance("inflation_radius", inflation_radius);
   detail::require_non_negative("w_length", w_length);
   detail::require_non_negative("w_clearance", w_clearance);
-  detail::require_positive("clearance_reference", clearance_reference);
-  detail::require_positive("interpolation", interpolation);
+  detail::require_length("clearance_reference", clearance_reference);
+  detail::require_in_range("interpolation", interpolation, limits::kMinResolution, limits::kMaxLength);
   terrain.validate();
   if (w_length + w_clearance + terrain.w_risk <= 0.0) throw Error("OMPL cost: every weight is 0");
 }
@@ -185,9 +186,8 @@ OmplPlanner& OmplPlanner::operator=(OmplPlanner&&) noexcept = default;
 GlobalPlan OmplPlanner::plan(const Vec2& start, const Vec2& goal) const {
   const auto tic = std::chrono::steady_clock::now();
   const Impl& im = *impl_;
-  for (const auto& [name, v] : {std::pair{"start x", start.x()}, {"start y", start.y()}, {"goal x", goal.x()},
-                                {"goal y", goal.y()}})
-    detail::require_finite(name, v);
+  detail::require_point("start", start);
+  detail::require_point("goal", goal);
   const auto where = [](const Vec2& p) {
     return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ")";
   };

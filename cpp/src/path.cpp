@@ -11,9 +11,11 @@ namespace fgdwa {
 GlobalPath::GlobalPath(std::vector<Vec2> points) {
   if (points.size() < 2)
     throw Error(detail::describe("global path points", points.size(), "a path needs at least 2 points"));
+  if (points.size() > static_cast<std::size_t>(limits::kMaxPoints))
+    throw Error(detail::describe("global path points", points.size(),
+                                 "a path has at most " + std::to_string(limits::kMaxPoints)));
+  detail::require_points("global path point", points.data(), points.size(), limits::kMaxCoordinate);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    detail::require_finite("global path point " + std::to_string(i) + " x", points[i].x());
-    detail::require_finite("global path point " + std::to_string(i) + " y", points[i].y());
     if (points_.empty() || (points[i] - points_.back()).norm() > 1e-12) points_.push_back(points[i]);
   }
   if (points_.size() < 2) throw Error("global path: all points coincide, the path has no length");
@@ -23,9 +25,13 @@ GlobalPath::GlobalPath(std::vector<Vec2> points) {
     cumulative_.push_back(cumulative_.back() + d.norm());
     directions_.push_back(std::atan2(d.y(), d.x()));
   }
+  if (cumulative_.back() > limits::kMaxPathLength)
+    throw Error(detail::describe("global path length", cumulative_.back(),
+                                 "must be <= " + detail::format_number(limits::kMaxPathLength) + " m"));
 }
 
 PathProjection GlobalPath::project(const Vec2& p) const {
+  detail::require_query_point("point", p);
   PathProjection best;
   best.distance = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i + 1 < points_.size(); ++i) {
@@ -44,12 +50,14 @@ PathProjection GlobalPath::project(const Vec2& p) const {
 }
 
 std::size_t GlobalPath::segment_at(double s) const {
+  detail::require_finite("arc length", s);
   const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
   const std::size_t i = it == cumulative_.begin() ? 0 : static_cast<std::size_t>(it - cumulative_.begin()) - 1;
   return std::min(i, segment_count() - 1);
 }
 
 Vec2 GlobalPath::point_at(double s) const {
+  detail::require_finite("arc length", s);
   s = std::clamp(s, 0.0, length());
   const std::size_t i = segment_at(s);
   const double span = cumulative_[i + 1] - cumulative_[i];
@@ -57,6 +65,7 @@ Vec2 GlobalPath::point_at(double s) const {
 }
 
 std::vector<std::size_t> GlobalPath::key_nodes(double min_turn) const {
+  detail::require_non_negative("min_turn", min_turn);
   std::vector<std::size_t> nodes;
   for (std::size_t i = 1; i + 1 < points_.size(); ++i)
     if (std::abs(angle_difference(directions_[i], directions_[i - 1])) > min_turn) nodes.push_back(i);
@@ -66,6 +75,10 @@ std::vector<std::size_t> GlobalPath::key_nodes(double min_turn) const {
 
 void reference_samples(const GlobalPath& path, const Vec2& robot, double v_ref, double dt, int n,
                        ReferenceSampling sampling, std::vector<Vec2>& out) {
+  detail::require_query_point("robot", robot);
+  detail::require_magnitude("v_ref", v_ref, limits::kMaxSpeed);
+  detail::require_time_step("dt", dt);
+  detail::require_count("n", n, 0, limits::kMaxRolloutSteps);
   out.resize(static_cast<std::size_t>(std::max(n, 0)));
   const PathProjection p = path.project(robot);
   const double spacing = v_ref * dt;
@@ -81,7 +94,7 @@ void reference_samples(const GlobalPath& path, const Vec2& robot, double v_ref, 
 void KeyNodeParams::validate() const {
   detail::require_non_negative("key_node_angle", min_turn);
   if (min_turn >= M_PI) throw Error(detail::describe("key_node_angle", min_turn, "must be < pi"));
-  detail::require_non_negative("key_node_radius", reach_radius);
+  detail::require_distance("key_node_radius", reach_radius);
 }
 
 KeyNodeTracker::KeyNodeTracker(const GlobalPath& path, const KeyNodeParams& params)
@@ -90,6 +103,7 @@ KeyNodeTracker::KeyNodeTracker(const GlobalPath& path, const KeyNodeParams& para
 }
 
 Vec2 KeyNodeTracker::update(const Vec2& robot, const std::function<bool(const Vec2&, const Vec2&)>& in_sight) {
+  detail::require_query_point("robot", robot);
   const double along = path_->project(robot).arc_length;
   while (current_ + 1 < nodes_.size()) {
     const std::size_t vertex = nodes_[current_];

@@ -15,14 +15,28 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 void LidarParams::validate() const {
   detail::require_positive("lidar fov", fov);
   if (fov > 2.0 * M_PI) throw Error(detail::describe("lidar fov", fov, "must be <= 2 pi"));
-  detail::require_at_least("lidar beams", beams, 1);
-  detail::require_positive("lidar max_range", max_range);
-  detail::require_non_negative("lidar noise_std", noise_std);
+  detail::require_count("lidar beams", beams, 1, limits::kMaxBeams);
+  detail::require_length("lidar max_range", max_range);
+  detail::require_distance("lidar noise_std", noise_std);
   detail::require_non_negative("lidar dropout", dropout);
   if (dropout >= 1.0) throw Error(detail::describe("lidar dropout", dropout, "must be < 1 (a probability)"));
 }
 
+void Scan::validate() const {
+  detail::require_query_pose("scan pose", pose);
+  detail::require_magnitude("scan angle_min", angle_min, 2.0 * M_PI);
+  detail::require_magnitude("scan angle_increment", angle_increment, 2.0 * M_PI);
+  detail::require_distance("scan max_range", max_range);
+  if (ranges.size() > static_cast<std::size_t>(limits::kMaxBeams))
+    throw Error(detail::describe("scan ranges", ranges.size(),
+                                 "a scan has at most " + std::to_string(limits::kMaxBeams) + " beams"));
+  for (std::size_t i = 0; i < ranges.size(); ++i)
+    if (!(ranges[i] >= 0.0))
+      throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", ranges[i], "must be >= 0 (+inf: no hit)"));
+}
+
 std::vector<Vec2> Scan::hit_points() const {
+  validate();
   std::vector<Vec2> points;
   for (std::size_t i = 0; i < ranges.size(); ++i) {
     if (!std::isfinite(ranges[i])) continue;
@@ -85,6 +99,13 @@ double LaserScanner::cast_grid(const Vec2& origin, const Vec2& dir) const {
 }
 
 double LaserScanner::cast(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const {
+  detail::require_query_point("origin", origin);
+  detail::require_magnitude("angle", angle, limits::kMaxAngle);
+  detail::require_magnitude("t", t, limits::kMaxHorizon);
+  return cast_unchecked(origin, angle, discs, t);
+}
+
+double LaserScanner::cast_unchecked(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const {
   const Vec2 dir(std::cos(angle), std::sin(angle));
   double best = cast_grid(origin, dir);
   for (const Disc& disc : discs) {
@@ -102,6 +123,9 @@ double LaserScanner::cast(const Vec2& origin, double angle, const std::vector<Di
 
 void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, double t, std::mt19937_64& rng,
                         Scan& out) const {
+  detail::require_query_pose("pose", pose);
+  detail::require_magnitude("t", t, limits::kMaxHorizon);
+  for (const Disc& disc : discs) disc.validate();
   out.pose = pose;
   out.angle_min = -0.5 * params_.fov;
   out.angle_increment = params_.increment();
@@ -116,7 +140,7 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
       out.ranges[static_cast<std::size_t>(i)] = kInf;
       continue;
     }
-    double r = cast(pose.position(), pose.theta + params_.angle(i), discs, t);
+    double r = cast_unchecked(pose.position(), pose.theta + params_.angle(i), discs, t);
     if (std::isfinite(r) && params_.noise_std > 0.0) r = std::clamp(r + noise(rng), 0.0, params_.max_range);
     out.ranges[static_cast<std::size_t>(i)] = r;
   }
@@ -125,12 +149,14 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
 void DetectWindowParams::validate() const {
   detail::require_positive("detect window half_angle", half_angle);
   if (half_angle > M_PI) throw Error(detail::describe("detect window half_angle", half_angle, "must be <= pi"));
-  detail::require_positive("detect window radius", radius);
+  detail::require_length("detect window radius", radius);
   detail::require_positive("detect window base", base);
+  detail::require_at_most("detect window base", base, 1e6);
 }
 
 DensityReading obstacle_density(const Scan& scan, const DetectWindowParams& params) {
   params.validate();
+  scan.validate();
   DensityReading reading;
   const double R = params.radius;
   double area = 0.0;
@@ -157,13 +183,22 @@ DensityReading obstacle_density(const Scan& scan, const DetectWindowParams& para
 }
 
 std::shared_ptr<DistanceField> points_field(const std::vector<Vec2>& points, double resolution) {
-  detail::require_positive("resolution", resolution);
+  detail::require_resolution("resolution", resolution);
   if (points.empty()) return nullptr;
+  if (points.size() > static_cast<std::size_t>(limits::kMaxPoints))
+    throw Error(detail::describe("points", points.size(), "at most " + std::to_string(limits::kMaxPoints)));
   Vec2 lo = points.front(), hi = points.front();
+  detail::require_points("points", points.data(), points.size(), limits::kMaxCoordinate);
   for (const Vec2& p : points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
+  const double spread = (std::floor((hi.x() - lo.x()) / resolution) + 2.0) * (std::floor((hi.y() - lo.y()) / resolution) + 2.0);
+  if (spread > static_cast<double>(limits::kMaxGridCells))
+    throw Error(detail::describe("points", points.size(),
+                                 "spread over about " + detail::format_number(spread) + " cells of " +
+                                     detail::format_number(resolution) + " m: more than " +
+                                     std::to_string(limits::kMaxGridCells)));
   // Cells aligned to multiples of the resolution, so fields of successive scans agree.
   const Vec2 origin(std::floor(lo.x() / resolution) * resolution, std::floor(lo.y() / resolution) * resolution);
   const int cols = static_cast<int>(std::floor((hi.x() - origin.x()) / resolution)) + 1;

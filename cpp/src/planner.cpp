@@ -5,6 +5,7 @@
 #include <limits>
 #include <tuple>
 
+#include "admissibility.hpp"
 #include "step_sweep.hpp"
 #include "validation.hpp"
 
@@ -67,14 +68,20 @@ void validate_passing_factors(const PassingFactors& factors) {
 int PlannerParams::n_steps() const { return static_cast<int>(std::lround(sim_time / dt)); }
 
 void PlannerParams::validate() const {
-  detail::require_positive("dt", dt);
+  detail::require_time_step("dt", dt);
   detail::require_positive("sim_time", sim_time);
+  detail::require_at_most("sim_time", sim_time, limits::kMaxHorizon);
+  if (sim_time / dt > static_cast<double>(limits::kMaxRolloutSteps))
+    throw Error(detail::describe("sim_time", sim_time,
+                                 "covers more than " + std::to_string(limits::kMaxRolloutSteps) +
+                                     " steps of dt = " + detail::format_number(dt)));
   if (n_steps() < 1) throw Error(detail::describe("sim_time", sim_time, "must be at least one dt"));
   window.validate();
-  detail::require_non_negative("goal_tolerance", goal_tolerance);
-  detail::require_non_negative("safety_margin", safety_margin);
+  detail::require_distance("goal_tolerance", goal_tolerance);
+  detail::require_distance("safety_margin", safety_margin);
   detail::require_non_negative("moving_horizon", moving_horizon);
-  detail::require_non_negative("mover_caution_radius", mover_caution_radius);
+  detail::require_at_most("moving_horizon", moving_horizon, limits::kMaxHorizon);
+  detail::require_distance("mover_caution_radius", mover_caution_radius);
   if (!(mover_speed_weight >= 0.0 && mover_speed_weight <= 1.0))
     throw Error(detail::describe("mover_speed_weight", mover_speed_weight, "must be in [0, 1]"));
   key_nodes.validate();
@@ -206,15 +213,13 @@ const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, 
 const PlanResult& LocalPlanner::plan(const RobotState& state, const Vec2& goal, const Vec2& target,
                                      const ClearanceSource& world) {
   detail::require_finite_state(state);
-  detail::require_finite("target x", target.x());
-  detail::require_finite("target y", target.y());
+  detail::require_point("target", target);
   return run_cycle(state, goal, target, -1, world);
 }
 
 const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& goal, const Vec2& target, int key_node,
                                           const ClearanceSource& world) {
-  detail::require_finite("goal x", goal.x());
-  detail::require_finite("goal y", goal.y());
+  detail::require_point("goal", goal);
   result_.target = target;
   result_.key_node = key_node;
   result_.best_index = -1;
@@ -376,10 +381,10 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       if (bounds_[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = std::min(min_clearance, exact(k));
     result_.min_clearance[i] = min_clearance + margin;
     result_.free_distance[i] = free_distance;
-    RejectReason reason = is_admissible(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;
+    RejectReason reason = detail::is_admissible_unchecked(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;
     if (reason == RejectReason::None && impassable_) {
       const int k = first_terrain_contact(poses, terrain_centre_only);
-      if (k < n_steps_ && !is_admissible(cmd, k * cmd.v * params_.dt, limits_, params_.dt, params_.braking))
+      if (k < n_steps_ && !detail::is_admissible_unchecked(cmd, k * cmd.v * params_.dt, limits_, params_.dt, params_.braking))
         reason = RejectReason::Terrain;
       // A pit is as impassable as a wall: the clearance critic keeps the robot
       // off its edge too, leaving it room to get out of a mover's way there.

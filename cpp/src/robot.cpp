@@ -11,19 +11,26 @@ namespace fgdwa {
 using detail::describe;
 
 void RobotLimits::validate() const {
+  using limits::kMaxAcceleration;
+  using limits::kMaxSpeed;
   detail::require_non_negative("v_min", v_min);
   detail::require_positive("v_max", v_max);
+  detail::require_at_most("v_max", v_max, kMaxSpeed);
   if (v_min > v_max)
-    throw Error(describe("v_min", v_min, "must be <= v_max = " + std::to_string(v_max)));
+    throw Error(describe("v_min", v_min, "must be <= v_max = " + detail::format_number(v_max)));
   detail::require_positive("omega_max", omega_max);
-  detail::require_positive("acc_v", acc_v);
-  detail::require_positive("acc_omega", acc_omega);
-  detail::require_non_negative("brake_v", brake_v);
-  detail::require_non_negative("brake_omega", brake_omega);
+  detail::require_at_most("omega_max", omega_max, kMaxSpeed);
+  using limits::kMinAcceleration;
+  detail::require_in_range("acc_v", acc_v, kMinAcceleration, kMaxAcceleration);
+  detail::require_in_range("acc_omega", acc_omega, kMinAcceleration, kMaxAcceleration);
+  // 0: the acceleration's.
+  if (brake_v != 0.0) detail::require_in_range("brake_v", brake_v, kMinAcceleration, kMaxAcceleration);
+  if (brake_omega != 0.0) detail::require_in_range("brake_omega", brake_omega, kMinAcceleration, kMaxAcceleration);
 }
 
 Footprint Footprint::circle(double radius) {
   detail::require_positive("footprint radius", radius);
+  detail::require_at_most("footprint radius", radius, limits::kMaxFootprintRadius);
   Footprint fp;
   fp.radius_ = radius;
   fp.inscribed_radius_ = radius;
@@ -38,9 +45,13 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 Footprint Footprint::polygon(std::vector<Vec2> vertices) {
   if (vertices.size() < 3)
     throw Error(describe("footprint vertices", vertices.size(), "a polygon needs at least 3 vertices"));
-  for (const Vec2& v : vertices) {
-    detail::require_finite("footprint vertex x", v.x());
-    detail::require_finite("footprint vertex y", v.y());
+  if (vertices.size() > static_cast<std::size_t>(limits::kMaxPolygonVertices))
+    throw Error(describe("footprint vertices", vertices.size(),
+                         "a polygon has at most " + std::to_string(limits::kMaxPolygonVertices)));
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const std::string name = "footprint vertex " + std::to_string(i);
+    detail::require_magnitude(name + " x", vertices[i].x(), limits::kMaxFootprintRadius);
+    detail::require_magnitude(name + " y", vertices[i].y(), limits::kMaxFootprintRadius);
   }
   double area2 = 0.0;
   const size_t n = vertices.size();
@@ -51,8 +62,19 @@ Footprint Footprint::polygon(std::vector<Vec2> vertices) {
     const Vec2 e1 = vertices[(i + 1) % n] - vertices[i];
     const Vec2 e2 = vertices[(i + 2) % n] - vertices[(i + 1) % n];
     if (cross(e1, e2) < -1e-12)
-      throw Error(describe("footprint vertex", i + 1, "polygon is not convex at this vertex"));
+      throw Error(describe("footprint vertex", (i + 1) % n, "polygon is not convex at this vertex"));
   }
+  // Turning the same way at every vertex, a simple outline turns once around;
+  // a self-intersecting one (a star) turns two or more times.
+  double turning = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 e1 = vertices[(i + 1) % n] - vertices[i];
+    const Vec2 e2 = vertices[(i + 2) % n] - vertices[(i + 1) % n];
+    turning += std::atan2(cross(e1, e2), e1.dot(e2));
+  }
+  if (std::abs(turning - 2.0 * M_PI) > 1e-6)
+    throw Error(describe("footprint polygon", detail::format_number(turning / (2.0 * M_PI)) + " turns",
+                         "the outline intersects itself (a convex polygon turns once around)"));
   Footprint fp;
   fp.vertices_ = std::move(vertices);
   for (const Vec2& v : fp.vertices_) fp.radius_ = std::max(fp.radius_, v.norm());
@@ -95,6 +117,8 @@ Vec2 to_robot_frame(const Pose2& pose, const Vec2& p) {
 }  // namespace
 
 bool Footprint::contains(const Pose2& pose, const Vec2& p) const {
+  detail::require_query_pose("pose", pose);
+  detail::require_query_point("point", p);
   if (is_circle()) return (p - pose.position()).norm() <= radius_;
   const Vec2 q = to_robot_frame(pose, p);
   const size_t n = vertices_.size();
@@ -104,6 +128,8 @@ bool Footprint::contains(const Pose2& pose, const Vec2& p) const {
 }
 
 double Footprint::signed_distance(const Pose2& pose, const Vec2& p) const {
+  detail::require_query_pose("pose", pose);
+  detail::require_query_point("point", p);
   if (is_circle()) return (p - pose.position()).norm() - radius_;
   const Vec2 q = to_robot_frame(pose, p);
   double d = std::numeric_limits<double>::infinity();
@@ -113,6 +139,9 @@ double Footprint::signed_distance(const Pose2& pose, const Vec2& p) const {
 }
 
 Pose2 step(const Pose2& pose, const Twist& twist, double dt) {
+  detail::require_query_pose("pose", pose);
+  detail::require_twist("twist", twist);
+  detail::require_step_length("dt", dt);
   Pose2 next;
   next.theta = wrap_angle(pose.theta + twist.omega * dt);
   next.x = pose.x + twist.v * std::cos(next.theta) * dt;
@@ -144,6 +173,10 @@ void RolloutHeadings::assign(double start_theta, double cos_start, double sin_st
 }
 
 void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out) {
+  detail::require_query_pose("start", start);
+  detail::require_twist("twist", twist);
+  detail::require_step_length("dt", dt);
+  detail::require_count("n_steps", n_steps, 0, limits::kMaxRolloutSteps);
   thread_local RolloutHeadings headings;  // storage reused by a control loop's calls
   headings.assign(start.theta, std::cos(start.theta), std::sin(start.theta), twist.omega, dt, n_steps);
   rollout(start, twist.v * dt, headings, out);

@@ -12,14 +12,15 @@
 namespace fgdwa {
 
 void SegmentParams::validate() const {
-  detail::require_positive("segment base_gap", base_gap);
+  detail::require_length("segment base_gap", base_gap);
   detail::require_non_negative("segment range_gap_factor", range_gap_factor);
-  detail::require_at_least("segment min_points", min_points, 1);
-  detail::require_positive("segment max_size", max_size);
+  detail::require_at_most("segment range_gap_factor", range_gap_factor, 1e3);
+  detail::require_count("segment min_points", min_points, 1, limits::kMaxBeams);
+  detail::require_length("segment max_size", max_size);
   detail::require_positive("segment min_radius", min_radius);
   if (min_radius > 0.5 * max_size)
     throw Error(detail::describe("segment min_radius", min_radius, "must be <= max_size / 2"));
-  detail::require_positive("segment range_noise", range_noise);
+  detail::require_length("segment range_noise", range_noise);
 }
 
 namespace {
@@ -115,10 +116,7 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
 std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params,
                                   const std::vector<std::uint8_t>* mask) {
   params.validate();
-  detail::require_finite("scan pose x", scan.pose.x);
-  detail::require_finite("scan pose y", scan.pose.y);
-  detail::require_finite("scan pose theta", scan.pose.theta);
-  detail::require_finite("scan angle_min", scan.angle_min);
+  scan.validate();
   detail::require_non_negative("scan angle_increment", scan.angle_increment);
   const std::size_t n = scan.ranges.size();
   if (mask && mask->size() != n)

@@ -21,19 +21,29 @@ const char* to_string(TrackStatus status) {
 }
 
 void TrackerParams::validate() const {
-  detail::require_positive("tracker gate", gate);
+  using limits::kMaxHorizon;
+  using limits::kMaxSpeed;
+  detail::require_length("tracker gate", gate);
   detail::require_positive("tracker gate_sigmas", gate_sigmas);
+  detail::require_at_most("tracker gate_sigmas", gate_sigmas, 1e3);
   detail::require_positive("tracker accel_std", accel_std);
-  detail::require_positive("tracker measurement_std", measurement_std);
-  detail::require_at_least("tracker confirm_hits", confirm_hits, 1);
+  detail::require_at_most("tracker accel_std", accel_std, limits::kMaxAcceleration);
+  detail::require_length("tracker measurement_std", measurement_std);
+  detail::require_count("tracker confirm_hits", confirm_hits, 1, 1000000);
   detail::require_positive("tracker lost_time", lost_time);
+  detail::require_at_most("tracker lost_time", lost_time, kMaxHorizon);
   detail::require_non_negative("tracker moving_speed", moving_speed);
+  detail::require_at_most("tracker moving_speed", moving_speed, kMaxSpeed);
   detail::require_non_negative("tracker moving_sigmas", moving_sigmas);
+  detail::require_at_most("tracker moving_sigmas", moving_sigmas, 1e3);
   detail::require_positive("tracker moving_window", moving_window);
-  detail::require_positive("tracker free_margin", free_margin);
+  detail::require_at_most("tracker moving_window", moving_window, kMaxHorizon);
+  detail::require_length("tracker free_margin", free_margin);
   detail::require_positive("tracker max_speed", max_speed);
+  detail::require_at_most("tracker max_speed", max_speed, kMaxSpeed);
   detail::require_non_negative("tracker uncertainty_sigmas", uncertainty_sigmas);
-  detail::require_non_negative("tracker max_uncertainty", max_uncertainty);
+  detail::require_at_most("tracker uncertainty_sigmas", uncertainty_sigmas, 1e3);
+  detail::require_distance("tracker max_uncertainty", max_uncertainty);
 }
 
 namespace {
@@ -238,9 +248,8 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time, const Sc
     throw Error(detail::describe("tracker time", time, "must not be before the last update's " + std::to_string(time_)));
   for (std::size_t i = 0; i < clusters.size(); ++i) {
     const std::string name = "cluster[" + std::to_string(i) + "] ";
-    detail::require_finite(name + "center x", clusters[i].center.x());
-    detail::require_finite(name + "center y", clusters[i].center.y());
-    detail::require_non_negative(name + "radius", clusters[i].radius);
+    detail::require_query_point(name + "center", clusters[i].center);
+    detail::require_distance(name + "radius", clusters[i].radius);
     for (const Vec2& p : clusters[i].points)
       if (!p.allFinite()) throw Error(name + "points: must be finite");
   }

@@ -3,13 +3,30 @@
 #include <algorithm>
 #include <cmath>
 
+#include "admissibility.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
 
 void WindowParams::validate() const {
-  detail::require_at_least("n_v", n_v, 1);
-  detail::require_at_least("n_omega", n_omega, 1);
+  detail::require_count("n_v", n_v, 1, limits::kMaxWindowSamplesPerAxis);
+  detail::require_count("n_omega", n_omega, 1, limits::kMaxWindowSamplesPerAxis);
+  if (static_cast<long>(n_v) * n_omega > limits::kMaxWindowSamples)
+    throw Error(detail::describe("n_v * n_omega", static_cast<long>(n_v) * n_omega,
+                                 "must be <= " + std::to_string(limits::kMaxWindowSamples)));
+}
+
+void VelocityWindow::validate() const {
+  using limits::kMaxSpeed;
+  detail::require_magnitude("window v_lo", v_lo, kMaxSpeed);
+  detail::require_magnitude("window v_hi", v_hi, kMaxSpeed);
+  detail::require_magnitude("window omega_lo", omega_lo, kMaxSpeed);
+  detail::require_magnitude("window omega_hi", omega_hi, kMaxSpeed);
+  if (v_lo > v_hi)
+    throw Error(detail::describe("window v_lo", v_lo, "must be <= v_hi = " + detail::format_number(v_hi)));
+  if (omega_lo > omega_hi)
+    throw Error(
+        detail::describe("window omega_lo", omega_lo, "must be <= omega_hi = " + detail::format_number(omega_hi)));
 }
 
 bool VelocityWindow::contains(const Twist& t, double tol) const {
@@ -62,6 +79,9 @@ void snap(std::vector<double>& values, double x, double lo, double hi, std::size
 }  // namespace
 
 VelocityWindow dynamic_window(const RobotLimits& limits, const Twist& current, double dt) {
+  limits.validate();
+  detail::require_twist("current", current);
+  detail::require_step_length("dt", dt);
   VelocityWindow w;
   intersect(limits.v_min, limits.v_max, current.v - limits.acc_v * dt, current.v + limits.acc_v * dt, w.v_lo, w.v_hi);
   intersect(-limits.omega_max, limits.omega_max, current.omega - limits.acc_omega * dt,
@@ -71,6 +91,9 @@ VelocityWindow dynamic_window(const RobotLimits& limits, const Twist& current, d
 
 void sample_window(const VelocityWindow& w, const Twist& current, const WindowParams& params,
                    std::vector<Twist>& out) {
+  w.validate();
+  detail::require_twist("current", current);
+  params.validate();
   thread_local std::vector<double> vs, ws;
   linspace(w.v_lo, w.v_hi, params.n_v, vs);
   linspace(w.omega_lo, w.omega_hi, params.n_omega, ws);
@@ -86,6 +109,13 @@ void sample_window(const VelocityWindow& w, const Twist& current, const WindowPa
 }
 
 double stopping_distance(double v, double deceleration, double dt) {
+  detail::require_magnitude("v", v, limits::kMaxSpeed);
+  detail::require_in_range("deceleration", deceleration, limits::kMinAcceleration, limits::kMaxAcceleration);
+  detail::require_time_step("dt", dt);
+  return detail::stopping_distance_unchecked(v, deceleration, dt);
+}
+
+double detail::stopping_distance_unchecked(double v, double deceleration, double dt) {
   if (v <= 0.0) return 0.0;
   const double drop = deceleration * dt;
   const double m = std::floor(v / drop);  // periods after the first with speed left
@@ -93,6 +123,12 @@ double stopping_distance(double v, double deceleration, double dt) {
 }
 
 double arc_deceleration(const Twist& command, const RobotLimits& limits) {
+  detail::require_twist("command", command);
+  limits.validate();
+  return detail::arc_deceleration_unchecked(command, limits);
+}
+
+double detail::arc_deceleration_unchecked(const Twist& command, const RobotLimits& limits) {
   double b = std::min(limits.acc_v, limits.braking_v());
   if (command.omega != 0.0 && command.v > 0.0)
     b = std::min(b, std::min(limits.acc_omega, limits.braking_omega()) * command.v / std::abs(command.omega));
@@ -101,15 +137,26 @@ double arc_deceleration(const Twist& command, const RobotLimits& limits) {
 
 bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits, double dt,
                    BrakingModel model) {
+  detail::require_twist("command", command);
+  if (std::isnan(free_distance) || free_distance < 0.0)
+    throw Error(detail::describe("free_distance", free_distance, "must be >= 0 (+inf: no contact)"));
+  limits.validate();
+  detail::require_time_step("dt", dt);
+  return detail::is_admissible_unchecked(command, free_distance, limits, dt, model);
+}
+
+bool detail::is_admissible_unchecked(const Twist& command, double free_distance, const RobotLimits& limits, double dt,
+                                     BrakingModel model) {
   if (std::isinf(free_distance)) return true;
-  const bool v_ok = model == BrakingModel::Continuous
-                        ? command.v <= std::sqrt(2.0 * free_distance * limits.braking_v())
-                        : stopping_distance(command.v, arc_deceleration(command, limits), dt) <= free_distance;
+  const bool v_ok =
+      model == BrakingModel::Continuous
+          ? command.v <= std::sqrt(2.0 * free_distance * limits.braking_v())
+          : stopping_distance_unchecked(command.v, arc_deceleration_unchecked(command, limits), dt) <= free_distance;
   return v_ok && std::abs(command.omega) <= std::sqrt(2.0 * free_distance * limits.braking_omega());
 }
 
 Twist braking_command(const RobotLimits& limits, const Twist& current, double dt) {
-  const VelocityWindow w = dynamic_window(limits, current, dt);
+  const VelocityWindow w = dynamic_window(limits, current, dt);  // checks the arguments
   // Scale (v, omega) toward (0, 0) as far as the window allows: the robot slows
   // down on the arc it was on, the one its last command was checked along.
   double s = 0.0;

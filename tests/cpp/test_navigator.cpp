@@ -351,7 +351,7 @@ TEST(Navigator, RejectsBadInputNamingIt) {
   expect_error_naming([&] { nav.step(at(1.0, 1.0), &scan, 0.0); }, "beams");
   scan.ranges.assign(static_cast<std::size_t>(lidar.beams), 1.0);
   scan.ranges[17] = nan;
-  expect_error_naming([&] { nav.step(at(1.0, 1.0), &scan, 0.0); }, "range[17]");
+  expect_error_naming([&] { nav.step(at(1.0, 1.0), &scan, 0.0); }, "ranges[17]");
   expect_error_naming([&] { nav.step(at(nan, 1.0), nullptr, 0.0); }, "state x");
   expect_error_naming([&] { nav.step(at(1.0, 1.0), nullptr, nan); }, "time");
   TerrainGrid other(10, 10, 0.1, Vec2(0.0, 0.0), std::vector<std::uint8_t>(100, 0));

@@ -28,6 +28,9 @@ struct Scan {
   double angle_increment = 0.0;
   double max_range = 0.0;      // m
   std::vector<double> ranges;  // m, +inf where nothing was hit within max_range
+  // Throws fgdwa::Error naming the first bad field: a NaN or negative range,
+  // more than limits::kMaxBeams beams, a pose or angles out of bounds.
+  void validate() const;
   // World positions of the beams' hits.
   std::vector<Vec2> hit_points() const;
 };
@@ -47,6 +50,7 @@ class LaserScanner {
   double cast(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const;
 
  private:
+  double cast_unchecked(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const;
   double cast_grid(const Vec2& origin, const Vec2& direction) const;
   LidarParams params_;
   std::shared_ptr<const DistanceField> world_;

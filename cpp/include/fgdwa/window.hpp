@@ -19,6 +19,9 @@ struct VelocityWindow {
   double v_lo = 0.0, v_hi = 0.0;          // m/s
   double omega_lo = 0.0, omega_hi = 0.0;  // rad/s
   bool contains(const Twist& twist, double tolerance = 1e-9) const;
+  // Throws fgdwa::Error unless every end is finite, within limits::kMaxSpeed
+  // and lo <= hi.
+  void validate() const;
 };
 
 // Vm ∩ Vd for the current velocity. When the current velocity lies so far
