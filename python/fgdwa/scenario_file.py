@@ -31,10 +31,11 @@ from fgdwa._core import (
     planner_preset,
     preset_names,
 )
+from fgdwa.file_limits import clip, is_file, read_text
 from fgdwa.scenario import PARAM_FIELDS, Scenario, Variability, params_with
 from fgdwa.scenario_checks import FeasibilityChecks
 from fgdwa.scenario_maps import MapReader
-from fgdwa.scenario_values import join_key, parse_yaml, short_repr
+from fgdwa.scenario_values import is_number, join_key, parse_yaml, short_repr
 from fgdwa.world import MOVER_MODES, MovingObstacle, World
 
 SHIPPED_DIR = Path(__file__).resolve().parent / "scenarios"
@@ -75,13 +76,13 @@ def load_scenario(source: Union[str, os.PathLike], base_dir: Union[str, os.PathL
     if isinstance(source, os.PathLike):
         return _load_file(Path(source))
     if not isinstance(source, str):
-        raise FgdwaError(f"load_scenario: source = {source!r}: expected a path, YAML text or a shipped scenario "
-                         f"name ({', '.join(shipped_scenarios())})")
+        raise FgdwaError(f"load_scenario: source = {short_repr(source)}: expected a path, YAML text or a shipped "
+                         f"scenario name ({', '.join(shipped_scenarios())})")
     one_line = "\n" not in source
-    if one_line and (source.strip().endswith((".yaml", ".yml")) or Path(source).is_file()):
+    if one_line and (source.strip().endswith((".yaml", ".yml")) or is_file(source)):
         return _load_file(Path(source))
     if one_line and ":" not in source:
-        raise FgdwaError(f"load_scenario: source = {source!r}: neither a shipped scenario "
+        raise FgdwaError(f"load_scenario: source = {short_repr(source)}: neither a shipped scenario "
                          f"({', '.join(shipped_scenarios())}), an existing file, nor YAML text")
     return _load_text(source, TEXT, Path(base_dir) if base_dir is not None else Path.cwd())
 
@@ -92,13 +93,13 @@ def scenario_from_dict(data: Any, where: str = "<dict>", base_dir: Union[str, os
 
 
 def _load_file(path: Path) -> Scenario:
-    where = str(path)
+    where = clip(str(path), 4096)  # a longer name is no file's (PATH_MAX)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = read_text(path, where)
     except FileNotFoundError:
         raise FgdwaError(f"{where}: no such scenario file") from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise FgdwaError(f"{where}: cannot read the scenario file ({error})") from None
+    except (OSError, ValueError) as error:  # ValueError: not UTF-8, or a NUL in the name
+        raise FgdwaError(f"{where}: cannot read the scenario file ({clip(error)})") from None
     return _load_text(text, where, path.resolve().parent, default_name=path.stem)
 
 
@@ -117,7 +118,8 @@ class _Reader(MapReader, FeasibilityChecks):
         except FgdwaError:
             raise
         except Exception as error:  # a bug here must still say which file it was reading
-            raise FgdwaError(f"{self.where}: could not read the scenario ({type(error).__name__}: {error})") from error
+            raise FgdwaError(f"{self.where}: could not read the scenario "
+                             f"({type(error).__name__}: {clip(error)})") from error
 
     def _scenario(self, data: Any) -> Scenario:
         if not isinstance(data, dict):

@@ -13,10 +13,12 @@ import numpy as np
 import yaml
 
 from fgdwa._core import FgdwaError, PlannerParams, critic_names
+from fgdwa.file_limits import LimitedSafeLoader, clip, is_file, load_yaml, short_repr
 
 
-class _StrictLoader(yaml.SafeLoader):
-    """SafeLoader that refuses duplicate keys and reads 1e-3 as a number (YAML 1.1 wants 1.0e-3)."""
+class _StrictLoader(LimitedSafeLoader):
+    """The limited SafeLoader (fgdwa.file_limits) refusing duplicate keys and reading
+    1e-3 as a number (YAML 1.1 wants 1.0e-3)."""
 
     def construct_mapping(self, node, deep=False):
         if isinstance(node, yaml.MappingNode):
@@ -27,10 +29,10 @@ class _StrictLoader(yaml.SafeLoader):
                 try:
                     duplicate = key in seen
                 except TypeError:
-                    raise yaml.constructor.ConstructorError(None, None, f"unhashable key {key!r}",
+                    raise yaml.constructor.ConstructorError(None, None, f"unhashable key {short_repr(key)}",
                                                             key_node.start_mark) from None
                 if duplicate:
-                    raise yaml.constructor.ConstructorError(None, None, f"duplicate key {key!r}",
+                    raise yaml.constructor.ConstructorError(None, None, f"duplicate key {short_repr(key)}",
                                                             key_node.start_mark)
                 seen.add(key)
         return super().construct_mapping(node, deep=deep)
@@ -43,24 +45,8 @@ _StrictLoader.add_implicit_resolver(
 
 
 def parse_yaml(text: str, where: str) -> Any:
-    try:
-        return yaml.load(text, Loader=_StrictLoader)  # noqa: S506 (a SafeLoader subclass)
-    except yaml.MarkedYAMLError as error:
-        mark = error.problem_mark or error.context_mark
-        problem = error.problem or error.context or "malformed YAML"
-        if mark is None:
-            raise FgdwaError(f"{where}: malformed YAML: {problem}") from None
-        lines = text.splitlines()
-        line = lines[mark.line] if 0 <= mark.line < len(lines) else ""
-        raise FgdwaError(f"{where}: malformed YAML at line {mark.line + 1}, column {mark.column + 1}: {problem} "
-                         f"(line {mark.line + 1} = {line.strip()!r})") from None
-    except yaml.YAMLError as error:
-        raise FgdwaError(f"{where}: malformed YAML: {error}") from None
-
-
-def short_repr(value: Any, limit: int = 80) -> str:
-    text = repr(value)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    """A scenario document: strict YAML within the limits of fgdwa.file_limits."""
+    return load_yaml(text, where, _StrictLoader)
 
 
 def join_key(parent: str, child: Union[str, int]) -> str:
@@ -82,14 +68,14 @@ class ValueReader:
         self.default_name = default_name
 
     def fail(self, key: str, value: Any, problem: str):
-        raise FgdwaError(f"{self.where}: {key} = {short_repr(value)}: {problem}")
+        raise FgdwaError(f"{self.where}: {clip(key, 200)} = {short_repr(value)}: {clip(problem, 4000)}")
 
     def mapping(self, value: Any, key: str, allowed: Sequence[str], required: Sequence[str] = ()) -> dict:
         if not isinstance(value, dict):
             self.fail(key, value, f"expected a mapping with keys {', '.join(allowed)}")
         for name, item in value.items():
             if not isinstance(name, str) or name not in allowed:
-                close = difflib.get_close_matches(str(name), allowed, n=1)
+                close = difflib.get_close_matches(clip(str(name), 100), allowed, n=1)
                 hint = f"; did you mean {close[0]!r}?" if close else ""
                 self.fail(join_key(key, str(name)), item, f"unknown key (known here: {', '.join(allowed)}){hint}")
         for name in required:
@@ -142,11 +128,14 @@ class ValueReader:
 
     def file(self, value: Any, key: str, suffixes: Sequence[str]) -> Path:
         name = self.string(value, key)
-        path = Path(name).expanduser()
+        try:
+            path = Path(name).expanduser()
+        except RuntimeError:  # ~user of no user
+            path = Path(name)
         if not path.is_absolute():
             path = self.base_dir / path
-        if not path.is_file():
-            self.fail(key, value, f"no such file ({path})")
+        if not is_file(path):
+            self.fail(key, value, f"no such file ({clip(path, 300)})")
         if path.suffix.lower() not in suffixes:
             self.fail(key, value, f"expected a {' or '.join(suffixes)} file")
         return path
