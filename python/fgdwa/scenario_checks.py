@@ -1,8 +1,10 @@
 """Whether a scenario can be run: the start and goal free for the footprint and
-on the map, and a path between them."""
+on the map, the start farther from the goal than the goal tolerance, and a path
+between them."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 
@@ -43,6 +45,13 @@ class FeasibilityChecks(ValueReader):
                                      f"{footprint.inscribed_radius:g} m there overlaps one)")
         if world.grade_at(goal) >= 4:
             self.fail("goal", value, "on impassable terrain (grade 4)")
+
+    def check_not_at_goal(self, start: tuple, goal: tuple, tolerance: float, key: str, value: Any) -> None:
+        """A start within the goal tolerance would report every run a success before it moves."""
+        distance = math.hypot(goal[0] - start[0], goal[1] - start[1])
+        if distance <= tolerance:
+            self.fail(key, value, f"the start is {distance:g} m from the goal, within the goal tolerance "
+                                  f"{tolerance:g} m: every run would succeed before the robot moves")
 
     def check_reachable(self, start: tuple, goal: tuple, value: Any, world: World, footprint: Footprint,
                         options: dict) -> None:

@@ -1,5 +1,10 @@
 """Reading scenario YAML: a strict YAML loader, and the typed readers whose
-every error names the file, the key path and the offending value."""
+every error names the file, the key path and the offending value.
+
+Every number read is held to the limits of ``fgdwa.file_limits``: a position to
+MAX_COORDINATE, a length to MAX_LENGTH, a time to MAX_DURATION, a count to
+MAX_COUNT, and any number without a narrower limit to MAX_MAGNITUDE, so that no
+file can hand the core a value it would choke on (docs/scenarios.md, Limits)."""
 
 from __future__ import annotations
 
@@ -13,6 +18,7 @@ import numpy as np
 import yaml
 
 from fgdwa._core import FgdwaError, PlannerParams, critic_names
+from fgdwa import file_limits as limits
 from fgdwa.file_limits import LimitedSafeLoader, clip, is_file, load_yaml, short_repr
 
 
@@ -84,23 +90,44 @@ class ValueReader:
         return value
 
     def number(self, value: Any, key: str, low: Optional[float] = None, high: Optional[float] = None,
-               low_open: bool = False) -> float:
+               low_open: bool = False, limit: str = "MAX_MAGNITUDE") -> float:
+        """A finite number within [low, high] (or (low, high]), and within +-``limit``, the
+        name of a constant of fgdwa.file_limits (default MAX_MAGNITUDE)."""
         if not is_number(value):
             self.fail(key, value, "expected a number")
-        value = float(value)
+        try:
+            value = float(value)
+        except OverflowError:  # an integer beyond float's range
+            self.fail(key, value, "must be finite")
         if not math.isfinite(value):
             self.fail(key, value, "must be finite")
         if low is not None and (value <= low if low_open else value < low):
             self.fail(key, value, f"must be {'>' if low_open else '>='} {low:g}")
         if high is not None and value > high:
             self.fail(key, value, f"must be <= {high:g}")
+        bound = getattr(limits, limit)
+        if abs(value) > bound:
+            self.fail(key, value, f"must be within +-{bound:g} (fgdwa.file_limits.{limit})")
         return value
 
-    def integer(self, value: Any, key: str, low: Optional[int] = None) -> int:
+    def length(self, value: Any, key: str, positive: bool = False) -> float:
+        """A length in metres: >= 0 (> 0 when ``positive``), at most MAX_LENGTH."""
+        return self.number(value, key, low=0.0, low_open=positive, limit="MAX_LENGTH")
+
+    def duration(self, value: Any, key: str, positive: bool = False) -> float:
+        """A time in seconds: >= 0 (> 0 when ``positive``), at most MAX_DURATION."""
+        return self.number(value, key, low=0.0, low_open=positive, limit="MAX_DURATION")
+
+    def integer(self, value: Any, key: str, low: Optional[int] = None, limit: str = "MAX_COUNT") -> int:
+        """An integer >= ``low`` and at most ``limit``, the name of a constant of
+        fgdwa.file_limits (default MAX_COUNT)."""
         if isinstance(value, bool) or not isinstance(value, int):
             self.fail(key, value, "expected an integer")
         if low is not None and value < low:
             self.fail(key, value, f"must be >= {low}")
+        bound = getattr(limits, limit)
+        if abs(value) > bound:
+            self.fail(key, value, f"must be at most {bound} (fgdwa.file_limits.{limit})")
         return int(value)
 
     def boolean(self, value: Any, key: str) -> bool:
@@ -113,18 +140,28 @@ class ValueReader:
             self.fail(key, value, "expected a string")
         return value
 
-    def point(self, value: Any, key: str) -> tuple:
+    def point(self, value: Any, key: str, limit: str = "MAX_COORDINATE") -> tuple:
+        """[x, y] or {x, y}, each within +-``limit`` (default MAX_COORDINATE, metres)."""
         if isinstance(value, dict):
             self.mapping(value, key, ("x", "y"), required=("x", "y"))
-            return self.number(value["x"], join_key(key, "x")), self.number(value["y"], join_key(key, "y"))
+            return (self.number(value["x"], join_key(key, "x"), limit=limit),
+                    self.number(value["y"], join_key(key, "y"), limit=limit))
         if not isinstance(value, (list, tuple)) or len(value) != 2:
             self.fail(key, value, "expected [x, y] in metres")
-        return tuple(self.number(v, join_key(key, i)) for i, v in enumerate(value))
+        return tuple(self.number(v, join_key(key, i), limit=limit) for i, v in enumerate(value))
 
     def points(self, value: Any, key: str, minimum: int) -> np.ndarray:
         if not isinstance(value, (list, tuple)) or len(value) < minimum:
             self.fail(key, value, f"expected a list of at least {minimum} [x, y] points")
+        self.count(value, key)
         return np.array([self.point(v, join_key(key, i)) for i, v in enumerate(value)], dtype=float)
+
+    def count(self, items: list, key: str) -> list:
+        """``items``, refused when longer than MAX_COUNT."""
+        if len(items) > limits.MAX_COUNT:
+            self.fail(key, f"<a list of {len(items)} items>",
+                      f"more than {limits.MAX_COUNT} items (fgdwa.file_limits.MAX_COUNT)")
+        return items
 
     def file(self, value: Any, key: str, suffixes: Sequence[str]) -> Path:
         name = self.string(value, key)
@@ -154,11 +191,12 @@ class ValueReader:
             return []
         if not isinstance(value, list):
             self.fail(key, value, "expected a list")
-        return value
+        return self.count(value, key)
 
     def critics(self, value: Any, key: str) -> list:
         if not isinstance(value, list) or not value:
             self.fail(key, value, "expected a list of critics: {name, weight, params}")
+        self.count(value, key)
         known = critic_names()
         critics = []
         for i, item in enumerate(value):
@@ -172,8 +210,11 @@ class ValueReader:
             if not isinstance(params, dict):
                 self.fail(join_key(ckey, "params"), params, "expected a mapping of numbers and words")
             for pname, pvalue in params.items():
+                pkey = join_key(join_key(ckey, "params"), clip(str(pname), 100))
                 if not isinstance(pname, str) or not (is_number(pvalue) or isinstance(pvalue, str)):
-                    self.fail(join_key(join_key(ckey, "params"), str(pname)), pvalue, "expected a number or a word")
+                    self.fail(pkey, pvalue, "expected a number or a word")
+                if is_number(pvalue):
+                    self.number(pvalue, pkey)
             critics.append({"name": name, "weight": weight, "params": dict(params)})
         return critics
 
@@ -184,7 +225,7 @@ class ValueReader:
         if kind is list:
             return self.critics(value, key)
         if kind is float:
-            return self.number(value, key)
+            return self.number(value, key, limit=_PLANNER_LIMITS.get(name, "MAX_MAGNITUDE"))
         if kind is int:
             return self.integer(value, key, low=1)
         if kind is bool:
@@ -192,4 +233,22 @@ class ValueReader:
         return self.string(value, key)
 
 
+    def rollouts(self, params: dict, key: str, value: Any) -> None:
+        """Refuses planner fields (dt, sim_time, n_v, n_omega; a dict with the defaults
+        filled in) whose rollouts would hold more than MAX_ROLLOUT_POSES poses a cycle."""
+        if not (params["dt"] > 0 and params["sim_time"] > 0):
+            return  # the core names the field at fault
+        steps = params["sim_time"] / params["dt"]
+        poses = params["n_v"] * params["n_omega"] * (steps + 1)
+        if not poses <= limits.MAX_ROLLOUT_POSES:
+            self.fail(key, value, f"n_v x n_omega x (sim_time / dt + 1) = {params['n_v']} x {params['n_omega']} x "
+                                  f"({params['sim_time']:g} / {params['dt']:g} + 1) = {poses:.3g} poses a control "
+                                  f"cycle, over {limits.MAX_ROLLOUT_POSES} (fgdwa.file_limits.MAX_ROLLOUT_POSES)")
+
+
 _PLANNER_DEFAULTS = PlannerParams()
+# The limit (a constant of fgdwa.file_limits) of each float field of PlannerParams
+# that has one narrower than MAX_MAGNITUDE.
+_PLANNER_LIMITS = {"dt": "MAX_DURATION", "sim_time": "MAX_DURATION", "moving_horizon": "MAX_DURATION",
+                   "goal_tolerance": "MAX_LENGTH", "safety_margin": "MAX_LENGTH", "key_node_radius": "MAX_LENGTH",
+                   "mover_caution_radius": "MAX_LENGTH"}

@@ -117,6 +117,12 @@ def test_an_integer_too_long_to_read_is_an_fgdwa_error():
     refused(engine_from_yaml, "resolution: " + "9" * 5000, "fuzzy configuration")
 
 
+def test_an_integer_beyond_float_is_out_of_range_not_an_overflow():
+    message = refused(load_scenario, "map: {size: [" + "9" * 400 + ", 1]}\nstart: [1, 1]\ngoal: [2, 2]\n",
+                      "map.size[0]")
+    assert "OverflowError" not in message
+
+
 def test_long_one_line_sources_are_not_file_names():
     refused(load_scenario, "x" * 5000, "neither a shipped scenario")
     refused(load_scenario, "a: " + "b" * 5000, "unknown key")
