@@ -64,7 +64,7 @@ def shipped_scenario_path(name: str) -> Path:
     """The YAML file of a shipped scenario."""
     names = shipped_scenarios()
     if name not in names:
-        raise FgdwaError(f"scenario {name!r}: not a shipped scenario (shipped: {', '.join(names) or 'none'})")
+        raise FgdwaError(f"scenario {short_repr(name)}: not a shipped scenario (shipped: {', '.join(names) or 'none'})")
     return SHIPPED_DIR / f"{name}.yaml"
 
 
