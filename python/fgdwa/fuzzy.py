@@ -40,6 +40,7 @@ from fgdwa._core import (
     MembershipFunction,
     paper_fuzzy_controller,
 )
+from fgdwa.file_limits import clip, is_file, load_yaml, read_text, short_repr
 
 __all__ = [
     "engine_from_dict",
@@ -51,6 +52,7 @@ __all__ = [
 ]
 
 _SHAPES = {"triangle": 3, "trapezoid": 4, "gaussian": 2}
+MAX_RESOLUTION = 100_001  # output grid points of the centroid (the engine holds a few arrays of this many)
 _DEFAULT_TERMS = ("S", "M", "L")
 
 # Table 3 (beta) and Table 4 (delta): rows D, columns I.
@@ -79,19 +81,22 @@ def _mapping(value: Any, where: str) -> Mapping:
 def _only_keys(value: Mapping, known: tuple, where: str) -> None:
     for key in value:
         if key not in known:
-            raise FgdwaError(f"{where}: unknown key {key!r} (known: {', '.join(known)})")
+            raise FgdwaError(f"{where}: unknown key {short_repr(key)} (known: {', '.join(known)})")
 
 
 def _name(value: Any, where: str) -> str:
     if not isinstance(value, str):
-        raise FgdwaError(f"{where}: expected a name (str), got {_type_name(value)} {value!r}")
+        raise FgdwaError(f"{where}: expected a name (str), got {_type_name(value)} {short_repr(value)}")
     return value
 
 
 def _number(value: Any, where: str) -> float:
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise FgdwaError(f"{where}: expected a number, got {_type_name(value)} {value!r}")
-    value = float(value)
+        raise FgdwaError(f"{where}: expected a number, got {_type_name(value)} {short_repr(value)}")
+    try:
+        value = float(value)
+    except OverflowError:  # an integer beyond float's range
+        raise FgdwaError(f"{where} = {short_repr(value)}: must be finite") from None
     if not math.isfinite(value):
         raise FgdwaError(f"{where} = {value}: must be finite")
     return value
@@ -99,7 +104,7 @@ def _number(value: Any, where: str) -> float:
 
 def _numbers(value: Any, count: int, where: str) -> list:
     if isinstance(value, (str, bytes, Mapping)) or not isinstance(value, (list, tuple)):
-        raise FgdwaError(f"{where}: expected a list of {count} numbers, got {_type_name(value)} {value!r}")
+        raise FgdwaError(f"{where}: expected a list of {count} numbers, got {_type_name(value)} {short_repr(value)}")
     if len(value) != count:
         raise FgdwaError(f"{where}: expected {count} numbers, got {len(value)}")
     return [_number(v, f"{where}[{i}]") for i, v in enumerate(value)]
@@ -108,10 +113,11 @@ def _numbers(value: Any, count: int, where: str) -> list:
 def _shape(value: Any, where: str) -> MembershipFunction:
     spec = _mapping(value, where)
     if len(spec) != 1:
-        raise FgdwaError(f"{where}: expected one shape, e.g. {{triangle: [a, b, c]}}, got keys {list(spec)}")
+        raise FgdwaError(f"{where}: expected one shape, e.g. {{triangle: [a, b, c]}}, "
+                         f"got keys {short_repr(list(spec))}")
     (shape, params), = spec.items()
     if shape not in _SHAPES:
-        raise FgdwaError(f"{where}: unknown shape {shape!r} (known: {', '.join(_SHAPES)})")
+        raise FgdwaError(f"{where}: unknown shape {short_repr(shape)} (known: {', '.join(_SHAPES)})")
     args = _numbers(params, _SHAPES[shape], f"{where}.{shape}")
     try:
         return getattr(MembershipFunction, shape)(*args)
@@ -121,7 +127,7 @@ def _shape(value: Any, where: str) -> MembershipFunction:
 
 def _variable(name: Any, value: Any, where: str) -> FuzzyVariable:
     name = _name(name, f"{where} name")
-    where = f"{where}.{name}"
+    where = f"{where}.{clip(name, 80)}"
     spec = _mapping(value, where)
     _only_keys(spec, ("domain", "terms"), where)
     if "domain" not in spec:
@@ -143,7 +149,7 @@ def _variable(name: Any, value: Any, where: str) -> FuzzyVariable:
                 uniform = FuzzyVariable.uniform(name, (lo, hi), names).terms
             shapes[term] = uniform[term]
         else:
-            shapes[term] = _shape(shape, f"{where}.terms.{term}")
+            shapes[term] = _shape(shape, f"{where}.terms.{clip(term, 80)}")
     return FuzzyVariable(name, (lo, hi), shapes)
 
 
@@ -158,7 +164,7 @@ def _clauses(value: Any, where: str) -> list:
     spec = _mapping(value, where)
     if not spec:
         raise FgdwaError(f"{where}: needs at least one 'variable: term'")
-    return [(_name(k, f"{where} variable"), _name(v, f"{where}.{k}")) for k, v in spec.items()]
+    return [(_name(k, f"{where} variable"), _name(v, f"{where}.{clip(k, 80)}")) for k, v in spec.items()]
 
 
 def _rule(value: Any, where: str) -> FuzzyRule:
@@ -186,7 +192,10 @@ def engine_from_dict(config: Mapping) -> MamdaniEngine:
             raise FgdwaError(f"fuzzy configuration: missing key {key!r}")
     resolution = config.get("resolution", 1001)
     if isinstance(resolution, bool) or not isinstance(resolution, numbers.Integral):
-        raise FgdwaError(f"resolution: expected an integer, got {_type_name(resolution)} {resolution!r}")
+        raise FgdwaError(f"resolution: expected an integer, got {_type_name(resolution)} {short_repr(resolution)}")
+    if not 3 <= resolution <= MAX_RESOLUTION:
+        raise FgdwaError(f"resolution = {short_repr(resolution)}: must be in [3, {MAX_RESOLUTION}] "
+                         f"(grid points; fgdwa.fuzzy.MAX_RESOLUTION)")
     rules = config["rules"]
     if isinstance(rules, (str, bytes, Mapping)) or not isinstance(rules, (list, tuple)):
         raise FgdwaError(f"rules: expected a list of rules, got {_type_name(rules)}")
@@ -196,24 +205,21 @@ def engine_from_dict(config: Mapping) -> MamdaniEngine:
 
 def engine_from_yaml(source: Union[str, Path]) -> MamdaniEngine:
     """A MamdaniEngine from YAML: a path to a file, or the YAML text itself."""
-    import yaml
-
+    where = "fuzzy configuration"
     text = source
-    if isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and Path(source).is_file()):
+    if isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and is_file(source)):
+        where = f"fuzzy configuration {clip(source, 4096)}"
         try:
-            text = Path(source).read_text()
-        except OSError as err:
-            raise FgdwaError(f"fuzzy configuration {source}: {err}") from None
+            text = read_text(source, where)
+        except (OSError, ValueError) as err:  # ValueError: not UTF-8
+            raise FgdwaError(f"{where}: {clip(err)}") from None
     elif not isinstance(source, str):
         raise FgdwaError(f"fuzzy configuration: expected a path or YAML text, got {_type_name(source)}")
-    try:
-        config = yaml.safe_load(text)
-    except yaml.YAMLError as err:
-        raise FgdwaError(f"fuzzy configuration: not valid YAML: {err}") from None
+    config = load_yaml(text, where)
     if not isinstance(config, Mapping):
         # A one-line string that is not a file reads as a YAML scalar: say so.
-        hint = f" (no file named {source!r})" if isinstance(config, str) else ""
-        raise FgdwaError(f"fuzzy configuration: expected a mapping at the top level, got {_type_name(config)}{hint}")
+        hint = f" (no file named {short_repr(source)})" if isinstance(config, str) else ""
+        raise FgdwaError(f"{where}: expected a mapping at the top level, got {_type_name(config)}{hint}")
     return engine_from_dict(config)
 
 

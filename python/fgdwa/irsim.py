@@ -140,9 +140,11 @@ def _planner_overrides(reader: ValueReader, config: Mapping[str, Any], base: Pla
     for name in PLANNER_KEYS:
         if config.get(name) is None:
             continue
-        value = reader.planner_field(name, config[name], name)
+        overrides[name] = reader.planner_field(name, config[name], name)
+    window = {name: overrides.get(name, getattr(base, name)) for name in ("dt", "sim_time", "n_v", "n_omega")}
+    reader.rollouts(window, "n_v, n_omega, sim_time, dt", window)
+    for name, value in overrides.items():
         reader.core(name, config[name], lambda: params_with(base, **{name: value}))
-        overrides[name] = value
     return overrides
 
 

@@ -1,12 +1,15 @@
 """Whether a scenario can be run: the start and goal free for the footprint and
-on the map, and a path between them."""
+on the map, the start farther from the goal than the goal tolerance, and a path
+between them."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 
 from fgdwa._core import CollisionWorld, FgdwaError, Footprint
+from fgdwa.file_limits import clip, short_repr
 from fgdwa.world import World
 
 
@@ -26,9 +29,11 @@ class FeasibilityChecks(ValueReader):
             x0, x1, y0, y1 = layout.extent
             self.fail("start", value, f"off the map (x {x0:g} to {x1:g}, y {y0:g} to {y1:g})")
         if CollisionWorld(world.grid).in_collision(footprint, start):
-            self.fail("start", value, f"the robot's footprint ({footprint!r}) there overlaps an obstacle of the map")
+            self.fail("start", value, f"the robot's footprint ({short_repr(footprint, 120)}) there overlaps an "
+                                      f"obstacle of the map")
         if CollisionWorld(world.true_grid()).in_collision(footprint, start):
-            self.fail("start", value, f"the robot's footprint ({footprint!r}) there overlaps an unknown obstacle")
+            self.fail("start", value, f"the robot's footprint ({short_repr(footprint, 120)}) there overlaps an "
+                                      f"unknown obstacle")
         if world.grade_at(start[:2]) >= 4:
             self.fail("start", value, "on impassable terrain (grade 4)")
 
@@ -44,6 +49,13 @@ class FeasibilityChecks(ValueReader):
         if world.grade_at(goal) >= 4:
             self.fail("goal", value, "on impassable terrain (grade 4)")
 
+    def check_not_at_goal(self, start: tuple, goal: tuple, tolerance: float, key: str, value: Any) -> None:
+        """A start within the goal tolerance would report every run a success before it moves."""
+        distance = math.hypot(goal[0] - start[0], goal[1] - start[1])
+        if distance <= tolerance:
+            self.fail(key, value, f"the start is {distance:g} m from the goal, within the goal tolerance "
+                                  f"{tolerance:g} m: every run would succeed before the robot moves")
+
     def check_reachable(self, start: tuple, goal: tuple, value: Any, world: World, footprint: Footprint,
                         options: dict) -> None:
         """A* on the map, obstacles inflated as the episode's last resort does (the footprint's radius)."""
@@ -56,7 +68,7 @@ class FeasibilityChecks(ValueReader):
                                inflation_radius=radius, **extra)
             found = plan.status.name == "Found"
         except FgdwaError as error:
-            self.fail("goal", value, f"the global planner cannot start ({error})")
+            self.fail("goal", value, f"the global planner cannot start ({clip(error)})")
         if not found:
             self.fail("goal", value, f"no global path from the start {tuple(round(v, 3) for v in start[:2])} on "
                                      f"the map (A*, obstacles and grade 4 inflated by {radius:g} m): the start or "

@@ -31,10 +31,11 @@ from fgdwa._core import (
     planner_preset,
     preset_names,
 )
+from fgdwa.file_limits import clip, is_file, read_text
 from fgdwa.scenario import PARAM_FIELDS, Scenario, Variability, params_with
 from fgdwa.scenario_checks import FeasibilityChecks
 from fgdwa.scenario_maps import MapReader
-from fgdwa.scenario_values import join_key, parse_yaml, short_repr
+from fgdwa.scenario_values import is_number, join_key, parse_yaml, short_repr
 from fgdwa.world import MOVER_MODES, MovingObstacle, World
 
 SHIPPED_DIR = Path(__file__).resolve().parent / "scenarios"
@@ -44,6 +45,12 @@ _TOP_KEYS = ("name", "description", "map", "terrain", "unknown_obstacles", "movi
              "robot", "planner", "global_planner", "lidar", "detect_window", "variability", "max_steps",
              "goal_tolerance")
 _LIMIT_FIELDS = ("v_min", "v_max", "omega_max", "acc_v", "acc_omega", "brake_v", "brake_omega")
+# The limit (a constant of fgdwa.file_limits) of each RobotLimits field.
+_LIMIT_BOUNDS = {"v_min": "MAX_SPEED", "v_max": "MAX_SPEED", "omega_max": "MAX_ANGULAR_RATE",
+                 "acc_v": "MAX_ACCELERATION", "acc_omega": "MAX_ACCELERATION", "brake_v": "MAX_ACCELERATION",
+                 "brake_omega": "MAX_ACCELERATION"}
+# The limit of each global planner option that has one narrower than MAX_MAGNITUDE.
+_GLOBAL_OPTION_LIMITS = {"time_limit": "MAX_DURATION", "inflation_radius": "MAX_LENGTH", "range": "MAX_LENGTH"}
 
 
 def shipped_scenarios() -> list:
@@ -57,7 +64,7 @@ def shipped_scenario_path(name: str) -> Path:
     """The YAML file of a shipped scenario."""
     names = shipped_scenarios()
     if name not in names:
-        raise FgdwaError(f"scenario {name!r}: not a shipped scenario (shipped: {', '.join(names) or 'none'})")
+        raise FgdwaError(f"scenario {short_repr(name)}: not a shipped scenario (shipped: {', '.join(names) or 'none'})")
     return SHIPPED_DIR / f"{name}.yaml"
 
 
@@ -75,13 +82,13 @@ def load_scenario(source: Union[str, os.PathLike], base_dir: Union[str, os.PathL
     if isinstance(source, os.PathLike):
         return _load_file(Path(source))
     if not isinstance(source, str):
-        raise FgdwaError(f"load_scenario: source = {source!r}: expected a path, YAML text or a shipped scenario "
-                         f"name ({', '.join(shipped_scenarios())})")
+        raise FgdwaError(f"load_scenario: source = {short_repr(source)}: expected a path, YAML text or a shipped "
+                         f"scenario name ({', '.join(shipped_scenarios())})")
     one_line = "\n" not in source
-    if one_line and (source.strip().endswith((".yaml", ".yml")) or Path(source).is_file()):
+    if one_line and (source.strip().endswith((".yaml", ".yml")) or is_file(source)):
         return _load_file(Path(source))
     if one_line and ":" not in source:
-        raise FgdwaError(f"load_scenario: source = {source!r}: neither a shipped scenario "
+        raise FgdwaError(f"load_scenario: source = {short_repr(source)}: neither a shipped scenario "
                          f"({', '.join(shipped_scenarios())}), an existing file, nor YAML text")
     return _load_text(source, TEXT, Path(base_dir) if base_dir is not None else Path.cwd())
 
@@ -92,13 +99,13 @@ def scenario_from_dict(data: Any, where: str = "<dict>", base_dir: Union[str, os
 
 
 def _load_file(path: Path) -> Scenario:
-    where = str(path)
+    where = clip(str(path), 4096)  # a longer name is no file's (PATH_MAX)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = read_text(path, where)
     except FileNotFoundError:
         raise FgdwaError(f"{where}: no such scenario file") from None
-    except (OSError, UnicodeDecodeError) as error:
-        raise FgdwaError(f"{where}: cannot read the scenario file ({error})") from None
+    except (OSError, ValueError) as error:  # ValueError: not UTF-8, or a NUL in the name
+        raise FgdwaError(f"{where}: cannot read the scenario file ({clip(error)})") from None
     return _load_text(text, where, path.resolve().parent, default_name=path.stem)
 
 
@@ -117,7 +124,8 @@ class _Reader(MapReader, FeasibilityChecks):
         except FgdwaError:
             raise
         except Exception as error:  # a bug here must still say which file it was reading
-            raise FgdwaError(f"{self.where}: could not read the scenario ({type(error).__name__}: {error})") from error
+            raise FgdwaError(f"{self.where}: could not read the scenario "
+                             f"({type(error).__name__}: {clip(error)})") from error
 
     def _scenario(self, data: Any) -> Scenario:
         if not isinstance(data, dict):
@@ -154,9 +162,16 @@ class _Reader(MapReader, FeasibilityChecks):
         if data.get("variability") is not None:
             options_kw["variability"] = self.variability(data["variability"])
         if data.get("max_steps") is not None:
-            options_kw["max_steps"] = self.integer(data["max_steps"], "max_steps", low=1)
+            options_kw["max_steps"] = self.integer(data["max_steps"], "max_steps", low=1, limit="MAX_STEPS")
         if data.get("goal_tolerance") is not None:
-            options_kw["goal_tolerance"] = self.number(data["goal_tolerance"], "goal_tolerance", low=0.0)
+            options_kw["goal_tolerance"] = self.length(data["goal_tolerance"], "goal_tolerance")
+        if options_kw.get("goal_tolerance") is not None:
+            self.check_not_at_goal(start, goal, options_kw["goal_tolerance"], "goal_tolerance", data["goal_tolerance"])
+        elif "goal_tolerance" in overrides:
+            self.check_not_at_goal(start, goal, overrides["goal_tolerance"], "planner.overrides.goal_tolerance",
+                                   overrides["goal_tolerance"])
+        else:
+            self.check_not_at_goal(start, goal, planner_preset(planner).params.goal_tolerance, "goal", data["goal"])
         return self.core("scenario", data.get("name"), lambda: Scenario(
             name=name, world=world, start=start, goal=goal, description=description, limits=limits,
             footprint=footprint, planner=planner, overrides=overrides, global_method=method,
@@ -169,9 +184,9 @@ class _Reader(MapReader, FeasibilityChecks):
             ikey = join_key(key, i)
             self.mapping(item, ikey, ("radius", "waypoints", "speed", "mode", "start", "velocity", "start_delay",
                                       "phase", "known"), required=("radius",))
-            radius = self.number(item["radius"], join_key(ikey, "radius"), low=0.0, low_open=True)
-            start_delay = self.number(item.get("start_delay", 0.0), join_key(ikey, "start_delay"), low=0.0)
-            phase = self.number(item.get("phase", 0.0), join_key(ikey, "phase"))
+            radius = self.length(item["radius"], join_key(ikey, "radius"), positive=True)
+            start_delay = self.duration(item.get("start_delay", 0.0), join_key(ikey, "start_delay"))
+            phase = self.number(item.get("phase", 0.0), join_key(ikey, "phase"), limit="MAX_DURATION")
             if item.get("waypoints") is not None:
                 for other in ("start", "velocity"):
                     if item.get(other) is not None:
@@ -180,7 +195,8 @@ class _Reader(MapReader, FeasibilityChecks):
                 points = self.points(item["waypoints"], join_key(ikey, "waypoints"), 2)
                 if item.get("speed") is None:
                     self.fail(join_key(ikey, "speed"), None, "required with waypoints (m/s)")
-                speed = self.number(item["speed"], join_key(ikey, "speed"), low=0.0, low_open=True)
+                speed = self.number(item["speed"], join_key(ikey, "speed"), low=0.0, low_open=True,
+                                    limit="MAX_SPEED")
                 mode = self.string(item.get("mode", "loop"), join_key(ikey, "mode"))
                 if mode not in MOVER_MODES:
                     self.fail(join_key(ikey, "mode"), mode, f"expected one of {', '.join(MOVER_MODES)}")
@@ -192,7 +208,8 @@ class _Reader(MapReader, FeasibilityChecks):
                 if item.get("start") is None:
                     self.fail(join_key(ikey, "start"), None, "required without waypoints (or give waypoints + speed)")
                 start = self.point(item["start"], join_key(ikey, "start"))
-                velocity = self.point(item.get("velocity", [0.0, 0.0]), join_key(ikey, "velocity"))
+                velocity = self.point(item.get("velocity", [0.0, 0.0]), join_key(ikey, "velocity"),
+                                      limit="MAX_SPEED")
                 mover = dict(radius=radius, start=start, velocity=velocity)
             movers.append(self.core(ikey, item, lambda: MovingObstacle(start_delay=start_delay, phase=phase,
                                                                          **mover)))
@@ -216,7 +233,8 @@ class _Reader(MapReader, FeasibilityChecks):
             fields = {}
             for name, item in raw.items():
                 positive = name in ("v_max", "omega_max", "acc_v", "acc_omega")
-                fields[name] = self.number(item, join_key(lkey, name), low=0.0, low_open=positive)
+                fields[name] = self.number(item, join_key(lkey, name), low=0.0, low_open=positive,
+                                           limit=_LIMIT_BOUNDS[name])
             if fields.get("v_min", 0.0) > fields.get("v_max", limits.v_max):
                 self.fail(join_key(lkey, "v_min"), fields["v_min"],
                           f"must be <= v_max ({fields.get('v_max', limits.v_max):g})")
@@ -228,7 +246,7 @@ class _Reader(MapReader, FeasibilityChecks):
             if (raw.get("radius") is None) == (raw.get("polygon") is None):
                 self.fail(fkey, raw, "give exactly one of radius (m) or polygon ([[x, y], ...] m, robot frame)")
             if raw.get("radius") is not None:
-                radius = self.number(raw["radius"], join_key(fkey, "radius"), low=0.0, low_open=True)
+                radius = self.length(raw["radius"], join_key(fkey, "radius"), positive=True)
                 footprint = self.core(join_key(fkey, "radius"), radius, lambda: Footprint.circle(radius))
             else:
                 vertices = self.points(raw["polygon"], join_key(fkey, "polygon"), 3)
@@ -241,7 +259,8 @@ class _Reader(MapReader, FeasibilityChecks):
             self.mapping(value, key, ("x", "y", "theta_deg", "theta"), required=("x", "y"))
             if value.get("theta_deg") is not None and value.get("theta") is not None:
                 self.fail(key, value, "give theta_deg (degrees) or theta (radians), not both")
-            x, y = self.number(value["x"], join_key(key, "x")), self.number(value["y"], join_key(key, "y"))
+            x, y = (self.number(value["x"], join_key(key, "x"), limit="MAX_COORDINATE"),
+                    self.number(value["y"], join_key(key, "y"), limit="MAX_COORDINATE"))
             if value.get("theta") is not None:
                 theta = self.number(value["theta"], join_key(key, "theta"))
             else:
@@ -249,7 +268,8 @@ class _Reader(MapReader, FeasibilityChecks):
             return x, y, theta
         if not isinstance(value, (list, tuple)) or len(value) not in (2, 3):
             self.fail(key, value, "expected [x, y] or [x, y, theta_deg] (metres, degrees)")
-        numbers = [self.number(v, join_key(key, i)) for i, v in enumerate(value)]
+        numbers = [self.number(v, join_key(key, i), limit="MAX_COORDINATE" if i < 2 else "MAX_MAGNITUDE")
+                   for i, v in enumerate(value)]
         return numbers[0], numbers[1], math.radians(numbers[2]) if len(numbers) == 3 else 0.0
 
     def planner(self, value: Any) -> tuple:
@@ -263,12 +283,11 @@ class _Reader(MapReader, FeasibilityChecks):
         base = planner_preset(preset).params
         okey = join_key(key, "overrides")
         raw = self.mapping(value.get("overrides") or {}, okey, PARAM_FIELDS)
-        overrides = {}
-        for name, item in raw.items():
-            fkey = join_key(okey, name)
-            item = self.planner_field(name, item, fkey)
-            self.core(fkey, raw[name], lambda: params_with(base, **{name: item}))
-            overrides[name] = item
+        overrides = {name: self.planner_field(name, item, join_key(okey, name)) for name, item in raw.items()}
+        window = {name: overrides.get(name, getattr(base, name)) for name in ("dt", "sim_time", "n_v", "n_omega")}
+        self.rollouts(window, okey, raw)
+        for name, item in overrides.items():
+            self.core(join_key(okey, name), raw[name], lambda: params_with(base, **{name: item}))
         self.core(okey, raw, lambda: params_with(base, **overrides))
         return preset, overrides
 
@@ -296,6 +315,10 @@ class _Reader(MapReader, FeasibilityChecks):
             fkey = join_key(okey, name)
             if item is None or isinstance(item, dict):
                 self.fail(fkey, item, "expected a number, a boolean or a list of numbers")
+            for i, number in enumerate(self.count(item, fkey) if isinstance(item, list) else [item]):
+                if is_number(number):
+                    self.number(number, join_key(fkey, i) if isinstance(item, list) else fkey,
+                                limit=_GLOBAL_OPTION_LIMITS.get(name, "MAX_MAGNITUDE"))
             if method == "astar":
                 self.core(fkey, item, lambda: global_planning.AStarPlanner(probe, **{name: item}))
             else:
@@ -309,9 +332,8 @@ class _Reader(MapReader, FeasibilityChecks):
         default = LidarParams()
         fov = self.number(value.get("fov_deg", default.fov_deg), join_key(key, "fov_deg"), low=0.0, high=360.0,
                           low_open=True)
-        beams = self.integer(value.get("beams", default.beams), join_key(key, "beams"), low=1)
-        max_range = self.number(value.get("max_range", default.max_range), join_key(key, "max_range"), low=0.0,
-                                low_open=True)
+        beams = self.integer(value.get("beams", default.beams), join_key(key, "beams"), low=1, limit="MAX_BEAMS")
+        max_range = self.length(value.get("max_range", default.max_range), join_key(key, "max_range"), positive=True)
         return self.core(key, value, lambda: LidarParams(fov_deg=fov, beams=beams, max_range=max_range))
 
     def detect_window(self, value: Any) -> DetectWindowParams:
@@ -320,7 +342,7 @@ class _Reader(MapReader, FeasibilityChecks):
         default = DetectWindowParams()
         half = self.number(value.get("half_angle_deg", default.half_angle_deg), join_key(key, "half_angle_deg"),
                            low=0.0, high=180.0, low_open=True)
-        radius = self.number(value.get("radius", default.radius), join_key(key, "radius"), low=0.0, low_open=True)
+        radius = self.length(value.get("radius", default.radius), join_key(key, "radius"), positive=True)
         base = self.number(value.get("base", default.base), join_key(key, "base"), low=0.0, high=1.0)
         return self.core(key, value, lambda: DetectWindowParams(half_angle_deg=half, radius=radius, base=base))
 
@@ -342,10 +364,9 @@ class _Reader(MapReader, FeasibilityChecks):
         if dropout >= 1.0:
             self.fail(join_key(key, "lidar_dropout"), dropout, "must be < 1 (the probability a beam returns nothing)")
         return Variability(
-            start_xy_std=self.number(value.get("start_xy_std", default.start_xy_std), join_key(key, "start_xy_std"),
-                                     low=0.0),
+            start_xy_std=self.length(value.get("start_xy_std", default.start_xy_std), join_key(key, "start_xy_std")),
             start_theta_std=theta_std,
             mover_phase=self.boolean(value.get("mover_phase", default.mover_phase), join_key(key, "mover_phase")),
-            lidar_noise_std=self.number(value.get("lidar_noise_std", default.lidar_noise_std),
-                                        join_key(key, "lidar_noise_std"), low=0.0),
+            lidar_noise_std=self.length(value.get("lidar_noise_std", default.lidar_noise_std),
+                                        join_key(key, "lidar_noise_std")),
             lidar_dropout=dropout)

@@ -1,5 +1,10 @@
 """Scenario maps: the occupancy grid (ASCII, PNG, .npy or empty), terrain
-grades and obstacles missing from the map, rasterised onto one cell layout."""
+grades and obstacles missing from the map, rasterised onto one cell layout.
+
+A map's resolution lies in [MIN_RESOLUTION, MAX_RESOLUTION], it has at most
+MAX_MAP_CELLS cells and its corners lie within +-MAX_COORDINATE
+(fgdwa.file_limits); the size of a map is checked from the numbers, the .npy
+header or the PNG header before any cells are made."""
 
 from __future__ import annotations
 
@@ -7,7 +12,9 @@ from typing import Any, Optional
 
 import numpy as np
 
-from fgdwa._core import OccupancyGrid, TerrainGrid
+from fgdwa import file_limits as limits
+from fgdwa._core import FgdwaError, OccupancyGrid, TerrainGrid
+from fgdwa.file_limits import clip, load_npy
 from fgdwa.scenario_values import ValueReader, join_key
 from fgdwa.world import World
 
@@ -50,7 +57,8 @@ class MapReader(ValueReader):
             self.fail(key, sorted(value), f"give exactly one of {', '.join(_MAP_SOURCES)} (got "
                                           f"{', '.join(sources) or 'none'})")
         source = sources[0]
-        resolution = self.number(value.get("resolution", 0.1), join_key(key, "resolution"), low=0.0, low_open=True)
+        resolution = self.number(value.get("resolution", 0.1), join_key(key, "resolution"),
+                                 low=limits.MIN_RESOLUTION, high=limits.MAX_RESOLUTION)
         origin = self.point(value.get("origin", [0.0, 0.0]), join_key(key, "origin"))
         per_char = self.integer(value.get("cells_per_char", 1), join_key(key, "cells_per_char"), low=1)
         if value.get("threshold") is not None and source != "png":
@@ -67,12 +75,18 @@ class MapReader(ValueReader):
             size = value[source]
             if not isinstance(size, list) or len(size) != 2:
                 self.fail(skey, size, "expected [width, height] in metres")
-            size = [self.number(v, join_key(skey, i), low=0.0, low_open=True) for i, v in enumerate(size)]
+            size = [self.length(v, join_key(skey, i), positive=True) for i, v in enumerate(size)]
             shape = tuple(int(round(s / resolution)) for s in reversed(size))
             if min(shape) < 1:
                 self.fail(skey, value[source], f"[width, height] must each hold at least one cell of {resolution} m")
+            self.map_cells(shape, skey, value[source])
             cells = np.zeros(shape, dtype=np.uint8)
         layout = Layout(cells.shape, resolution, origin, per_char)
+        x0, x1, y0, y1 = layout.extent
+        if max(abs(x0), abs(x1), abs(y0), abs(y1)) > limits.MAX_COORDINATE:
+            self.fail(key, {"origin": list(origin), "resolution": resolution, "cells": list(cells.shape)},
+                      f"the map spans x {x0:g} to {x1:g}, y {y0:g} to {y1:g}: its corners must lie within "
+                      f"+-{limits.MAX_COORDINATE:g} m (fgdwa.file_limits.MAX_COORDINATE)")
         if self.boolean(value.get("border", False), join_key(key, "border")):
             cells[0, :] = cells[-1, :] = 1
             cells[:, 0] = cells[:, -1] = 1
@@ -80,6 +94,13 @@ class MapReader(ValueReader):
             self.paint(cells, layout, rect, join_key(join_key(key, "rectangles"), i), 1)
         grid = self.core(key, source, lambda: OccupancyGrid(cells, resolution, origin))
         return grid, layout
+
+    def map_cells(self, shape: tuple, key: str, value: Any) -> None:
+        """Refuses a map layer of more than MAX_MAP_CELLS cells, before it is made."""
+        cells = int(np.prod([int(n) for n in shape], dtype=object))
+        if cells > limits.MAX_MAP_CELLS:
+            self.fail(key, value, f"{' x '.join(str(int(n)) for n in shape)} = {cells} cells, over "
+                                  f"{limits.MAX_MAP_CELLS} (fgdwa.file_limits.MAX_MAP_CELLS)")
 
     def ascii(self, text: Any, key: str, alphabet: dict, per_char: int) -> np.ndarray:
         """Rows of characters, the first text row the highest y: returned with row 0 at the bottom."""
@@ -92,6 +113,8 @@ class MapReader(ValueReader):
         if not lines:
             self.fail(key, text, "empty")
         width = len(lines[0])
+        self.map_cells((len(lines) * per_char, width * per_char), key, f"<{len(lines)} rows of {width} characters "
+                                                                     f"at cells_per_char {per_char}>")
         for r, line in enumerate(lines):
             if len(line) != width:
                 self.fail(key, line, f"text row {r + 1} (from the top) has {len(line)} characters, "
@@ -111,9 +134,17 @@ class MapReader(ValueReader):
 
         path = self.file(value, key, (".png",))
         try:
+            import PIL.Image
+
+            with PIL.Image.open(path) as header:  # reads the size, not the pixels
+                width, height = header.size
+        except Exception as error:  # PIL raises many kinds for a bad file
+            self.fail(key, value, f"cannot read the image ({clip(error)})")
+        self.map_cells((height, width), key, value)
+        try:
             image = np.asarray(matplotlib.image.imread(path), dtype=float)
         except Exception as error:  # matplotlib/PIL raise many kinds for a bad file
-            self.fail(key, value, f"cannot read the image ({error})")
+            self.fail(key, value, f"cannot read the image ({clip(error)})")
         if image.max(initial=0) > 1.0:
             image = image / 255.0
         if image.ndim == 2:
@@ -134,9 +165,15 @@ class MapReader(ValueReader):
     def npy(self, value: Any, key: str, allowed: tuple, what: str) -> np.ndarray:
         path = self.file(value, key, (".npy",))
         try:
-            array = np.load(path, allow_pickle=False)
-        except Exception as error:
-            self.fail(key, value, f"cannot read the array ({error})")
+            shape, _ = limits.npy_shape(path, str(path))
+        except (FgdwaError, OSError) as error:
+            self.fail(key, value, f"cannot read the array ({clip(error, 1000)})")
+        if len(shape) == 2:
+            self.map_cells(shape, key, value)
+        try:
+            array = load_npy(path, str(path))
+        except FgdwaError as error:
+            self.fail(key, value, f"cannot read the array ({clip(error, 1000)})")
         if array.ndim != 2 or min(array.shape) < 1:
             self.fail(key, value, f"expected a 2-D array, got shape {array.shape}")
         if array.dtype.kind not in "biuf":

@@ -1,5 +1,10 @@
 """Reading scenario YAML: a strict YAML loader, and the typed readers whose
-every error names the file, the key path and the offending value."""
+every error names the file, the key path and the offending value.
+
+Every number read is held to the limits of ``fgdwa.file_limits``: a position to
+MAX_COORDINATE, a length to MAX_LENGTH, a time to MAX_DURATION, a count to
+MAX_COUNT, and any number without a narrower limit to MAX_MAGNITUDE, so that no
+file can hand the core a value it would choke on (docs/scenarios.md, Limits)."""
 
 from __future__ import annotations
 
@@ -13,10 +18,13 @@ import numpy as np
 import yaml
 
 from fgdwa._core import FgdwaError, PlannerParams, critic_names
+from fgdwa import file_limits as limits
+from fgdwa.file_limits import LimitedSafeLoader, clip, is_file, load_yaml, short_repr
 
 
-class _StrictLoader(yaml.SafeLoader):
-    """SafeLoader that refuses duplicate keys and reads 1e-3 as a number (YAML 1.1 wants 1.0e-3)."""
+class _StrictLoader(LimitedSafeLoader):
+    """The limited SafeLoader (fgdwa.file_limits) refusing duplicate keys and reading
+    1e-3 as a number (YAML 1.1 wants 1.0e-3)."""
 
     def construct_mapping(self, node, deep=False):
         if isinstance(node, yaml.MappingNode):
@@ -27,10 +35,10 @@ class _StrictLoader(yaml.SafeLoader):
                 try:
                     duplicate = key in seen
                 except TypeError:
-                    raise yaml.constructor.ConstructorError(None, None, f"unhashable key {key!r}",
+                    raise yaml.constructor.ConstructorError(None, None, f"unhashable key {short_repr(key)}",
                                                             key_node.start_mark) from None
                 if duplicate:
-                    raise yaml.constructor.ConstructorError(None, None, f"duplicate key {key!r}",
+                    raise yaml.constructor.ConstructorError(None, None, f"duplicate key {short_repr(key)}",
                                                             key_node.start_mark)
                 seen.add(key)
         return super().construct_mapping(node, deep=deep)
@@ -43,24 +51,8 @@ _StrictLoader.add_implicit_resolver(
 
 
 def parse_yaml(text: str, where: str) -> Any:
-    try:
-        return yaml.load(text, Loader=_StrictLoader)  # noqa: S506 (a SafeLoader subclass)
-    except yaml.MarkedYAMLError as error:
-        mark = error.problem_mark or error.context_mark
-        problem = error.problem or error.context or "malformed YAML"
-        if mark is None:
-            raise FgdwaError(f"{where}: malformed YAML: {problem}") from None
-        lines = text.splitlines()
-        line = lines[mark.line] if 0 <= mark.line < len(lines) else ""
-        raise FgdwaError(f"{where}: malformed YAML at line {mark.line + 1}, column {mark.column + 1}: {problem} "
-                         f"(line {mark.line + 1} = {line.strip()!r})") from None
-    except yaml.YAMLError as error:
-        raise FgdwaError(f"{where}: malformed YAML: {error}") from None
-
-
-def short_repr(value: Any, limit: int = 80) -> str:
-    text = repr(value)
-    return text if len(text) <= limit else text[:limit - 3] + "..."
+    """A scenario document: strict YAML within the limits of fgdwa.file_limits."""
+    return load_yaml(text, where, _StrictLoader)
 
 
 def join_key(parent: str, child: Union[str, int]) -> str:
@@ -82,14 +74,14 @@ class ValueReader:
         self.default_name = default_name
 
     def fail(self, key: str, value: Any, problem: str):
-        raise FgdwaError(f"{self.where}: {key} = {short_repr(value)}: {problem}")
+        raise FgdwaError(f"{self.where}: {clip(key, 200)} = {short_repr(value)}: {clip(problem, 4000)}")
 
     def mapping(self, value: Any, key: str, allowed: Sequence[str], required: Sequence[str] = ()) -> dict:
         if not isinstance(value, dict):
             self.fail(key, value, f"expected a mapping with keys {', '.join(allowed)}")
         for name, item in value.items():
             if not isinstance(name, str) or name not in allowed:
-                close = difflib.get_close_matches(str(name), allowed, n=1)
+                close = difflib.get_close_matches(clip(str(name), 100), allowed, n=1)
                 hint = f"; did you mean {close[0]!r}?" if close else ""
                 self.fail(join_key(key, str(name)), item, f"unknown key (known here: {', '.join(allowed)}){hint}")
         for name in required:
@@ -98,23 +90,44 @@ class ValueReader:
         return value
 
     def number(self, value: Any, key: str, low: Optional[float] = None, high: Optional[float] = None,
-               low_open: bool = False) -> float:
+               low_open: bool = False, limit: str = "MAX_MAGNITUDE") -> float:
+        """A finite number within [low, high] (or (low, high]), and within +-``limit``, the
+        name of a constant of fgdwa.file_limits (default MAX_MAGNITUDE)."""
         if not is_number(value):
             self.fail(key, value, "expected a number")
-        value = float(value)
+        try:
+            value = float(value)
+        except OverflowError:  # an integer beyond float's range
+            self.fail(key, value, "must be finite")
         if not math.isfinite(value):
             self.fail(key, value, "must be finite")
         if low is not None and (value <= low if low_open else value < low):
             self.fail(key, value, f"must be {'>' if low_open else '>='} {low:g}")
         if high is not None and value > high:
             self.fail(key, value, f"must be <= {high:g}")
+        bound = getattr(limits, limit)
+        if abs(value) > bound:
+            self.fail(key, value, f"must be within +-{bound:g} (fgdwa.file_limits.{limit})")
         return value
 
-    def integer(self, value: Any, key: str, low: Optional[int] = None) -> int:
+    def length(self, value: Any, key: str, positive: bool = False) -> float:
+        """A length in metres: >= 0 (> 0 when ``positive``), at most MAX_LENGTH."""
+        return self.number(value, key, low=0.0, low_open=positive, limit="MAX_LENGTH")
+
+    def duration(self, value: Any, key: str, positive: bool = False) -> float:
+        """A time in seconds: >= 0 (> 0 when ``positive``), at most MAX_DURATION."""
+        return self.number(value, key, low=0.0, low_open=positive, limit="MAX_DURATION")
+
+    def integer(self, value: Any, key: str, low: Optional[int] = None, limit: str = "MAX_COUNT") -> int:
+        """An integer >= ``low`` and at most ``limit``, the name of a constant of
+        fgdwa.file_limits (default MAX_COUNT)."""
         if isinstance(value, bool) or not isinstance(value, int):
             self.fail(key, value, "expected an integer")
         if low is not None and value < low:
             self.fail(key, value, f"must be >= {low}")
+        bound = getattr(limits, limit)
+        if abs(value) > bound:
+            self.fail(key, value, f"must be at most {bound} (fgdwa.file_limits.{limit})")
         return int(value)
 
     def boolean(self, value: Any, key: str) -> bool:
@@ -127,26 +140,39 @@ class ValueReader:
             self.fail(key, value, "expected a string")
         return value
 
-    def point(self, value: Any, key: str) -> tuple:
+    def point(self, value: Any, key: str, limit: str = "MAX_COORDINATE") -> tuple:
+        """[x, y] or {x, y}, each within +-``limit`` (default MAX_COORDINATE, metres)."""
         if isinstance(value, dict):
             self.mapping(value, key, ("x", "y"), required=("x", "y"))
-            return self.number(value["x"], join_key(key, "x")), self.number(value["y"], join_key(key, "y"))
+            return (self.number(value["x"], join_key(key, "x"), limit=limit),
+                    self.number(value["y"], join_key(key, "y"), limit=limit))
         if not isinstance(value, (list, tuple)) or len(value) != 2:
             self.fail(key, value, "expected [x, y] in metres")
-        return tuple(self.number(v, join_key(key, i)) for i, v in enumerate(value))
+        return tuple(self.number(v, join_key(key, i), limit=limit) for i, v in enumerate(value))
 
     def points(self, value: Any, key: str, minimum: int) -> np.ndarray:
         if not isinstance(value, (list, tuple)) or len(value) < minimum:
             self.fail(key, value, f"expected a list of at least {minimum} [x, y] points")
+        self.count(value, key)
         return np.array([self.point(v, join_key(key, i)) for i, v in enumerate(value)], dtype=float)
+
+    def count(self, items: list, key: str) -> list:
+        """``items``, refused when longer than MAX_COUNT."""
+        if len(items) > limits.MAX_COUNT:
+            self.fail(key, f"<a list of {len(items)} items>",
+                      f"more than {limits.MAX_COUNT} items (fgdwa.file_limits.MAX_COUNT)")
+        return items
 
     def file(self, value: Any, key: str, suffixes: Sequence[str]) -> Path:
         name = self.string(value, key)
-        path = Path(name).expanduser()
+        try:
+            path = Path(name).expanduser()
+        except RuntimeError:  # ~user of no user
+            path = Path(name)
         if not path.is_absolute():
             path = self.base_dir / path
-        if not path.is_file():
-            self.fail(key, value, f"no such file ({path})")
+        if not is_file(path):
+            self.fail(key, value, f"no such file ({clip(path, 300)})")
         if path.suffix.lower() not in suffixes:
             self.fail(key, value, f"expected a {' or '.join(suffixes)} file")
         return path
@@ -165,11 +191,12 @@ class ValueReader:
             return []
         if not isinstance(value, list):
             self.fail(key, value, "expected a list")
-        return value
+        return self.count(value, key)
 
     def critics(self, value: Any, key: str) -> list:
         if not isinstance(value, list) or not value:
             self.fail(key, value, "expected a list of critics: {name, weight, params}")
+        self.count(value, key)
         known = critic_names()
         critics = []
         for i, item in enumerate(value):
@@ -183,8 +210,11 @@ class ValueReader:
             if not isinstance(params, dict):
                 self.fail(join_key(ckey, "params"), params, "expected a mapping of numbers and words")
             for pname, pvalue in params.items():
+                pkey = join_key(join_key(ckey, "params"), clip(str(pname), 100))
                 if not isinstance(pname, str) or not (is_number(pvalue) or isinstance(pvalue, str)):
-                    self.fail(join_key(join_key(ckey, "params"), str(pname)), pvalue, "expected a number or a word")
+                    self.fail(pkey, pvalue, "expected a number or a word")
+                if is_number(pvalue):
+                    self.number(pvalue, pkey)
             critics.append({"name": name, "weight": weight, "params": dict(params)})
         return critics
 
@@ -195,7 +225,7 @@ class ValueReader:
         if kind is list:
             return self.critics(value, key)
         if kind is float:
-            return self.number(value, key)
+            return self.number(value, key, limit=_PLANNER_LIMITS.get(name, "MAX_MAGNITUDE"))
         if kind is int:
             return self.integer(value, key, low=1)
         if kind is bool:
@@ -203,4 +233,22 @@ class ValueReader:
         return self.string(value, key)
 
 
+    def rollouts(self, params: dict, key: str, value: Any) -> None:
+        """Refuses planner fields (dt, sim_time, n_v, n_omega; a dict with the defaults
+        filled in) whose rollouts would hold more than MAX_ROLLOUT_POSES poses a cycle."""
+        if not (params["dt"] > 0 and params["sim_time"] > 0):
+            return  # the core names the field at fault
+        steps = params["sim_time"] / params["dt"]
+        poses = params["n_v"] * params["n_omega"] * (steps + 1)
+        if not poses <= limits.MAX_ROLLOUT_POSES:
+            self.fail(key, value, f"n_v x n_omega x (sim_time / dt + 1) = {params['n_v']} x {params['n_omega']} x "
+                                  f"({params['sim_time']:g} / {params['dt']:g} + 1) = {poses:.3g} poses a control "
+                                  f"cycle, over {limits.MAX_ROLLOUT_POSES} (fgdwa.file_limits.MAX_ROLLOUT_POSES)")
+
+
 _PLANNER_DEFAULTS = PlannerParams()
+# The limit (a constant of fgdwa.file_limits) of each float field of PlannerParams
+# that has one narrower than MAX_MAGNITUDE.
+_PLANNER_LIMITS = {"dt": "MAX_DURATION", "sim_time": "MAX_DURATION", "moving_horizon": "MAX_DURATION",
+                   "goal_tolerance": "MAX_LENGTH", "safety_margin": "MAX_LENGTH", "key_node_radius": "MAX_LENGTH",
+                   "mover_caution_radius": "MAX_LENGTH"}

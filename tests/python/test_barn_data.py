@@ -7,8 +7,11 @@ neither is there.
 """
 
 import argparse
+import io
 import re
 import shutil
+import struct
+import zipfile
 
 import numpy as np
 import pytest
@@ -26,6 +29,7 @@ from fgdwa.datasets import (
     load_barn,
     parse_world_selection,
 )
+from fgdwa.datasets.barn import GOAL, START
 
 CONVERTED_WORLDS = (0, 150, 299)  # the worlds whose original files are in worlds/
 
@@ -353,6 +357,20 @@ def _setting(key, value):
     return change
 
 
+def _robot_off_the_map(a):
+    a["start"] = np.array([1000.0, 1000.0, 0.0])
+    a["goal"] = np.array([1010.0, 1000.0])
+
+
+def _blocked(world_id, point):
+    """Makes the cell under ``point`` an obstacle in world ``world_id`` (a grid of _small_arrays)."""
+    def change(a):
+        k = list(a["world_ids"]).index(world_id)
+        row, col = int((point[1] + 1.5) / 0.15), int(point[0] / 0.15)
+        a["grids"][k, row, col] = 1
+    return change
+
+
 @pytest.mark.parametrize("change, key, message", [
     (_without("grids"), "grids", "missing key"),
     (_without("time_limit"), "time_limit", "missing key"),
@@ -380,6 +398,21 @@ def _setting(key, value):
     (_setting("path_0", np.array([[26, 0], [25, 0]])), "path_0", "the challenge's path_<i>.npy holds"),
     (_setting("path_0", np.array([[np.inf, 0.0]])), "path_0", "non-finite"),
     (_setting("path_9", np.zeros((2, 2))), "path_9", "world 9 is not in world_ids"),
+    (_setting("resolution", np.float64(1e300)), "resolution", r"must be within \[0.0001, 1000\]"),
+    (_setting("resolution", np.float64(1e-9)), "resolution", "must be within"),
+    (_setting("origin", np.array([1e300, -1.5])), "origin", "corners must lie within"),
+    (_setting("time_limit", np.float64(1e300)), "time_limit", "must be <= 3600 s"),
+    (_setting("optimal_time", np.array([5.0, 150.0])), "optimal_time", "over the time limit 100 s"),
+    (_setting("start", np.array([-5.0, 2.25, 0.0])), "start", r"\(-5, 2.25\) is off the map"),
+    (_setting("start", np.array([3.0, 100.0, 0.0])), "start", "off the map"),
+    (_setting("start", np.array([3.0, 2.25, 1e300])), "start", "yaw"),
+    (_setting("goal", np.array([20.0, 2.25])), "goal", r"\(20, 2.25\) is off the map"),
+    (_setting("goal", np.array([13.0, 6.0])), "goal", "off the map"),  # the map ends before y = 6.0
+    (_robot_off_the_map, "start", "off the map"),
+    (_setting("goal_radius", np.float64(20.0)), "goal_radius", "holds the start"),
+    (_blocked(6, START), "start", r"obstacle cell \[25, 20\] of world 6 \(grids\[1\]\)"),
+    (_blocked(0, GOAL), "goal", r"obstacle cell \[25, 86\] of world 0 \(grids\[0\]\)"),
+    (_setting("path_6", np.array([[5.175, 2.25], [99.0, 2.25]])), "path_6", "point 1 .* of world 6 is off the map"),
 ])
 def test_malformed_files_name_the_file_and_the_key(tmp_path, change, key, message):
     arrays = _small_arrays()
@@ -408,6 +441,101 @@ def test_files_that_are_not_npz_archives(tmp_path):
     truncated.write_bytes(good[: len(good) // 2])
     with pytest.raises(FgdwaError, match="truncated.npz"):
         load_barn(truncated)
+
+
+def _npy_bytes(array):
+    buffer = io.BytesIO()
+    np.lib.format.write_array(buffer, np.asanyarray(array), allow_pickle=False)
+    return buffer.getvalue()
+
+
+def _npy_header_bytes(shape, dtype=np.uint8):
+    """A .npy header announcing ``shape``, followed by 16 bytes: far less data than announced."""
+    buffer = io.BytesIO()
+    np.lib.format.write_array_header_1_0(buffer, {"descr": np.lib.format.dtype_to_descr(np.dtype(dtype)),
+                                                  "fortran_order": False, "shape": shape})
+    return buffer.getvalue() + bytes(16)
+
+
+def _crafted(tmp_path, arrays, raw=(), name="crafted.npz"):
+    """An .npz of ``arrays`` plus raw members (name, bytes), deflated as np.savez_compressed does."""
+    path = tmp_path / name
+    with zipfile.ZipFile(path, "w", compression=zipfile.ZIP_DEFLATED) as archive:
+        for key, value in arrays.items():
+            archive.writestr(f"{key}.npy", _npy_bytes(value))
+        for member, data in raw:
+            archive.writestr(member, data)
+    return path
+
+
+def _claim_size(path, member, size):
+    """Rewrites the zip directory so that ``member`` says it decompresses to ``size`` bytes."""
+    data = bytearray(path.read_bytes())
+    at = 0
+    while True:
+        at = data.find(b"PK\x01\x02", at)
+        assert at >= 0, f"{member} not in the zip directory"
+        name_len, extra_len, comment_len = struct.unpack("<HHH", data[at + 28:at + 34])
+        if data[at + 46:at + 46 + name_len].decode() == member:
+            data[at + 24:at + 28] = struct.pack("<I", size)
+            break
+        at += 46 + name_len + extra_len + comment_len
+    path.write_bytes(bytes(data))
+
+
+def test_a_member_the_zip_directory_says_is_3_gb_is_refused_unread(tmp_path, monkeypatch):
+    path = _crafted(tmp_path, _small_arrays())
+    _claim_size(path, "grids.npy", 3 * 2**30)
+    with zipfile.ZipFile(path) as archive:
+        assert archive.getinfo("grids.npy").file_size == 3 * 2**30
+    # np.load of the file before the directory was rewritten would read grids whole; now nothing is read.
+    read_array = np.lib.format.read_array
+
+    def guarded(handle, *args, **kwargs):
+        assert getattr(handle, "name", None) != "grids.npy", "grids.npy was decompressed"
+        return read_array(handle, *args, **kwargs)
+
+    monkeypatch.setattr(np.lib.format, "read_array", guarded)
+    with pytest.raises(FgdwaError) as caught:
+        load_barn(path)
+    text = str(caught.value)
+    assert str(path) in text and "'grids'" in text and "3221225472 bytes" in text and "refused unread" in text, text
+
+
+def test_a_member_whose_npy_header_says_3_gb_is_refused_unread(tmp_path):
+    arrays = _small_arrays()
+    del arrays["grids"]
+    path = _crafted(tmp_path, arrays, raw=[("grids.npy", _npy_header_bytes((700_000, 50, 100)))])
+    with pytest.raises(FgdwaError) as caught:
+        load_barn(path)
+    text = str(caught.value)
+    assert "'grids'" in text and "shape (700000, 50, 100)" in text and "MAX_ARRAY_BYTES" in text, text
+
+
+def test_members_over_a_lowered_limit_are_refused(tmp_path, monkeypatch):
+    from fgdwa import file_limits
+
+    path = _write(tmp_path, _small_arrays(), "good.npz")
+    monkeypatch.setattr(file_limits, "MAX_ARRAY_BYTES", 5_000)  # grids hold 2 x 50 x 100 = 10 000 bytes
+    with pytest.raises(FgdwaError, match="'grids': an array of shape \\(2, 50, 100\\) and dtype uint8 takes 10000"):
+        load_barn(path)
+
+
+def test_members_outside_the_format_are_never_opened(tmp_path):
+    junk = _npy_header_bytes((3 * 2**30,))  # announces 3 GB, holds 16 bytes
+    path = _crafted(tmp_path, _small_arrays(), raw=[("junk.npy", junk), ("notes.txt", b"x" * 100)])
+    _claim_size(path, "junk.npy", 3 * 2**30)
+    dataset = load_barn(path)
+    assert dataset.world_ids == [0, 6]
+
+
+def test_converter_refuses_a_path_file_over_the_size_limit_unread(tmp_path):
+    from fgdwa.datasets.barn_convert import _read_path_cells
+
+    path = tmp_path / "path_0.npy"
+    path.write_bytes(_npy_header_bytes((2**30, 2), np.int64))  # announces 16 GiB
+    with pytest.raises(FgdwaError, match="path_0.npy: an array of shape .* refused unread"):
+        _read_path_cells(path)
 
 
 def test_find_barn_file(tmp_path, monkeypatch):

@@ -383,7 +383,7 @@ def test_engine_from_yaml_text_and_file(tmp_path):
 
 
 def test_engine_from_yaml_errors(tmp_path):
-    with raises("not valid YAML"):
+    with raises("fuzzy configuration: malformed YAML at line 1"):
         engine_from_yaml("inputs: [unclosed")
     with raises("expected a mapping at the top level, got str \\(no file named 'missing.yaml'\\)"):
         engine_from_yaml("missing.yaml")

@@ -417,3 +417,99 @@ def test_constructor_keywords_are_read_past_nested_defaults():
     assert all(hasattr(fgdwa.NavigatorParams(), name) for name in names)
     assert init_keywords(fgdwa.RobotLimits) == ("v_min", "v_max", "omega_max", "acc_v", "acc_omega", "brake_v",
                                                 "brake_omega")
+
+
+# --- limits: numbers a file may give (fgdwa.file_limits) -------------------------------------------------------------
+
+
+@pytest.mark.parametrize("text,key,message", [
+    (TINY.replace("resolution: 0.5", "resolution: 1e308"), "map.resolution", "must be <= 1000"),
+    (TINY.replace("resolution: 0.5", "resolution: 1e-9"), "map.resolution", "must be >= 0.0001"),
+    ("map: {size: [1e5, 1e5], resolution: 0.001}\nstart: [1, 1]\ngoal: [2, 2]\n", "map.size", "MAX_MAP_CELLS"),
+    (TINY.replace("resolution: 0.5", "resolution: 0.5\n  cells_per_char: 100000"), "map.ascii", "MAX_MAP_CELLS"),
+    (TINY.replace("resolution: 0.5", "resolution: 0.5\n  origin: [1e7, 0]"), "map.origin[0]", "MAX_COORDINATE"),
+    (TINY.replace("resolution: 0.5", "resolution: 1000\n  origin: [999999, 0]"), "map", "corners must lie"),
+    (TINY + "lidar: {beams: 1000000000}\n", "lidar.beams", "MAX_BEAMS"),
+    (TINY + "lidar: {max_range: 1e300}\n", "lidar.max_range", "MAX_LENGTH"),
+    (TINY.replace("start: [0.75, 0.75, 0]", "start: [1e300, 0.75, 0]"), "start[0]", "MAX_COORDINATE"),
+    (TINY.replace("start: [0.75, 0.75, 0]", "start: {x: 0.75, y: -1e7}"), "start.y", "MAX_COORDINATE"),
+    (TINY.replace("goal: [2.75, 1.25]", "goal: [2.75, 1e7]"), "goal[1]", "MAX_COORDINATE"),
+    (TINY + "max_steps: 1000000000\n", "max_steps", "MAX_STEPS"),
+    (TINY + "goal_tolerance: 1e300\n", "goal_tolerance", "MAX_LENGTH"),
+    (TINY + "moving_obstacles: [{radius: 0.1, start: [2, 1], start_delay: 1e9}]\n",
+     "moving_obstacles[0].start_delay", "MAX_DURATION"),
+    (TINY + "moving_obstacles: [{radius: 0.1, start: [2, 1], velocity: [1e6, 0]}]\n",
+     "moving_obstacles[0].velocity[0]", "MAX_SPEED"),
+    (TINY + "moving_obstacles: [{radius: 0.1, waypoints: [[2, 1], [2, 1e300]], speed: 1}]\n",
+     "moving_obstacles[0].waypoints[1][1]", "MAX_COORDINATE"),
+    (TINY + "robot: {limits: {v_max: 1e9}}\n", "robot.limits.v_max", "MAX_SPEED"),
+    (TINY + "robot: {footprint: {radius: 1e300}}\n", "robot.footprint.radius", "MAX_LENGTH"),
+    (TINY + "planner: {overrides: {sim_time: 1e300}}\n", "planner.overrides.sim_time", "MAX_DURATION"),
+    (TINY + "planner: {overrides: {dt: 1e-9}}\n", "planner.overrides", "MAX_ROLLOUT_POSES"),
+    (TINY + "planner: {overrides: {n_v: 100000, n_omega: 100000}}\n", "planner.overrides", "MAX_ROLLOUT_POSES"),
+    (TINY + "planner: {overrides: {n_v: 1000000}}\n", "planner.overrides.n_v", "MAX_COUNT"),
+    (TINY + "planner: {overrides: {critics: [{name: heading, weight: 1e300}]}}\n",
+     "planner.overrides.critics[0].weight", "MAX_MAGNITUDE"),
+    (TINY + "global_planner: {options: {inflation_radius: 1e300}}\n", "global_planner.options.inflation_radius",
+     "MAX_LENGTH"),
+    (TINY + "variability: {start_xy_std: 1e300}\n", "variability.start_xy_std", "MAX_LENGTH"),
+])
+def test_numbers_over_their_limits_name_file_and_key(tmp_path, text, key, message):
+    path = write(tmp_path, text)
+    fails(path, str(path), f"{key} = ", message)
+
+
+def test_a_start_within_the_goal_tolerance_would_succeed_at_once(tmp_path):
+    path = write(tmp_path, TINY + "goal_tolerance: 2.5\n")
+    fails(path, str(path), "goal_tolerance = 2.5", "every run would succeed")
+    path = write(tmp_path, TINY + "planner: {overrides: {goal_tolerance: 2.5}}\n")
+    fails(path, str(path), "planner.overrides.goal_tolerance = 2.5", "every run would succeed")
+    near = TINY.replace("goal: [2.75, 1.25]", "goal: [0.75, 0.95]")
+    fails(write(tmp_path, near), "goal = [0.75, 0.95]", "within the goal tolerance 0.3 m")
+
+
+def test_lists_are_bounded(tmp_path, monkeypatch):
+    from fgdwa import file_limits
+
+    monkeypatch.setattr(file_limits, "MAX_COUNT", 3)
+    movers = "".join(f"  - {{radius: 0.1, start: [2.{i}, 1]}}\n" for i in range(4))
+    fails(write(tmp_path, TINY + "moving_obstacles:\n" + movers), "moving_obstacles = ", "more than 3 items")
+    route = TINY + "moving_obstacles: [{radius: 0.1, waypoints: [[2, 1], [2.1, 1], [2.2, 1], [2.3, 1]], speed: 1}]\n"
+    fails(write(tmp_path, route), "moving_obstacles[0].waypoints = ", "more than 3 items")
+
+
+def _npy_header_only(path, shape, dtype=np.uint8):
+    """A .npy file whose header announces ``shape`` but holds 16 bytes of data."""
+    with open(path, "wb") as handle:
+        np.lib.format.write_array_header_1_0(handle, {"descr": np.lib.format.dtype_to_descr(np.dtype(dtype)),
+                                                      "fortran_order": False, "shape": shape})
+        handle.write(bytes(16))
+
+
+def test_npy_map_over_the_cell_limit_is_refused_from_its_header(tmp_path):
+    _npy_header_only(tmp_path / "huge.npy", (20_000, 20_000))
+    path = write(tmp_path, "map: {npy: huge.npy, resolution: 0.1}\nstart: [0.5, 0.5]\ngoal: [1, 1]\n")
+    fails(path, str(path), "map.npy = 'huge.npy'", "20000 x 20000 = 400000000 cells", "MAX_MAP_CELLS")
+    _npy_header_only(tmp_path / "grades.npy", (20_000, 20_000))
+    fails(write(tmp_path, TINY + "terrain: {npy: grades.npy}\n"), "terrain.npy", "MAX_MAP_CELLS")
+
+
+def test_npy_map_over_the_byte_limit_is_refused_unread(tmp_path, monkeypatch):
+    from fgdwa import file_limits
+
+    np.save(tmp_path / "cells.npy", np.zeros((40, 40)))  # float64: 12 800 bytes
+    monkeypatch.setattr(file_limits, "MAX_ARRAY_BYTES", 10_000)
+    monkeypatch.setattr(np.lib.format, "read_array", lambda *a, **k: pytest.fail("the data was read"))
+    path = write(tmp_path, "map: {npy: cells.npy, resolution: 0.1}\nstart: [0.5, 0.5]\ngoal: [1, 1]\n")
+    fails(path, str(path), "map.npy", "12800 bytes", "refused unread")
+
+
+def test_png_map_over_the_cell_limit_is_refused_before_decoding(tmp_path, monkeypatch):
+    matplotlib_image = pytest.importorskip("matplotlib.image")
+    from fgdwa import file_limits
+
+    matplotlib_image.imsave(tmp_path / "room.png", np.ones((4, 6, 3)))
+    monkeypatch.setattr(file_limits, "MAX_MAP_CELLS", 20)
+    monkeypatch.setattr(matplotlib_image, "imread", lambda *a, **k: pytest.fail("the pixels were decoded"))
+    path = write(tmp_path, "map: {png: room.png, resolution: 0.5}\nstart: [0.5, 0.5]\ngoal: [1, 1]\n")
+    fails(path, str(path), "map.png = 'room.png'", "4 x 6 = 24 cells")

@@ -24,13 +24,16 @@ from __future__ import annotations
 import math
 import os
 import re
+import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Iterator, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
+from fgdwa import file_limits as limits
 from fgdwa._core import FgdwaError, OccupancyGrid
+from fgdwa.file_limits import clip, npz_names, read_npz_member
 
 # --- the format's constants (docs/barn.md) ----------------------------------------
 RESOLUTION = 0.15  # m per cell; also the spacing of the challenge's cylinders
@@ -230,50 +233,72 @@ def find_barn_file(path: Optional[Union[str, os.PathLike]] = None) -> Path:
 def load_barn(path: Union[str, os.PathLike]) -> BarnDataset:
     """Read and check a file in the barn.npz format (docs/barn.md).
 
+    Only the format's keys are read (SHARED_KEYS and ``path_<id>`` of each world
+    id), each refused before it is decompressed when the zip directory or its
+    .npy header says it holds more than ``fgdwa.file_limits.MAX_ARRAY_BYTES``.
     Raises FgdwaError naming the file and the key on a missing key, a wrong shape,
-    dtype or value, or a world id without its ``path_<id>``.
+    dtype or value (a resolution, origin or time limit beyond the limits of
+    fgdwa.file_limits; a start or goal off the map or on an obstacle of a world;
+    a goal radius holding the start), or a world id without its ``path_<id>``.
     """
     name = str(path)
     not_barn = f"{name}: not a barn.npz file (expected an .npz archive with keys {', '.join(SHARED_KEYS)})"
     try:
-        loaded = np.load(path, allow_pickle=False)
-        if not isinstance(loaded, np.lib.npyio.NpzFile):  # a lone .npy array
-            raise FgdwaError(not_barn)
-        with loaded as npz:
-            arrays = {key: npz[key] for key in npz.files}
+        if not zipfile.is_zipfile(path):
+            with open(path, "rb") as handle:
+                npy = handle.read(len(np.lib.format.MAGIC_PREFIX)) == np.lib.format.MAGIC_PREFIX
+            if npy:  # a lone .npy array
+                raise FgdwaError(not_barn)
+            raise FgdwaError(f"{name}: not a readable .npz file (not a zip archive)")
+        with zipfile.ZipFile(path) as archive:
+            keys = npz_names(archive)
+            if not keys:
+                raise FgdwaError(not_barn)
+            for key in SHARED_KEYS:
+                if key not in keys:
+                    raise FgdwaError(f"{name}: missing key '{key}' (a barn.npz file holds {', '.join(SHARED_KEYS)} "
+                                     f"and path_<id> per world)")
+            arrays = {key: read_npz_member(archive, key, name) for key in SHARED_KEYS}
+            ids = arrays["world_ids"]
+            _check_world_ids(name, ids)
+            for wid in ids:
+                key = f"path_{int(wid)}"
+                if key not in keys:
+                    raise FgdwaError(f"{name}: missing key '{key}': world {int(wid)} is in world_ids but has no "
+                                     f"reference path")
+                arrays[key] = read_npz_member(archive, key, name)
     except FgdwaError:
         raise
     except FileNotFoundError:
         raise FgdwaError(f"{name}: no such file") from None
     except (OSError, ValueError, EOFError) as error:
-        raise FgdwaError(f"{name}: not a readable .npz file ({error})") from None
-    except Exception as error:  # zipfile.BadZipFile and friends from a damaged archive
-        raise FgdwaError(f"{name}: not a readable .npz file ({type(error).__name__}: {error})") from None
-    if not arrays:
-        raise FgdwaError(not_barn)
-    _check_arrays(name, arrays)
+        raise FgdwaError(f"{name}: not a readable .npz file ({clip(error)})") from None
+    except Exception as error:  # zipfile.BadZipFile, zlib.error and friends from a damaged archive
+        raise FgdwaError(f"{name}: not a readable .npz file ({type(error).__name__}: {clip(error)})") from None
+    _check_arrays(name, arrays, keys)
     return BarnDataset(name, arrays)
 
 
-def _check_arrays(name: str, a: dict) -> None:
+def _check_world_ids(name: str, ids: np.ndarray) -> None:
+    def fail(message):
+        raise FgdwaError(f"{name}: key 'world_ids': {message}")
+
+    if ids.ndim != 1 or len(ids) == 0:
+        fail(f"shape {ids.shape}: expected (n,) with n >= 1")
+    if ids.dtype.kind not in "iu":
+        fail(f"dtype {ids.dtype}: expected integers")
+    if np.any(ids < 0):
+        fail(f"negative world id {int(ids[ids < 0][0])}")
+    unique, counts = np.unique(ids, return_counts=True)
+    if np.any(counts > 1):
+        fail(f"world id {int(unique[counts > 1][0])} appears more than once")
+
+
+def _check_arrays(name: str, a: dict, keys: Sequence[str]) -> None:
     def fail(key, message):
         raise FgdwaError(f"{name}: key '{key}': {message}")
 
-    for key in SHARED_KEYS:
-        if key not in a:
-            raise FgdwaError(f"{name}: missing key '{key}' (a barn.npz file holds {', '.join(SHARED_KEYS)} "
-                             f"and path_<id> per world)")
-
     ids = a["world_ids"]
-    if ids.ndim != 1 or len(ids) == 0:
-        fail("world_ids", f"shape {ids.shape}: expected (n,) with n >= 1")
-    if ids.dtype.kind not in "iu":
-        fail("world_ids", f"dtype {ids.dtype}: expected integers")
-    if np.any(ids < 0):
-        fail("world_ids", f"negative world id {int(ids[ids < 0][0])}")
-    unique, counts = np.unique(ids, return_counts=True)
-    if np.any(counts > 1):
-        fail("world_ids", f"world id {int(unique[counts > 1][0])} appears more than once")
     n = len(ids)
 
     for key, shape in (("grids", (n,) + GRID_SHAPE), ("fields", (n, BARN_FIELD_SIZE, BARN_FIELD_SIZE))):
@@ -286,8 +311,6 @@ def _check_arrays(name: str, a: dict) -> None:
             fail(key, "values other than 0 and 1")
 
     _check_float(fail, a, "optimal_time", (n,))
-    if np.any(a["optimal_time"] <= 0):
-        fail("optimal_time", "values must be > 0 (seconds)")
     _check_float(fail, a, "resolution", ())
     _check_float(fail, a, "origin", (2,))
     _check_float(fail, a, "start", (3,))
@@ -297,12 +320,57 @@ def _check_arrays(name: str, a: dict) -> None:
     for key in ("resolution", "goal_radius", "time_limit"):
         if float(a[key]) <= 0:
             fail(key, f"{float(a[key])!r}: must be > 0")
+    if np.any(a["optimal_time"] <= 0):
+        fail("optimal_time", "values must be > 0 (seconds)")
+
+    # Numbers the simulation can hold: a cell the distance field can size, a
+    # finite run, positions that keep their precision.
+    resolution = float(a["resolution"])
+    if not limits.MIN_RESOLUTION <= resolution <= limits.MAX_RESOLUTION:
+        fail("resolution", f"{resolution!r}: must be within [{limits.MIN_RESOLUTION:g}, {limits.MAX_RESOLUTION:g}] "
+                           f"m per cell (fgdwa.file_limits.MIN_RESOLUTION, MAX_RESOLUTION)")
+    origin = tuple(float(v) for v in a["origin"])
+    x0, y0 = origin
+    x1, y1 = x0 + GRID_SHAPE[1] * resolution, y0 + GRID_SHAPE[0] * resolution
+    if max(abs(x0), abs(y0), abs(x1), abs(y1)) > limits.MAX_COORDINATE:
+        fail("origin", f"{origin}: the map spans x {x0:g} to {x1:g}, y {y0:g} to {y1:g}; its corners must lie "
+                       f"within +-{limits.MAX_COORDINATE:g} m (fgdwa.file_limits.MAX_COORDINATE)")
+    time_limit = float(a["time_limit"])
+    if time_limit > limits.MAX_DURATION:
+        fail("time_limit", f"{time_limit!r}: must be <= {limits.MAX_DURATION:g} s of simulated time "
+                           f"(fgdwa.file_limits.MAX_DURATION)")
+    slowest = float(np.max(a["optimal_time"]))
+    if slowest > time_limit:
+        fail("optimal_time", f"{slowest!r} s is over the time limit {time_limit:g} s: every run that succeeded "
+                             f"would score the best 0.5 however slow")
+    if abs(float(a["start"][2])) > limits.MAX_MAGNITUDE:
+        fail("start", f"yaw {float(a['start'][2])!r}: must be within +-{limits.MAX_MAGNITUDE:g} rad")
+
+    # The task must be one: start and goal on the map, apart by more than the goal radius.
+    def inside(point):
+        return x0 <= point[0] < x1 and y0 <= point[1] < y1
+
+    start, goal = a["start"][:2], a["goal"]
+    for key, point in (("start", start), ("goal", goal)):
+        if not inside(point):
+            fail(key, f"({point[0]:g}, {point[1]:g}) is off the map (x {x0:g} to {x1:g}, y {y0:g} to {y1:g})")
+    distance = float(np.hypot(*(goal - start)))
+    goal_radius = float(a["goal_radius"])
+    if goal_radius >= distance:
+        fail("goal_radius", f"{goal_radius!r} m holds the start ({distance:g} m from the goal): every run would "
+                            f"succeed before the robot moved")
+    for key, point in (("start", start), ("goal", goal)):
+        row = min(int((point[1] - y0) / resolution), GRID_SHAPE[0] - 1)
+        col = min(int((point[0] - x0) / resolution), GRID_SHAPE[1] - 1)
+        blocked = np.flatnonzero(a["grids"][:, row, col])
+        if len(blocked):
+            k = int(blocked[0])
+            fail(key, f"({point[0]:g}, {point[1]:g}) lies on an obstacle cell [{row}, {col}] of world "
+                      f"{int(ids[k])} (grids[{k}])")
 
     id_set = set(int(i) for i in ids)
     for wid in ids:
         key = f"path_{int(wid)}"
-        if key not in a:
-            raise FgdwaError(f"{name}: missing key '{key}': world {int(wid)} is in world_ids but has no reference path")
         path = a[key]
         if path.ndim != 2 or path.shape[1] != 2 or path.shape[0] < 1:
             fail(key, f"shape {path.shape}: expected (n, 2) points (x, y) in map metres")
@@ -312,7 +380,12 @@ def _check_arrays(name: str, a: dict) -> None:
             fail(key, f"dtype {path.dtype}: expected float map metres{hint}")
         if not np.all(np.isfinite(path)):
             fail(key, "non-finite values")
-    for key in a:
+        off = ~((path[:, 0] >= x0) & (path[:, 0] < x1) & (path[:, 1] >= y0) & (path[:, 1] < y1))
+        if np.any(off):
+            i = int(np.flatnonzero(off)[0])
+            fail(key, f"point {i} ({path[i, 0]:g}, {path[i, 1]:g}) of world {int(wid)} is off the map "
+                      f"(x {x0:g} to {x1:g}, y {y0:g} to {y1:g})")
+    for key in keys:
         match = _PATH_KEY.match(key)
         if match and int(match.group(1)) not in id_set:
             fail(key, f"world {int(match.group(1))} is not in world_ids")

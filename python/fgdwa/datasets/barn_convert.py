@@ -32,6 +32,7 @@ from fgdwa.datasets.barn import (
     TIME_LIMIT,
     parse_world_selection,
 )
+from fgdwa.file_limits import load_npy, short_repr
 
 
 class ConvertedWorld(NamedTuple):
@@ -79,7 +80,8 @@ def _cylinder_positions(world_file: Path) -> List[Tuple[str, float, float]]:
         except ValueError:
             values = []
         if len(values) < 2 or not all(math.isfinite(v) for v in values[:2]):
-            raise FgdwaError(f"{world_file}: model {m.group(1)}: cannot read pose {pose.group(1).strip()!r}")
+            raise FgdwaError(f"{world_file}: model {m.group(1)}: cannot read pose "
+                             f"{short_repr(pose.group(1).strip())}")
         out.append((m.group(1), values[0], values[1]))
     return out
 
@@ -132,12 +134,9 @@ def read_barn_world(world_file: Union[str, os.PathLike], path_file: Union[str, o
 
 
 def _read_path_cells(path_file: Path) -> np.ndarray:
-    try:
-        cells = np.load(path_file, allow_pickle=False)
-    except FileNotFoundError:
-        raise FgdwaError(f"{path_file}: no such file (each world_<i>.world needs its path_<i>.npy)") from None
-    except (OSError, ValueError, EOFError) as error:
-        raise FgdwaError(f"{path_file}: not a readable .npy file ({error})") from None
+    if not path_file.is_file():
+        raise FgdwaError(f"{path_file}: no such file (each world_<i>.world needs its path_<i>.npy)")
+    cells = load_npy(path_file, str(path_file))  # its size read from the header first
     if not isinstance(cells, np.ndarray) or cells.ndim != 2 or cells.shape[1] != 2 or len(cells) < 1:
         raise FgdwaError(f"{path_file}: shape {getattr(cells, 'shape', None)}: expected (n, 2) [row, col] field cells")
     if cells.dtype.kind not in "iu":
