@@ -27,6 +27,9 @@ struct Disc {
   void validate() const;
 };
 
+// Threads: const queries of every source may run concurrently on one object
+// (planners on several threads sharing one world); the setters may not run
+// while anything else uses it.
 class ClearanceSource {
  public:
   virtual ~ClearanceSource() = default;
@@ -64,6 +67,8 @@ class ClearanceSource {
 // The footprint's distance to those of `discs` that move or grow, placed `t` seconds ahead.
 double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose, double t);
 
+// Threads: as ClearanceSource. The fields it holds may be shared with other
+// sources; none of them may be updated while it is queried.
 class FieldClearance : public ClearanceSource {
  public:
   // `field` may be null (no static map).

@@ -23,6 +23,7 @@ struct CellRect {
 // merged, then identical runs of consecutive rows are stacked.
 std::vector<CellRect> merge_occupied_cells(const OccupancyGrid& grid);
 
+// Threads: as ClearanceSource.
 class CollisionWorld : public ClearanceSource {
  public:
   CollisionWorld();

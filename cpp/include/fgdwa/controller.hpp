@@ -27,6 +27,8 @@ struct CycleReport {
   double plan_time = 0.0;        // s, wall clock: the local planner
 };
 
+// Threads: one per thread, like its LocalPlanner; the map field it is given
+// may be shared if nothing updates it.
 class Controller {
  public:
   // `map` may be null (no prior map); `policy` null keeps the params' weights.

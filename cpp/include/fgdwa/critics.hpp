@@ -56,6 +56,8 @@ struct Rollout {
 enum class CriticSense : std::uint8_t { Reward, Cost };
 const char* to_string(CriticSense sense);
 
+// Threads: a critic belongs to one planner; prepare() and score() write its
+// scratch buffers.
 class Critic {
  public:
   virtual ~Critic() = default;

@@ -15,6 +15,8 @@ namespace fgdwa {
 constexpr int kNoBand = -1;
 
 // Reusable buffers, so the control loop allocates nothing per call.
+// Threads: one per thread (its buffers are written by every call); dtw()
+// builds its own.
 class DtwWorkspace {
  public:
   double distance(const Vec2* a, std::size_t n, const Vec2* b, std::size_t m, int band = kNoBand);

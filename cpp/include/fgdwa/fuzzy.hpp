@@ -93,6 +93,8 @@ struct FuzzyRule {
   std::string to_string() const;
 };
 
+// Threads: evaluate() and fire() are const and write only their outputs;
+// share an engine freely once built.
 class MamdaniEngine {
  public:
   static constexpr int kDefaultResolution = 1001;

@@ -63,6 +63,8 @@ struct AStarParams {
 // The start and goal cells may lie in the inflated band (a robot parked near a
 // wall) but not in an obstacle; from a start in the band, the band's cells
 // within the inflation radius of the start are passable, so the path can leave it.
+// Threads: plan() is const and keeps its search state on the stack, so
+// threads may share a planner; set_unknown() may not run concurrently.
 class AStarPlanner {
  public:
   AStarPlanner(const OccupancyGrid& grid, const AStarParams& params = {},
@@ -115,6 +117,8 @@ struct OmplParams {
 // footprint against the map with FCL, planning over SE(2)). The cost is a
 // weighted sum of OMPL objectives: path length, a clearance integral and a
 // terrain-risk integral.
+// Threads: plan() may be called from several threads; OMPL's global state
+// is guarded by a lock, so such calls run one at a time.
 class OmplPlanner {
  public:
   OmplPlanner(const OccupancyGrid& grid, const Footprint& footprint, const OmplParams& params = {},

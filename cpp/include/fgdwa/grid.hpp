@@ -14,6 +14,8 @@
 
 namespace fgdwa {
 
+// Threads: const methods may run concurrently; set() may not run while
+// anything else uses the grid.
 class OccupancyGrid {
  public:
   // `cells` is row-major, rows x cols, 0 = free and any other value = obstacle.
@@ -47,6 +49,7 @@ class OccupancyGrid {
 
 // Slope grades 0-4 on the same cell layout as an OccupancyGrid (Section 3.3.3):
 // 0 is flat, 4 cannot be entered.
+// Threads: immutable once built; share it freely.
 class TerrainGrid {
  public:
   static constexpr int kMaxGrade = 4;

@@ -49,6 +49,9 @@ struct OccupancyParams {
 enum class CellState : std::uint8_t { Unknown, Free, Occupied };
 const char* to_string(CellState state);
 
+// Threads: one writer; nothing else may use the map while integrate(), mark()
+// or field() run. A field it returned never changes while someone holds it
+// (field() updates a copy then), so it may be shared with other threads.
 class ScanMap {
  public:
   ScanMap(int rows, int cols, double resolution, Vec2 origin, const OccupancyParams& params = {});

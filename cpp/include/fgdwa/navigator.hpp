@@ -144,6 +144,8 @@ struct CycleRecord {
   StageTimes times;
 };
 
+// Threads: one per robot and thread; nothing it owns is shared, and it
+// shares nothing it may update.
 class Navigator {
  public:
   // `map`: the known map (MapMode::Known) or the layout of the one to build

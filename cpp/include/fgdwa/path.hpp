@@ -17,6 +17,7 @@ struct PathProjection {
   double distance = 0.0;      // m from the query point
 };
 
+// Threads: immutable once built; share it freely.
 class GlobalPath {
  public:
   // At least two points; repeated consecutive points are dropped, and at least
@@ -76,6 +77,7 @@ struct KeyNodeParams {
 // The temporary target of GDWA: the first key node not yet reached. A node is
 // reached when the robot comes within reach_radius of it or its projection on
 // the path passes it; reached nodes stay reached.
+// Threads: one per planner; update() advances it.
 class KeyNodeTracker {
  public:
   KeyNodeTracker(const GlobalPath& path, const KeyNodeParams& params);

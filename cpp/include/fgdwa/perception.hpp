@@ -38,6 +38,8 @@ struct Scan {
 // Casts rays against a static distance field (the true world's grid) and
 // moving discs. The field makes free space cheap: a ray jumps by the distance
 // to the nearest obstacle, then walks cell by cell once near one.
+// Threads: scan() and cast() are const and draw from the generator they are
+// given, so threads may share a scanner, each with its own generator.
 class LaserScanner {
  public:
   LaserScanner(const LidarParams& params, std::shared_ptr<const DistanceField> world);

@@ -136,6 +136,9 @@ struct PlanResult {
   int admissible_count() const { return reject_counts[0]; }
 };
 
+// Threads: one planner per thread. plan() writes its buffers and result, so
+// a planner is never shared while planning; the world it is given may be
+// shared (ClearanceSource).
 class LocalPlanner {
  public:
   LocalPlanner(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& params = {});

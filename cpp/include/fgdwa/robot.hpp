@@ -29,6 +29,7 @@ struct RobotState {
 
 // A circle centred on the robot, or a convex polygon in the robot frame
 // (x forward, y left), vertices in any winding order.
+// Threads: immutable once built; share it freely.
 class Footprint {
  public:
   static Footprint circle(double radius);

@@ -105,6 +105,7 @@ struct Track {
   double speed_std() const;
 };
 
+// Threads: one per thread; update() changes every track.
 class Tracker {
  public:
   explicit Tracker(const TrackerParams& params = {});

@@ -17,6 +17,7 @@ namespace fgdwa {
 // Weight per critic name.
 using CriticWeights = std::map<std::string, double>;
 
+// Threads: weights() is const; the shipped policies may be shared.
 class WeightPolicy {
  public:
   virtual ~WeightPolicy() = default;
