@@ -15,7 +15,7 @@ APT_PACKAGES := libeigen3-dev libfcl-dev libompl-dev libhwy-dev libboost-seriali
 BIN := $(VENV)/bin
 SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*' -not -path 'cpp/ros/*')
 
-.PHONY: setup system-packages demo test test-cpp test-python bench clean stubs
+.PHONY: setup system-packages demo test test-cpp test-python bench clean stubs sanitize
 
 setup: system-packages $(VENV)/.installed
 
@@ -69,6 +69,28 @@ bench: setup
 	$(BUILD)/cpp/bench/bench_global
 	$(BUILD)/cpp/bench/bench_fgdwa
 	$(BUILD)/cpp/bench/bench_navigator
+
+# The C++ suites and the extension built with AddressSanitizer and
+# UndefinedBehaviorSanitizer in a tree of their own; ctest, then the fuzz and
+# bad-input modules against the sanitized extension (the venv's Python with the
+# sanitizers' runtimes preloaded; Python's own allocations are not leak-checked).
+SANITIZE_BUILD ?= build/sanitize
+SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+SANITIZE_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+
+sanitize: setup
+	$(BIN)/cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON \
+	  -DFGDWA_BUILD_PYTHON=ON -DFGDWA_BUILD_ROS=OFF -DPython_EXECUTABLE=$(abspath $(BIN))/python \
+	  -Dpybind11_DIR="$$($(BIN)/python -m pybind11 --cmakedir)" -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)" \
+	  -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE_FLAGS)" -DCMAKE_SHARED_LINKER_FLAGS="$(SANITIZE_FLAGS)" \
+	  -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja
+	$(BIN)/cmake --build $(SANITIZE_BUILD) -j $(JOBS)
+	$(SANITIZE_ENV) $(BIN)/ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -E install_and_build_example
+	rm -rf $(SANITIZE_BUILD)/python && mkdir -p $(SANITIZE_BUILD)/python
+	cp -r python/fgdwa $(SANITIZE_BUILD)/python/ && cp $(SANITIZE_BUILD)/cpp/bindings/_core*.so $(SANITIZE_BUILD)/python/fgdwa/
+	LD_PRELOAD="$$(c++ -print-file-name=libasan.so) $$(c++ -print-file-name=libubsan.so)" $(SANITIZE_ENV) \
+	  PYTHONPATH=$(abspath $(SANITIZE_BUILD))/python $(BIN)/python -m pytest -q -p no:cacheprovider \
+	  tests/python/test_fuzz.py tests/python/test_bad_input.py
 
 clean:
 	rm -rf build $(OUT) $(VENV)

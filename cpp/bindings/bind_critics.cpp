@@ -19,7 +19,7 @@ CriticConfig critic_config(std::string name, double weight, const py::dict& para
     if (py::isinstance<py::str>(kv.second))
       c.options[key] = kv.second.cast<std::string>();
     else if (py::isinstance<py::float_>(kv.second) || py::isinstance<py::int_>(kv.second))
-      c.params[key] = kv.second.cast<double>();
+      c.params[key] = to_number(kv.second, "critic " + c.name + "." + key);
     else
       throw Error("critic " + c.name + "." + key + ": expected a number or a word, got " +
                   std::string(py::str(py::type::of(kv.second))));

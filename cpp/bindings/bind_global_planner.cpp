@@ -115,7 +115,7 @@ void init_global_planner(py::module_& m) {
              params.range = range;
              params.max_iterations = max_iterations;
              params.seed = seed;
-             params.inflation_radius = inflation_radius.is_none() ? footprint.radius() : inflation_radius.cast<double>();
+             params.inflation_radius = inflation_radius.is_none() ? footprint.radius() : to_number(inflation_radius, "inflation_radius");
              params.w_length = w_length;
              params.w_clearance = w_clearance;
              params.clearance_reference = clearance_reference;

@@ -58,7 +58,7 @@ void init_navigator(py::module_& m) {
              p.sensed_close_radius = sensed_close_radius;
              p.backup_distance = backup_distance;
              p.backup_speed = backup_speed;
-             p.rotate_limit = rotate_limit_deg * M_PI / 180.0;
+             p.rotate_limit = radians_from_degrees("rotate_limit_deg", rotate_limit_deg, 0.0, 36000.0);
              p.wait_time = wait_time;
              p.wait_radius = wait_radius;
              p.max_recoveries = max_recoveries;

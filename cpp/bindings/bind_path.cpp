@@ -67,8 +67,7 @@ void init_path(py::module_& m) {
         return py::make_tuple(q.x(), q.y());
       }, py::arg("s"), "The point at arc length s metres (clamped to the path).")
       .def("key_nodes", [](const GlobalPath& p, double min_turn_deg) {
-        if (!(min_turn_deg >= 0.0 && min_turn_deg < 180.0)) throw Error("min_turn_deg = " + std::to_string(min_turn_deg) + ": must be in [0, 180)");
-        return p.key_nodes(min_turn_deg * M_PI / 180.0);
+        return p.key_nodes(radians_from_degrees("min_turn_deg", min_turn_deg, 0.0, 180.0, true));
       }, py::arg("min_turn_deg") = 10.0,
            "Indices of the vertices where the path turns by more than min_turn_deg degrees, then the last vertex.")
       .def("__len__", [](const GlobalPath& p) { return p.points().size(); })

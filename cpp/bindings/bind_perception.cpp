@@ -16,7 +16,7 @@ void init_perception(py::module_& m) {
   py::class_<LidarParams>(m, "LidarParams", "A planar lidar: field of view (deg), beams, max range (m), range noise (m), "
                                         "the probability a beam returns nothing (reads +inf).")
       .def(py::init([](double fov_deg, int beams, double max_range, double noise_std, double dropout) {
-             LidarParams p{fov_deg * M_PI / 180.0, beams, max_range, noise_std, dropout};
+             LidarParams p{radians_from_degrees("fov_deg", fov_deg, 0.0, 360.0), beams, max_range, noise_std, dropout};
              p.validate();
              return p;
            }),
@@ -104,7 +104,7 @@ void init_perception(py::module_& m) {
 
   py::class_<DetectWindowParams>(m, "DetectWindowParams", "The detect window: +-half_angle_deg about the heading, radius R (m), base c of Eq. 13.")
       .def(py::init([](double half_angle_deg, double radius, double base) {
-             DetectWindowParams p{half_angle_deg * M_PI / 180.0, radius, base};
+             DetectWindowParams p{radians_from_degrees("half_angle_deg", half_angle_deg, 0.0, 180.0), radius, base};
              p.validate();
              return p;
            }),

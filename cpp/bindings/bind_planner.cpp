@@ -22,17 +22,20 @@ CriticConfig critic_from_python(py::handle item) {
   } else if (py::isinstance<py::dict>(item)) {
     auto d = item.cast<py::dict>();
     for (auto kv : d) {
-      const auto key = kv.first.cast<std::string>();
+      const auto key = to_word(kv.first, "critics: a key");
       if (key != "name" && key != "weight" && key != "params")
         throw Error("critics: unknown key '" + key + "' (expected name, weight, params)");
     }
     if (!d.contains("name")) throw Error("critics: an entry has no 'name'");
-    c = critic_config(d["name"].cast<std::string>(), d.contains("weight") ? d["weight"].cast<double>() : 1.0,
-                      d.contains("params") ? d["params"].cast<py::dict>() : py::dict());
+    const std::string name = to_word(d["name"], "critics: name");
+    c = critic_config(name, d.contains("weight") ? to_number(d["weight"], "critics: weight of '" + name + "'") : 1.0,
+                      d.contains("params") ? to_dict(d["params"], "critics: params of '" + name + "'") : py::dict());
   } else if (py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item)) {
     auto t = item.cast<py::sequence>();
     if (t.size() < 2 || t.size() > 3) throw Error("critics: a tuple entry is (name, weight[, params])");
-    c = critic_config(t[0].cast<std::string>(), t[1].cast<double>(), t.size() == 3 ? t[2].cast<py::dict>() : py::dict());
+    const std::string name = to_word(t[0], "critics: name");
+    c = critic_config(name, to_number(t[1], "critics: weight of '" + name + "'"),
+                      t.size() == 3 ? to_dict(t[2], "critics: params of '" + name + "'") : py::dict());
   } else {
     throw Error("critics: each entry is a CriticConfig, a dict or a (name, weight[, params]) tuple, got " +
                 std::string(py::str(py::type::of(item))));
@@ -84,7 +87,7 @@ void init_planner(py::module_& m) {
              p.braking = braking_from_string(braking);
              p.goal_tolerance = goal_tolerance;
              p.heading_target = heading_target_from_string(heading_target);
-             p.key_nodes.min_turn = key_node_angle_deg * M_PI / 180.0;
+             p.key_nodes.min_turn = radians_from_degrees("key_node_angle_deg", key_node_angle_deg, 0.0, 180.0, true);
              p.key_nodes.reach_radius = key_node_radius;
              p.key_nodes.require_sight = key_node_sight;
              p.safety_margin = safety_margin;

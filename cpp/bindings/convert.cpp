@@ -45,6 +45,43 @@ std::array<double, N> fixed(py::handle obj, const std::string& name) {
 }
 }  // namespace
 
+namespace {
+std::string type_name(py::handle obj) { return py::str(py::type::of(obj).attr("__name__")); }
+}  // namespace
+
+double to_number(py::handle obj, const std::string& name) {
+  if (!(py::isinstance<py::float_>(obj) || py::isinstance<py::int_>(obj)))
+    throw Error(name + ": expected a number, got " + type_name(obj));
+  const double value = PyFloat_AsDouble(obj.ptr());
+  if (value == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw Error(name + ": the integer is too large for a float");
+  }
+  return value;
+}
+
+std::string to_word(py::handle obj, const std::string& name) {
+  if (!py::isinstance<py::str>(obj)) throw Error(name + ": expected a str, got " + type_name(obj));
+  return obj.cast<std::string>();
+}
+
+py::dict to_dict(py::handle obj, const std::string& name) {
+  if (!py::isinstance<py::dict>(obj)) throw Error(name + ": expected a dict, got " + type_name(obj));
+  return obj.cast<py::dict>();
+}
+
+double radians_from_degrees(const std::string& name, double degrees, double lo, double hi, bool hi_open) {
+  const auto text = [](double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+  };
+  if (!(std::isfinite(degrees) && degrees >= lo && (hi_open ? degrees < hi : degrees <= hi)))
+    throw Error(name + " = " + text(degrees) + ": must lie in [" + text(lo) + ", " + text(hi) + (hi_open ? ")" : "]") +
+                " degrees");
+  return degrees * M_PI / 180.0;
+}
+
 Vec2 to_vec2(py::handle obj, const std::string& name) {
   if (py::isinstance<Pose2>(obj)) return obj.cast<Pose2>().position();
   const auto a = fixed<2>(obj, name);

@@ -23,6 +23,16 @@ namespace py = pybind11;
 py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::string& name, int ndim, long width,
                                                     bool allow_infinite = false);
 
+// A Python number (int or float) as a double, a str, a dict; otherwise an
+// error naming `name` and the type given.
+double to_number(py::handle obj, const std::string& name);
+std::string to_word(py::handle obj, const std::string& name);
+py::dict to_dict(py::handle obj, const std::string& name);
+
+// An angle given in degrees, checked in degrees (lo <= degrees <= hi; `hi_open`:
+// degrees < hi), so a refusal names the value as the user gave it; in radians.
+double radians_from_degrees(const std::string& name, double degrees, double lo, double hi, bool hi_open = false);
+
 Vec2 to_vec2(py::handle obj, const std::string& name);
 Pose2 to_pose(py::handle obj, const std::string& name);
 Twist to_twist(py::handle obj, const std::string& name);

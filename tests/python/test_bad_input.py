@@ -160,3 +160,82 @@ def test_safety_margin():
     assert fgdwa.PlannerParams().safety_margin == 0.02
     with raises("safety_margin"):
         fgdwa.PlannerParams(safety_margin=-0.01)
+
+
+# The library checks at its own entries, whatever the Python object carries:
+# a NaN inside a Pose2 used to index the grid with static_cast<int>(NaN).
+def _field():
+    cells = np.zeros((20, 20), np.uint8)
+    cells[5, 5] = 1
+    return fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.1))
+
+
+@pytest.mark.parametrize("pose,field", [(fgdwa.Pose2(NAN, 0.5, 0.0), "pose x"), (fgdwa.Pose2(0.5, INF, 0.0), "pose y"),
+                                        (fgdwa.Pose2(0.5, 0.5, NAN), "pose theta"),
+                                        (fgdwa.Pose2(1e300, 0.5, 0.0), "pose x")])
+def test_non_finite_inside_pose_objects(pose, field):
+    world = fgdwa.FieldClearance(_field())
+    for footprint in (fgdwa.Footprint.circle(0.2), fgdwa.Footprint.polygon([[0.2, 0.1], [-0.2, 0.1], [-0.2, -0.1], [0.2, -0.1]])):
+        with raises(field):
+            world.clearance(footprint, pose)
+        with raises(field):
+            fgdwa.CollisionWorld(_field().grid).clearance(footprint, pose)
+    with raises(field):
+        fgdwa.step(pose, fgdwa.Twist(0.1, 0.0), 0.1)
+
+
+@pytest.mark.parametrize("resolution", [5e-324, 1e-9, 1e200, 1e308])
+def test_resolutions_outside_the_limits(resolution):
+    with raises(r"resolution = .*must lie in \[1e-04, 1000\]"):
+        fgdwa.OccupancyGrid(np.zeros((4, 4), np.uint8), resolution)
+
+
+def test_grid_beyond_the_coordinate_limit():
+    with raises("origin"):
+        fgdwa.OccupancyGrid(np.zeros((4, 4), np.uint8), 0.1, (2e6, 0.0))
+
+
+def test_star_footprint_is_refused():
+    star = [[np.cos(a) * 0.3, np.sin(a) * 0.3] for a in np.arange(5) * 4 * np.pi / 5]
+    with raises("intersects itself"):
+        fgdwa.Footprint.polygon(star)
+
+
+def test_huge_footprint_is_refused():
+    with raises("vertex 0 x"):
+        fgdwa.Footprint.polygon([[1e6, 1.0], [-1.0, 1.0], [-1.0, -1.0]])
+
+
+def test_path_too_long_to_walk():
+    with raises("global path length"):
+        fgdwa.GlobalPath([[-9e5, -9e5], [9e5, 9e5]] * 400)
+
+
+def test_path_blocked_walks_a_long_path_in_strides():
+    field = _field()
+    path = fgdwa.GlobalPath([[50.0, 0.0], [5e5, 0.0]])
+    assert not fgdwa.path_blocked(path, (50.0, 0.0), field, 0.3)
+    blocked = fgdwa.GlobalPath([[5e5, 0.55], [-5e5, 0.55]])
+    assert fgdwa.path_blocked(blocked, (5e5, 0.55), field, 0.3)
+
+
+@pytest.mark.parametrize("critics,field", [([(None, 1.0)], "critics: name"), ([("heading", "x")], "weight of 'heading'"),
+                                           ([{"name": "heading", "params": 3}], "params of 'heading'"),
+                                           ([("clearance", 1.0, {"cap": 10 ** 400})], "clearance.cap")])
+def test_critic_entries_of_the_wrong_type_are_named(critics, field):
+    with raises(field):
+        fgdwa.PlannerParams(critics=critics)
+
+
+@pytest.mark.parametrize("make,field", [(lambda: fgdwa.LidarParams(fov_deg=400.0), r"fov_deg = 400: .*degrees"),
+                                        (lambda: fgdwa.PlannerParams(key_node_angle_deg=180.0), r"key_node_angle_deg = 180"),
+                                        (lambda: fgdwa.DetectWindowParams(half_angle_deg=-5.0), r"half_angle_deg = -5"),
+                                        (lambda: fgdwa.NavigatorParams(rotate_limit_deg=NAN), r"rotate_limit_deg = nan")])
+def test_degree_arguments_are_reported_in_degrees(make, field):
+    with raises(field):
+        make()
+
+
+def test_tiny_control_period_names_the_bound():
+    with raises(r"dt = 1e-09: must lie in \[1e-04, 10\]"):
+        fgdwa.PlannerParams(dt=1e-9)
