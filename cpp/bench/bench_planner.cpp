@@ -96,6 +96,13 @@ void BM_PlanFieldClearanceJackal(benchmark::State& bench) {
   plan_cycles(bench, scene, world);
 }
 
+// A circle near the map's edge, its rollouts leaving the grid.
+void BM_PlanFieldClearanceAtEdge(benchmark::State& bench) {
+  Scene scene(Footprint::circle(0.25), true);
+  const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
+  plan_cycles(bench, scene, world);
+}
+
 // The Jackal near the map's edge, its rollouts leaving the grid.
 void BM_PlanFieldClearanceJackalAtEdge(benchmark::State& bench) {
   Scene scene(robot_preset("jackal").footprint, true);
@@ -218,6 +225,7 @@ void BM_BuildCollisionWorld(benchmark::State& bench) {
 // robot sees cycle after cycle; 32: a spread of situations).
 BENCHMARK(BM_PlanFieldClearance)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanFieldClearanceJackal)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PlanFieldClearanceAtEdge)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanFieldClearanceJackalAtEdge)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanCollisionWorld)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PeerPointObstacles)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);

@@ -211,10 +211,14 @@ double polygon_lower_bound(const DistanceField* field, const DistanceField* sens
 
 }  // namespace
 
-void FieldClearance::clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
-                                            double* out) const {
+void ClearanceSource::clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
+                                             double* out) const {
   detail::require_query_poses("poses", poses);
   detail::require_time_step("dt", dt);
+  lower_bounds(footprint, poses, dt, out);
+}
+
+void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const {
   const double r = footprint.radius();
   const std::size_t n = poses.size();
   if (!footprint.is_circle()) {

@@ -147,6 +147,10 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   row_last_.resize(rows);
   col_first_.resize(cols);
   col_last_.resize(cols);
+  row_block_first_.assign(static_cast<std::size_t>((rows + kOutermostBlock - 1) / kOutermostBlock), -1);
+  row_block_last_.assign(row_block_first_.size(), -1);
+  col_block_first_.assign(static_cast<std::size_t>((cols + kOutermostBlock - 1) / kOutermostBlock), -1);
+  col_block_last_.assign(col_block_first_.size(), -1);
   for (int r = 0; r < rows; ++r) row_outermost(r);
   for (int c = 0; c < cols; ++c) col_outermost(c);
 }
@@ -362,6 +366,24 @@ std::size_t DistanceField::update(const OccupancyGrid& grid, const std::vector<s
   return flipped.size();
 }
 
+namespace {
+// The smallest first and the largest last of the block of lines holding `line`.
+void refresh_block(const std::vector<int>& first, const std::vector<int>& last, int line, int block_size,
+                   std::vector<int>& block_first, std::vector<int>& block_last) {
+  const std::size_t block = static_cast<std::size_t>(line / block_size);
+  const std::size_t begin = block * static_cast<std::size_t>(block_size);
+  const std::size_t end = std::min(first.size(), begin + static_cast<std::size_t>(block_size));
+  int lo = -1, hi = -1;
+  for (std::size_t i = begin; i < end; ++i) {
+    if (first[i] < 0) continue;
+    lo = lo < 0 ? first[i] : std::min(lo, first[i]);
+    hi = std::max(hi, last[i]);
+  }
+  block_first[block] = lo;
+  block_last[block] = hi;
+}
+}  // namespace
+
 void DistanceField::row_outermost(int row) {
   row_first_[row] = row_last_[row] = -1;
   for (int c = 0; c < grid_.cols(); ++c)
@@ -369,6 +391,7 @@ void DistanceField::row_outermost(int row) {
       if (row_first_[row] < 0) row_first_[row] = c;
       row_last_[row] = c;
     }
+  refresh_block(row_first_, row_last_, row, kOutermostBlock, row_block_first_, row_block_last_);
 }
 
 void DistanceField::col_outermost(int col) {
@@ -378,6 +401,7 @@ void DistanceField::col_outermost(int col) {
       if (col_first_[col] < 0) col_first_[col] = r;
       col_last_[col] = r;
     }
+  refresh_block(col_first_, col_last_, col, kOutermostBlock, col_block_first_, col_block_last_);
 }
 
 double DistanceField::cell_distance(int row, int col) const {
@@ -475,30 +499,55 @@ double DistanceField::distance(const Vec2& p) const {
   // through `candidate(line)`, until a line's gap alone (its distance from p
   // across the lines, `across` in cells) is no nearer than the best so far:
   // the same minimum as over every line.
-  const auto outward = [&](int lines, double across, const auto& candidate) {
+  //
+  // Lines come in blocks of kOutermostBlock; a block is skipped whole when its
+  // gap and the reach of its outermost obstacle along the lines (`along`, the
+  // distance from p to the block's extreme outermost centre, less half a
+  // cell) together are no nearer than the best: far from the grid the best is
+  // far, and without the blocks every line would be visited.
+  const auto outward = [&](int lines, double across, const std::vector<int>& outermost,
+                           const std::vector<int>& block_extreme, const auto& along, const auto& candidate) {
     const int nearest = static_cast<int>(std::clamp(std::floor(across), 0.0, lines - 1.0));
     const auto gap = [&](int line) {
       const double g = std::max(std::abs(line + 0.5 - across) - 0.5, 0.0) * grid_.resolution();
       return g * g;
     };
-    // The gap is rounded unlike the candidates' distances: a line within a
-    // rounding error of the best is still taken.
-    for (int line = nearest; line >= 0 && gap(line) * (1.0 - 1e-9) < best; --line) candidate(line);
-    for (int line = nearest + 1; line < lines && gap(line) * (1.0 - 1e-9) < best; ++line) candidate(line);
+    // The gap is rounded unlike the candidates' distances: a line or block
+    // within a rounding error of the best is still taken.
+    const auto visit_block = [&](int block, int from, int to) {  // lines from..to, nearest first
+      if (block_extreme[static_cast<std::size_t>(block)] < 0) return;
+      const double reach = along(block_extreme[static_cast<std::size_t>(block)]);
+      if ((reach * reach + gap(from)) * (1.0 - 1e-9) >= best) return;
+      const int step = to >= from ? 1 : -1;
+      for (int line = from; line != to + step && gap(line) * (1.0 - 1e-9) < best; line += step)
+        if (outermost[static_cast<std::size_t>(line)] >= 0) candidate(line);
+    };
+    for (int line = nearest; line >= 0 && gap(line) * (1.0 - 1e-9) < best;) {
+      const int block = line / kOutermostBlock, first = block * kOutermostBlock;
+      visit_block(block, line, first);
+      line = first - 1;
+    }
+    for (int line = nearest + 1; line < lines && gap(line) * (1.0 - 1e-9) < best;) {
+      const int block = line / kOutermostBlock, last = std::min(lines - 1, (block + 1) * kOutermostBlock - 1);
+      visit_block(block, line, last);
+      line = last + 1;
+    }
   };
   if (gx < 0.0 || gx > cols) {
     // Outside the grid every cell of a row lies on the same side of p in x, so
     // the row's outermost obstacle toward p is its nearest.
-    const std::vector<int>& outermost = gx < 0.0 ? row_first_ : row_last_;
-    outward(rows, gy, [&](int r) {
-      if (outermost[r] >= 0) best = std::min(best, square_distance(grid_.cell_center(r, outermost[r])));
-    });
+    const bool left = gx < 0.0;
+    const std::vector<int>& outermost = left ? row_first_ : row_last_;
+    const auto along = [&](int col) { return std::max(std::abs(p.x() - grid_.cell_center(0, col).x()) - half, 0.0); };
+    outward(rows, gy, outermost, left ? row_block_first_ : row_block_last_, along,
+            [&](int r) { best = std::min(best, square_distance(grid_.cell_center(r, outermost[r]))); });
   } else if (gy < 0.0 || gy > rows) {
     // Likewise per column in y.
-    const std::vector<int>& outermost = gy < 0.0 ? col_first_ : col_last_;
-    outward(cols, gx, [&](int c) {
-      if (outermost[c] >= 0) best = std::min(best, square_distance(grid_.cell_center(outermost[c], c)));
-    });
+    const bool below = gy < 0.0;
+    const std::vector<int>& outermost = below ? col_first_ : col_last_;
+    const auto along = [&](int row) { return std::max(std::abs(p.y() - grid_.cell_center(row, 0).y()) - half, 0.0); };
+    outward(cols, gx, outermost, below ? col_block_first_ : col_block_last_, along,
+            [&](int c) { best = std::min(best, square_distance(grid_.cell_center(outermost[c], c))); });
   } else {
     // Inside the grid (its far edges included): the candidates of p's cell.
     const std::size_t cell = grid_.index(std::min(static_cast<int>(gy), rows - 1), std::min(static_cast<int>(gx), cols - 1));

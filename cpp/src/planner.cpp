@@ -328,7 +328,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     // Cheap lower bounds first; exact clearances only where a bound cannot
     // settle contact or the minimum. The result is the same as evaluating
     // every pose exactly.
-    fixed.clearance_lower_bounds(footprint_, poses, params_.dt, bounds_.data());
+    fixed.lower_bounds(footprint_, poses, params_.dt, bounds_.data());
     if (bounds_exact)
       for (int k = 0; k < n_steps_; ++k) exact_[static_cast<std::size_t>(k)] = bounds_[static_cast<std::size_t>(k)] - margin;
     else

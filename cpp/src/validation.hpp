@@ -9,6 +9,8 @@
 #include <string_view>
 #include <type_traits>
 
+#include <Eigen/Core>
+
 #include "fgdwa/error.hpp"
 #include "fgdwa/geometry.hpp"
 #include "fgdwa/limits.hpp"
@@ -35,7 +37,7 @@ std::string describe(std::string_view field, const T& value, std::string_view ru
 
 // Every check passes on its first comparison and builds text only to fail:
 // some run once per clearance query.
-[[noreturn]] inline void fail_range(std::string_view field, double value, double lo, double hi) {
+[[noreturn, gnu::cold, gnu::noinline]] inline void fail_range(std::string_view field, double value, double lo, double hi) {
   if (!std::isfinite(value)) throw Error(describe(field, value, "must be finite"));
   throw Error(describe(field, value, "must lie in [" + format_number(lo) + ", " + format_number(hi) + "]"));
 }
@@ -107,10 +109,15 @@ inline void require_resolution(std::string_view field, double resolution) {
   require_in_range(field, resolution, limits::kMinResolution, limits::kMaxResolution);
 }
 
-inline void require_xy(std::string_view field, double x, double y, double bound) {
-  if (std::abs(x) <= bound && std::abs(y) <= bound) return;
+// The text of a failure is built out of line, so the passing checks inline.
+[[gnu::cold, gnu::noinline]] inline void fail_xy(std::string_view field, double x, double y, double bound) {
   require_magnitude(std::string(field) + " x", x, bound);
   require_magnitude(std::string(field) + " y", y, bound);
+}
+
+inline void require_xy(std::string_view field, double x, double y, double bound) {
+  if (std::abs(x) <= bound && std::abs(y) <= bound) return;
+  fail_xy(field, x, y, bound);
 }
 
 // A point the user places in the world.
@@ -123,16 +130,23 @@ inline void require_query_point(std::string_view field, const Vec2& p) {
   require_xy(field, p.x(), p.y(), limits::kMaxQueryCoordinate);
 }
 
+[[gnu::cold, gnu::noinline]] inline void fail_pose(std::string_view field, const Pose2& pose, double bound) {
+  require_xy(field, pose.x, pose.y, bound);
+  require_magnitude(std::string(field) + " theta", pose.theta, limits::kMaxAngle);
+}
+
 inline void require_pose(std::string_view field, const Pose2& pose) {
-  require_xy(field, pose.x, pose.y, limits::kMaxCoordinate);
-  if (std::abs(pose.theta) > limits::kMaxAngle || std::isnan(pose.theta))
-    require_magnitude(std::string(field) + " theta", pose.theta, limits::kMaxAngle);
+  if (std::abs(pose.x) <= limits::kMaxCoordinate && std::abs(pose.y) <= limits::kMaxCoordinate &&
+      std::abs(pose.theta) <= limits::kMaxAngle)
+    return;
+  fail_pose(field, pose, limits::kMaxCoordinate);
 }
 
 inline void require_query_pose(std::string_view field, const Pose2& pose) {
-  require_xy(field, pose.x, pose.y, limits::kMaxQueryCoordinate);
-  if (std::abs(pose.theta) > limits::kMaxAngle || std::isnan(pose.theta))
-    require_magnitude(std::string(field) + " theta", pose.theta, limits::kMaxAngle);
+  if (std::abs(pose.x) <= limits::kMaxQueryCoordinate && std::abs(pose.y) <= limits::kMaxQueryCoordinate &&
+      std::abs(pose.theta) <= limits::kMaxAngle)
+    return;
+  fail_pose(field, pose, limits::kMaxQueryCoordinate);
 }
 
 // Every point of an array, in one branch-free pass for the common case; the
@@ -147,20 +161,25 @@ inline void require_points(std::string_view field, const Vec2* points, std::size
 }
 
 // Every pose of a trajectory, in one branch-free pass for the common case.
+// The poses are read as one flat array of doubles, which vectorises: every
+// field of a pose has the same bound.
+static_assert(limits::kMaxAngle == limits::kMaxQueryCoordinate && sizeof(Pose2) == 3 * sizeof(double));
 inline void require_query_poses(std::string_view field, const Trajectory& poses) {
-  bool bad = false;
-  for (const Pose2& p : poses)
-    bad |= !(std::abs(p.x) <= limits::kMaxQueryCoordinate) | !(std::abs(p.y) <= limits::kMaxQueryCoordinate) |
-           !(std::abs(p.theta) <= limits::kMaxAngle);
-  if (!bad) return;
+  if (poses.empty()) return;
+  const Eigen::Map<const Eigen::ArrayXd> values(&poses.front().x, static_cast<Eigen::Index>(3 * poses.size()));
+  if ((values.abs() <= limits::kMaxQueryCoordinate).all()) return;  // NaN fails
   for (std::size_t k = 0; k < poses.size(); ++k)
     require_query_pose(std::string(field) + "[" + std::to_string(k) + "]", poses[k]);
 }
 
-inline void require_twist(std::string_view field, const Twist& twist) {
-  if (std::abs(twist.v) <= limits::kMaxSpeed && std::abs(twist.omega) <= limits::kMaxSpeed) return;
+[[gnu::cold, gnu::noinline]] inline void fail_twist(std::string_view field, const Twist& twist) {
   require_magnitude(std::string(field) + " v", twist.v, limits::kMaxSpeed);
   require_magnitude(std::string(field) + " omega", twist.omega, limits::kMaxSpeed);
+}
+
+inline void require_twist(std::string_view field, const Twist& twist) {
+  if (std::abs(twist.v) <= limits::kMaxSpeed && std::abs(twist.omega) <= limits::kMaxSpeed) return;
+  fail_twist(field, twist);
 }
 
 inline void require_finite_state(const RobotState& s) {

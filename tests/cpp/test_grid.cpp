@@ -96,6 +96,25 @@ TEST(DistanceField, PointDistanceIsWithinOneCellOfTheExactDistance) {
   RecordProperty("worst_error_in_cells", std::to_string(worst));
 }
 
+// Outside the grid the distance is exact, blocks of rows and columns skipped
+// or not: grids of many blocks, sparse obstacles, points up to three sizes out.
+TEST(DistanceField, PointDistanceOutsideTheGridIsExact) {
+  std::mt19937 rng(77);
+  std::uniform_int_distribution<int> size(20, 120);
+  std::uniform_real_distribution<double> density(0.0005, 0.05), u(-3.0, 4.0);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int rows = size(rng), cols = size(rng);
+    const OccupancyGrid grid = test::random_cells(rng, rows, cols, 0.1, Vec2(-1.0, 2.0), density(rng));
+    const DistanceField field(grid);
+    if (!field.has_obstacles()) continue;
+    for (int i = 0; i < 100; ++i) {
+      const Vec2 p = grid.origin() + Vec2(u(rng) * cols * 0.1, u(rng) * rows * 0.1);
+      ASSERT_NEAR(field.distance(p), test::brute_point_distance(grid, p), 1e-9)
+          << "trial " << trial << " p " << p.transpose();
+    }
+  }
+}
+
 TEST(DistanceField, NoObstaclesIsInfinite) {
   const OccupancyGrid grid(4, 5, 0.2, Vec2::Zero(), std::vector<std::uint8_t>(20, 0));
   const DistanceField field(grid);

@@ -662,10 +662,12 @@ class Unsplit : public ClearanceSource {
   double clearance(const Footprint& fp, const Pose2& pose, double t) const override {
     return inner_.clearance(fp, pose, t);
   }
-  void clearance_lower_bounds(const Footprint& fp, const Trajectory& poses, double dt, double* out) const override {
+  double obstacle_speed() const override { return inner_.obstacle_speed(); }
+
+ protected:
+  void lower_bounds(const Footprint& fp, const Trajectory& poses, double dt, double* out) const override {
     inner_.clearance_lower_bounds(fp, poses, dt, out);
   }
-  double obstacle_speed() const override { return inner_.obstacle_speed(); }
 
  private:
   const FieldClearance& inner_;

@@ -38,12 +38,10 @@ class ClearanceSource {
   virtual double clearance(const Footprint& footprint, const Pose2& pose, double t) const = 0;
   // For every pose of a rollout (pose k predicted (k + 1) dt ahead), a cheap
   // value never above clearance(); the planner asks for the exact one only
-  // where the bound cannot settle what it needs. -inf: no bound.
-  virtual void clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
-                                      double* out) const {
-    (void)footprint, (void)dt;
-    std::fill(out, out + poses.size(), -std::numeric_limits<double>::infinity());
-  }
+  // where the bound cannot settle what it needs. -inf: no bound. Checks the
+  // poses and dt, then asks lower_bounds().
+  void clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const;
+
   // Whether clearance_lower_bounds gives the clearance itself for this
   // footprint, bit for bit: the planner then asks for no exact value.
   virtual bool lower_bounds_exact(const Footprint& footprint) const {
@@ -62,6 +60,16 @@ class ClearanceSource {
   // The same world without its moving obstacles, which the planner checks on
   // their own (moving_clearance); the source itself when it cannot split them.
   virtual const ClearanceSource& static_part() const { return *this; }
+
+ protected:
+  // clearance_lower_bounds() without the checks. The planner calls it
+  // directly: its rollouts come from a checked state, and checking every pose
+  // of every rollout would cost it as much as a bound.
+  friend class LocalPlanner;
+  virtual void lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const {
+    (void)footprint, (void)dt;
+    std::fill(out, out + poses.size(), -std::numeric_limits<double>::infinity());
+  }
 };
 
 // The footprint's distance to those of `discs` that move or grow, placed `t` seconds ahead.
@@ -85,13 +93,14 @@ class FieldClearance : public ClearanceSource {
   const std::shared_ptr<const DistanceField>& sensed() const { return sensed_; }
 
   double clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
-  void clearance_lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt,
-                              double* out) const override;
   // True for a circle among discs alone (point obstacles): no grid field.
   bool lower_bounds_exact(const Footprint& footprint) const override;
   double obstacle_speed() const override { return obstacle_speed_; }
   double moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
   const ClearanceSource& static_part() const override { return fixed_ ? *fixed_ : *this; }
+
+ protected:
+  void lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const override;
 
  private:
   std::shared_ptr<const DistanceField> field_;

@@ -192,8 +192,12 @@ class DistanceField {
   std::vector<CellCandidates> candidates_;
   std::vector<Vec2> more_;
   std::size_t more_garbage_ = 0;
-  // Outermost occupied column of each row and row of each column, -1 for none.
+  // Outermost occupied column of each row and row of each column, -1 for none;
+  // per block of kOutermostBlock rows (columns), the outermost of its rows
+  // (columns) on each side.
+  static constexpr int kOutermostBlock = 16;
   std::vector<int> row_first_, row_last_, col_first_, col_last_;
+  std::vector<int> row_block_first_, row_block_last_, col_block_first_, col_block_last_;
   // Per piece of a cell (subdivisions_ x subdivisions_ per cell): its distance
   // to the nearest obstacle square, rounded down to a float, row-major.
   std::vector<float> piece_lower_bound_;

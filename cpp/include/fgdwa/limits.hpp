@@ -14,8 +14,9 @@ inline constexpr double kMaxCoordinate = 1e6;
 // Ten times kMaxCoordinate, so every pose a planner derives from valid input
 // (a rollout of at most kMaxSpeed for kMaxHorizon from a valid pose) passes.
 inline constexpr double kMaxQueryCoordinate = 1e7;
-// rad: a heading; |theta| beyond it loses the precision of a wrapped angle.
-inline constexpr double kMaxAngle = 1e6;
+// rad: a heading (an unwrapped odometry heading included); a wrapped angle
+// still carries 1e-9 rad at it.
+inline constexpr double kMaxAngle = 1e7;
 // m/s and rad/s: a speed, a turn rate, a disc's velocity or growth.
 inline constexpr double kMaxSpeed = 1e3;
 // m/s^2 and rad/s^2: an acceleration or a deceleration (stopping takes at
