@@ -58,7 +58,7 @@ void SimilarityCritic::score_f32(const Rollout* rollouts, std::size_t count, dou
     }
   }
   dtw_f32_.resize(count);
-  workspace_.distance_batch_f32(batch_x_f32_.data(), batch_y_f32_.data(), n, count, reference_x_.data(),
+  workspace_.distance_batch_f32_unchecked(batch_x_f32_.data(), batch_y_f32_.data(), n, count, reference_x_.data(),
                                 reference_y_.data(), reference_x_.size(), dtw_f32_.data());
   for (std::size_t k = 0; k < count; ++k) out[k] = 1.0 / (static_cast<double>(dtw_f32_[k]) + 1.0);
 }

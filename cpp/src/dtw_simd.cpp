@@ -88,6 +88,12 @@ void DtwWorkspace::distance_batch_f32(const float* ax, const float* ay, std::siz
   detail::check_dtw_coordinates("ay", ay, n * count);
   detail::check_dtw_coordinates("bx", bx, m);
   detail::check_dtw_coordinates("by", by, m);
+  distance_batch_f32_unchecked(ax, ay, n, count, bx, by, m, out);
+}
+
+void DtwWorkspace::distance_batch_f32_unchecked(const float* ax, const float* ay, std::size_t n, std::size_t count,
+                                                const float* bx, const float* by, std::size_t m, float* out) {
+  detail::check_dtw_sizes(n, m, count, kNoBand);  // O(1): kept, an empty batch would read past the buffers
   rows_f32_.resize(2 * m * count + count);
   float* previous = rows_f32_.data();
   HWY_DYNAMIC_DISPATCH(DtwBatchF32)(ax, ay, n, count, bx, by, m, previous, previous + m * count,

@@ -17,6 +17,8 @@ constexpr int kNoBand = -1;
 // Reusable buffers, so the control loop allocates nothing per call.
 // Threads: one per thread (its buffers are written by every call); dtw()
 // builds its own.
+class SimilarityCritic;
+
 class DtwWorkspace {
  public:
   double distance(const Vec2* a, std::size_t n, const Vec2* b, std::size_t m, int band = kNoBand);
@@ -39,6 +41,13 @@ class DtwWorkspace {
                           const float* by, std::size_t m, float* out);
 
  private:
+  // distance_batch_f32 without its entry checks, for the similarity critic,
+  // whose rollouts come from a checked state: checking every coordinate of
+  // every batch would cost it a fifth of the kernel.
+  friend class SimilarityCritic;
+  void distance_batch_f32_unchecked(const float* ax, const float* ay, std::size_t n, std::size_t count,
+                                    const float* bx, const float* by, std::size_t m, float* out);
+
   std::vector<double> previous_, current_, bx_, by_, row_, left_;
   std::vector<float> rows_f32_;
 };
