@@ -48,12 +48,58 @@ std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_ra
     with_impassable.emplace(grid.rows(), grid.cols(), grid.resolution(), grid.origin(), std::move(cells));
   }
   const OccupancyGrid& obstacles = with_impassable ? *with_impassable : grid;
+  // A cell is blocked when its centre lies within inflation_radius of an
+  // obstacle cell's square. The squared distance to a square splits into a
+  // row part and a column part, each (max(|d| - 1/2, 0) res)^2 for an offset of
+  // d cells: so per column, only the nearest obstacle row counts, and only
+  // columns within `reach` cells can be near enough. Four bytes per cell, no
+  // distance field; the cost grows with cells x reach.
+  const int rows = grid.rows(), cols = grid.cols();
+  const double res = grid.resolution();
+  const int reach = static_cast<int>(std::min<double>(std::ceil(inflation_radius / res + 0.5), std::max(rows, cols)));
+  const std::int32_t far = reach + 1;
+  // Per cell, rows to the nearest obstacle in its column, capped at `far`.
+  std::vector<std::int32_t> column_gap(obstacles.cells().size(), far);
+  for (int c = 0; c < cols; ++c) {
+    int last = -1;  // the last obstacle row seen going up
+    for (int r = 0; r < rows; ++r) {
+      if (obstacles.occupied(r, c)) last = r;
+      if (last >= 0) column_gap[grid.index(r, c)] = std::min(r - last, far);
+    }
+    last = -1;
+    for (int r = rows - 1; r >= 0; --r) {
+      if (obstacles.occupied(r, c)) last = r;
+      std::int32_t& gap = column_gap[grid.index(r, c)];
+      if (last >= 0) gap = std::min(gap, std::min(last - r, far));
+    }
+  }
+  // Measured as DistanceField::distance measures (cell centres, then the
+  // square's half size off each axis), so a centre exactly at the radius falls
+  // on the same side as in the planner's field.
+  const double half = 0.5 * res;
   std::vector<std::uint8_t> blocked(grid.cells().size(), 0);
-  const DistanceField field(obstacles);
-  for (int r = 0; r < grid.rows(); ++r)
-    for (int c = 0; c < grid.cols(); ++c)
-      blocked[grid.index(r, c)] =
-          obstacles.occupied(r, c) || field.distance(grid.cell_center(r, c)) < inflation_radius;
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      if (obstacles.occupied(r, c)) {
+        blocked[grid.index(r, c)] = 1;
+        continue;
+      }
+      const Vec2 p = grid.cell_center(r, c);
+      const auto within = [&](int row, int col) {
+        if (row < 0 || row >= rows || !obstacles.occupied(row, col)) return false;
+        const Vec2 o = grid.cell_center(row, col);
+        const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
+        const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
+        return std::sqrt(dx * dx + dy * dy) < inflation_radius;
+      };
+      for (int q = std::max(0, c - reach); q <= std::min(cols - 1, c + reach); ++q) {
+        const int gap = column_gap[grid.index(r, q)];
+        if (gap < far && (within(r - gap, q) || within(r + gap, q))) {
+          blocked[grid.index(r, c)] = 1;
+          break;
+        }
+      }
+    }
   return blocked;
 }
 
@@ -87,7 +133,11 @@ bool AStarPlanner::shortcut_clear(const Vec2& a, const Vec2& b, double dearest) 
 
 bool segment_free(const OccupancyGrid& layout, const Vec2& a, const Vec2& b,
                   const std::function<bool(int, int)>& free) {
-  // Amanatides and Woo's traversal of the cells the segment crosses.
+  // Amanatides and Woo's traversal of the cells the segment crosses. Every
+  // cell it crosses must be on the grid: both ends first (which also keeps
+  // the casts below within int).
+  int row0, col0, row1, col1;
+  if (!layout.cell_of(a, row0, col0) || !layout.cell_of(b, row1, col1)) return false;
   const double res = layout.resolution();
   const Vec2 p = (a - layout.origin()) / res, q = (b - layout.origin()) / res;
   int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));

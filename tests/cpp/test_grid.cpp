@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "fgdwa/global_planner.hpp"
 #include "fgdwa/grid.hpp"
 #include "test_support.hpp"
 
@@ -112,6 +113,30 @@ TEST(DistanceField, PointDistanceOutsideTheGridIsExact) {
       ASSERT_NEAR(field.distance(p), test::brute_point_distance(grid, p), 1e-9)
           << "trial " << trial << " p " << p.transpose();
     }
+  }
+}
+
+// inflate() blocks exactly the cells whose centre lies within the radius of
+// an obstacle square, as the distance field measures it, without building one.
+TEST(Inflate, BlocksTheCellsTheDistanceFieldPutsWithinTheRadius) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> size(1, 70);
+  std::uniform_real_distribution<double> density(0.0, 0.1), res(0.02, 0.3), radius(0.0, 1.0);
+  for (int trial = 0; trial < 80; ++trial) {
+    // Every third trial: 10 cm cells and a radius of whole half cells, where
+    // centres lie exactly at the radius and rounding decides.
+    const bool ties = trial % 3 == 0;
+    const OccupancyGrid grid =
+        test::random_cells(rng, size(rng), size(rng), ties ? 0.1 : res(rng), Vec2(-1.0, 0.5), density(rng));
+    const DistanceField field(grid);
+    const double r = trial % 10 == 0 ? 0.0 : ties ? 0.05 * (trial % 7) : radius(rng);
+    const std::vector<std::uint8_t> blocked = inflate(grid, r);
+    for (int row = 0; row < grid.rows(); ++row)
+      for (int col = 0; col < grid.cols(); ++col) {
+        const bool expected = grid.occupied(row, col) || field.distance(grid.cell_center(row, col)) < r;
+        ASSERT_EQ(blocked[grid.index(row, col)] != 0, expected)
+            << "trial " << trial << " cell " << row << ", " << col << " radius " << r;
+      }
   }
 }
 
