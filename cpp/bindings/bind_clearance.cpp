@@ -24,10 +24,11 @@ void init_clearance(py::module_& m) {
       .def_property_readonly("center", [](const Disc& d) { return py::make_tuple(d.center.x(), d.center.y()); })
       .def_readonly("radius", &Disc::radius)
       .def_readonly("growth", &Disc::growth)
-      .def("radius_at", &Disc::radius_at, py::arg("t"))
+      .def("radius_at", [](const Disc& d, double t) { return std::max(d.radius_at(to_time(t, "t")), 0.0); }, py::arg("t"),
+           "The radius t seconds ahead (for a t in the past, never below 0).")
       .def_property_readonly("velocity", [](const Disc& d) { return py::make_tuple(d.velocity.x(), d.velocity.y()); })
       .def("center_at", [](const Disc& d, double t) {
-        const Vec2 c = d.center_at(t);
+        const Vec2 c = d.center_at(to_time(t, "t"));
         return py::make_tuple(c.x(), c.y());
       }, py::arg("t"))
       .def("__repr__", [](const Disc& d) {

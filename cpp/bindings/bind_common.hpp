@@ -10,7 +10,7 @@ namespace fgdwa::py_convert {
 
 // Clearance of one pose (a float) or of (n, 3) poses (an array).
 inline py::object clearances(const ClearanceSource& source, const Footprint& fp, py::handle poses, double t) {
-  if (!std::isfinite(t)) throw Error("t: must be finite");
+  py_convert::to_time(t, "t");
   if (py::isinstance<Pose2>(poses)) return py::float_(source.clearance(fp, poses.cast<Pose2>(), t));
   const py::array probe = py::array::ensure(poses);
   auto a = float_array(poses, "poses", probe && probe.ndim() == 1 ? 1 : 2, 3);

@@ -46,10 +46,17 @@ DoubleArray to_array(py::handle obj, const std::string& name) {
 // f(x) for a float, or element-wise for an array of any shape.
 template <typename F>
 py::object map_values(py::handle x, const std::string& name, F&& f) {
-  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) return py::float_(f(to_number(x, name)));
+  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) {
+    const double value = to_number(x, name);
+    if (std::isnan(value)) throw Error(name + " is NaN");
+    return py::float_(f(value));
+  }
   DoubleArray in = to_array(x, name);
   DoubleArray out(std::vector<py::ssize_t>(in.shape(), in.shape() + in.ndim()));
-  for (py::ssize_t i = 0; i < in.size(); ++i) out.mutable_data()[i] = f(in.data()[i]);
+  for (py::ssize_t i = 0; i < in.size(); ++i) {
+    if (std::isnan(in.data()[i])) throw Error(name + "[" + std::to_string(i) + "] is NaN");
+    out.mutable_data()[i] = f(in.data()[i]);
+  }
   if (in.ndim() == 0) return py::float_(out.data()[0]);
   return std::move(out);
 }

@@ -16,8 +16,8 @@ void init_path(py::module_& m) {
   m.def(
       "reference_samples",
       [](const GlobalPath& path, py::handle robot, double v_ref, double dt, int n, const std::string& sampling) {
-        if (!(v_ref >= 0.0) || !std::isfinite(v_ref)) throw Error("v_ref = " + std::to_string(v_ref) + ": must be >= 0");
-        if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + std::to_string(dt) + ": must be > 0");
+        if (!(v_ref >= 0.0) || !std::isfinite(v_ref)) throw Error("v_ref = " + number_text(v_ref) + ": must be >= 0");
+        if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + number_text(dt) + ": must be > 0");
         if (n < 1) throw Error("n = " + std::to_string(n) + ": must be >= 1");
         ReferenceSampling mode;
         if (sampling == "polyline")

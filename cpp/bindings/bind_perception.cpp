@@ -56,10 +56,7 @@ void init_perception(py::module_& m) {
              s.max_range = max_range;
              const auto values = float_array(ranges, "ranges", 1, 0, /*allow_infinite=*/true);
              s.ranges.assign(values.data(), values.data() + values.size());
-             for (std::size_t i = 0; i < s.ranges.size(); ++i)
-               if (s.ranges[i] < 0.0)
-                 throw Error("ranges[" + std::to_string(i) + "] = " + std::to_string(s.ranges[i]) +
-                             ": must be >= 0 (+inf for no hit)");
+             s.validate();  // the library's bounds: pose, angles, max_range, every range
              return s;
            }),
            py::arg("ranges"), py::arg("angle_min"), py::arg("angle_increment"), py::arg("max_range"),
@@ -68,7 +65,12 @@ void init_perception(py::module_& m) {
            "sensor's heading) by angle_increment (rad), max_range (m), taken at pose (x, y, theta) of the sensor.")
       .def_property(
           "pose", [](const Scan& s) { return s.pose; },
-          [](Scan& s, py::handle pose) { s.pose = to_pose(pose, "pose"); },
+          [](Scan& s, py::handle pose) {
+            Scan moved = s;
+            moved.pose = to_pose(pose, "pose");
+            moved.validate();
+            s.pose = moved.pose;
+          },
           "Where the scan was taken, as the robot believes: hit_points and the map place the ranges from it.")
       .def_readonly("angle_min", &Scan::angle_min)
       .def_readonly("angle_increment", &Scan::angle_increment)

@@ -91,7 +91,7 @@ void init_robot(py::module_& m) {
   m.def(
       "step",
       [](py::handle pose, py::handle twist, double dt) {
-        if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + std::to_string(dt) + ": must be > 0");
+        if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + number_text(dt) + ": must be > 0");
         return step(to_pose(pose, "pose"), to_twist(twist, "twist"), dt);
       },
       py::arg("pose"), py::arg("twist"), py::arg("dt"),
@@ -99,7 +99,7 @@ void init_robot(py::module_& m) {
   m.def(
       "rollout",
       [](py::handle pose, py::handle twist, double dt, int n_steps) {
-        if (!(dt > 0.0)) throw Error("dt = " + std::to_string(dt) + ": must be > 0");
+        if (!(dt > 0.0)) throw Error("dt = " + number_text(dt) + ": must be > 0");
         if (n_steps < 1) throw Error("n_steps = " + std::to_string(n_steps) + ": must be >= 1");
         return poses_to_array(rollout(to_pose(pose, "pose"), to_twist(twist, "twist"), dt, n_steps));
       },

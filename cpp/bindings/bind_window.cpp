@@ -30,7 +30,7 @@ void init_window(py::module_& m) {
       "dynamic_window",
       [](const RobotLimits& limits, py::handle current, double dt) {
         limits.validate();
-        if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + std::to_string(dt) + ": must be > 0");
+        if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + number_text(dt) + ": must be > 0");
         return dynamic_window(limits, to_twist(current, "current"), dt);
       },
       py::arg("limits"), py::arg("current"), py::arg("dt"), "Vm ∩ Vd for the current (v, omega).");

@@ -60,6 +60,17 @@ double to_number(py::handle obj, const std::string& name) {
   return value;
 }
 
+std::string number_text(double value) { return std::string(py::repr(py::float_(value))); }
+
+double to_time(double t, const std::string& name) {
+  if (!(std::abs(t) <= limits::kMaxHorizon)) {
+    std::ostringstream s;
+    s << name << " = " << number_text(t) << ": must lie in [-" << limits::kMaxHorizon << ", " << limits::kMaxHorizon << "] s";
+    throw Error(s.str());
+  }
+  return t;
+}
+
 std::string to_word(py::handle obj, const std::string& name) {
   if (!py::isinstance<py::str>(obj)) throw Error(name + ": expected a str, got " + type_name(obj));
   return obj.cast<std::string>();

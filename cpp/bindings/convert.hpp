@@ -11,6 +11,7 @@
 #include "fgdwa/critics.hpp"
 #include "fgdwa/error.hpp"
 #include "fgdwa/geometry.hpp"
+#include "fgdwa/limits.hpp"
 #include "fgdwa/robot.hpp"
 
 namespace fgdwa::py_convert {
@@ -26,6 +27,10 @@ py::array_t<double, py::array::c_style> float_array(py::handle obj, const std::s
 // A Python number (int or float) as a double, a str, a dict; otherwise an
 // error naming `name` and the type given.
 double to_number(py::handle obj, const std::string& name);
+// A time ahead (s): finite, |t| <= limits::kMaxHorizon.
+double to_time(double t, const std::string& name);
+// A number as Python writes it (the shortest text that reads back the same).
+std::string number_text(double value);
 std::string to_word(py::handle obj, const std::string& name);
 py::dict to_dict(py::handle obj, const std::string& name);
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fgdwa/error.hpp"
+#include "validation.hpp"
 
 namespace fgdwa {
 
@@ -34,6 +35,9 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
                                    const std::vector<Disc>& discs) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
+  detail::require_finite_state(state);
+  detail::require_point("goal", goal);
+  if (scan) scan->validate();
   report_ = CycleReport{};
   world_.set_discs(discs);
   if (scan) {

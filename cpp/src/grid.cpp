@@ -12,15 +12,12 @@ using detail::describe;
 
 OccupancyGrid::OccupancyGrid(int rows, int cols, double resolution, Vec2 origin, std::vector<std::uint8_t> cells)
     : rows_(rows), cols_(cols), resolution_(resolution), origin_(origin), cells_(std::move(cells)) {
-  detail::require_count("grid rows", rows, 1, limits::kMaxGridCells);
-  detail::require_count("grid cols", cols, 1, limits::kMaxGridCells);
-  if (static_cast<long>(rows) * cols > limits::kMaxGridCells)
-    throw Error(describe("grid size", std::to_string(rows) + " x " + std::to_string(cols),
-                         "at most " + std::to_string(limits::kMaxGridCells) + " cells"));
+  detail::require_grid_size(rows, cols);
   detail::require_resolution("grid resolution", resolution);
-  detail::require_point("grid origin", origin);
-  // The far corner too: every point of the grid is a valid query point.
-  detail::require_point("grid far corner", origin + Vec2(cols * resolution, rows * resolution));
+  // Grids of sensed points (points_field) reach max_range past a robot at the
+  // query limit: the bound of a distance field's points.
+  detail::require_field_point("grid origin", origin);
+  detail::require_field_point("grid far corner", origin + Vec2(cols * resolution, rows * resolution));
   const std::size_t expected = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   if (cells_.size() != expected)
     throw Error(describe("grid cells", cells_.size(), "expected rows x cols = " + std::to_string(expected)));
@@ -58,6 +55,7 @@ TerrainGrid::TerrainGrid(int rows, int cols, double resolution, Vec2 origin, std
 }
 
 int TerrainGrid::grade_at(const Vec2& p) const {
+  detail::require_field_point("point", p);
   const double fc = std::floor((p.x() - origin_.x()) / resolution_);
   const double fr = std::floor((p.y() - origin_.y()) / resolution_);
   if (!(fr >= 0.0 && fr < rows_ && fc >= 0.0 && fc < cols_)) return 0;
@@ -455,8 +453,8 @@ double segment_square_distance2(const Vec2& a, const Vec2& d, double h) {
 }  // namespace
 
 double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
-  detail::require_query_point("a", a);
-  detail::require_query_point("b", b);
+  detail::require_field_point("a", a);
+  detail::require_field_point("b", b);
   if (!has_obstacles()) return kInf;
   const double ax = (a.x() - grid_.origin().x()) * inverse_resolution_, ay = (a.y() - grid_.origin().y()) * inverse_resolution_;
   const double bx = (b.x() - grid_.origin().x()) * inverse_resolution_, by = (b.y() - grid_.origin().y()) * inverse_resolution_;
@@ -483,7 +481,7 @@ double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
 }
 
 double DistanceField::distance(const Vec2& p) const {
-  detail::require_query_point("point", p);
+  detail::require_field_point("point", p);
   if (!has_obstacles()) return kInf;
   const double half = 0.5 * grid_.resolution();
   const int rows = grid_.rows(), cols = grid_.cols();

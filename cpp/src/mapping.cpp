@@ -11,8 +11,13 @@
 namespace fgdwa {
 
 void OccupancyParams::validate() const {
+  // Log-odds are kept as floats: every value stays far inside their range.
+  constexpr double kMaxLogOdds = 1e3;
   detail::require_positive("occupancy hit", hit);
-  detail::require_finite("occupancy miss", miss);
+  detail::require_at_most("occupancy hit", hit, kMaxLogOdds);
+  detail::require_magnitude("occupancy miss", miss, kMaxLogOdds);
+  detail::require_magnitude("occupancy clamp_min", clamp_min, kMaxLogOdds);
+  detail::require_magnitude("occupancy clamp_max", clamp_max, kMaxLogOdds);
   if (miss >= 0.0) throw Error("occupancy miss = " + std::to_string(miss) + ": must be < 0 (a pass is evidence of free space)");
   detail::require_finite("occupancy clamp_min", clamp_min);
   detail::require_finite("occupancy clamp_max", clamp_max);
@@ -39,10 +44,17 @@ const char* to_string(CellState state) {
   return "?";
 }
 
+namespace {
+// The free cells of a grid, its size checked before they are made.
+std::vector<std::uint8_t> empty_cells(int rows, int cols) {
+  detail::require_grid_size(rows, cols);
+  return std::vector<std::uint8_t>(static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols), 0);
+}
+}  // namespace
+
 ScanMap::ScanMap(int rows, int cols, double resolution, Vec2 origin, const OccupancyParams& params)
     : params_(params),
-      grid_(rows, cols, resolution, origin,
-            std::vector<std::uint8_t>(static_cast<std::size_t>(std::max(rows, 0)) * std::max(cols, 0), 0)),
+      grid_(rows, cols, resolution, origin, empty_cells(rows, cols)),
       states_(grid_.cells().size(), static_cast<std::uint8_t>(CellState::Unknown)),
       log_odds_(grid_.cells().size(), 0.0f),
       tallies_(grid_.cells().size()) {

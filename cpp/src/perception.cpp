@@ -31,8 +31,8 @@ void Scan::validate() const {
     throw Error(detail::describe("scan ranges", ranges.size(),
                                  "a scan has at most " + std::to_string(limits::kMaxBeams) + " beams"));
   for (std::size_t i = 0; i < ranges.size(); ++i)
-    if (!(ranges[i] >= 0.0))
-      throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", ranges[i], "must be >= 0 (+inf: no hit)"));
+    if (!(ranges[i] >= 0.0) || (std::isfinite(ranges[i]) && ranges[i] > limits::kMaxLength))
+      throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", ranges[i], "must lie in [0, 1e6] (+inf: no hit)"));
 }
 
 std::vector<Vec2> Scan::hit_points() const {
@@ -188,7 +188,7 @@ std::shared_ptr<DistanceField> points_field(const std::vector<Vec2>& points, dou
   if (points.size() > static_cast<std::size_t>(limits::kMaxPoints))
     throw Error(detail::describe("points", points.size(), "at most " + std::to_string(limits::kMaxPoints)));
   Vec2 lo = points.front(), hi = points.front();
-  detail::require_points("points", points.data(), points.size(), limits::kMaxCoordinate);
+  detail::require_points("points", points.data(), points.size(), limits::kMaxQueryCoordinate + limits::kMaxLength);
   for (const Vec2& p : points) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);

@@ -102,7 +102,11 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
   }
   const Vec2 fitted(x[0], x[1]);
   // A centre nearer the sensor than the hits would be a hollow; keep it behind.
-  if (fitted.allFinite() && (fitted - origin).dot(along) >= distance) {
+  // Hits on a flat or nearly straight run can drive the fit far off along the
+  // normal (the radius is clamped, the centre is not): a centre farther from
+  // the hits than the disc can reach is no fit.
+  if (fitted.allFinite() && (fitted - origin).dot(along) >= distance &&
+      (fitted - centroid).norm() <= x[2] + max_radius) {
     cluster.center = fitted;
     cluster.radius = x[2];
   } else {

@@ -130,6 +130,12 @@ inline void require_query_point(std::string_view field, const Vec2& p) {
   require_xy(field, p.x(), p.y(), limits::kMaxQueryCoordinate);
 }
 
+// A point a distance field is asked about: any point of a footprint placed at
+// a query pose, or a lidar hit from one.
+inline void require_field_point(std::string_view field, const Vec2& p) {
+  require_xy(field, p.x(), p.y(), limits::kMaxQueryCoordinate + limits::kMaxLength);
+}
+
 [[gnu::cold, gnu::noinline]] inline void fail_pose(std::string_view field, const Pose2& pose, double bound) {
   require_xy(field, pose.x, pose.y, bound);
   require_magnitude(std::string(field) + " theta", pose.theta, limits::kMaxAngle);
@@ -180,6 +186,15 @@ inline void require_query_poses(std::string_view field, const Trajectory& poses)
 inline void require_twist(std::string_view field, const Twist& twist) {
   if (std::abs(twist.v) <= limits::kMaxSpeed && std::abs(twist.omega) <= limits::kMaxSpeed) return;
   fail_twist(field, twist);
+}
+
+// rows x cols cells within limits::kMaxGridCells, checked before any cell is made.
+inline void require_grid_size(int rows, int cols) {
+  require_count("grid rows", rows, 1, limits::kMaxGridCells);
+  require_count("grid cols", cols, 1, limits::kMaxGridCells);
+  if (static_cast<long>(rows) * cols > limits::kMaxGridCells)
+    throw Error(describe("grid size", std::to_string(rows) + " x " + std::to_string(cols),
+                         "at most " + std::to_string(limits::kMaxGridCells) + " cells"));
 }
 
 inline void require_finite_state(const RobotState& s) {

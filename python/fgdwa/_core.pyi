@@ -254,7 +254,9 @@ class Disc:
     def center_at(self, t: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
         ...
     def radius_at(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
-        ...
+        """
+        The radius t seconds ahead (for a t in the past, never below 0).
+        """
     @property
     def center(self) -> tuple[float, float]:
         ...

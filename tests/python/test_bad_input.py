@@ -192,7 +192,7 @@ def test_resolutions_outside_the_limits(resolution):
 
 def test_grid_beyond_the_coordinate_limit():
     with raises("origin"):
-        fgdwa.OccupancyGrid(np.zeros((4, 4), np.uint8), 0.1, (2e6, 0.0))
+        fgdwa.OccupancyGrid(np.zeros((4, 4), np.uint8), 0.1, (2e7, 0.0))
 
 
 def test_star_footprint_is_refused():
