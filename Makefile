@@ -15,7 +15,7 @@ APT_PACKAGES := libeigen3-dev libfcl-dev libompl-dev libhwy-dev libboost-seriali
 BIN := $(VENV)/bin
 SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*' -not -path 'cpp/ros/*')
 
-.PHONY: setup system-packages demo test test-cpp test-python bench clean stubs sanitize
+.PHONY: setup system-packages demo test test-cpp test-python bench clean stubs sanitize tsan
 
 setup: system-packages $(VENV)/.installed
 
@@ -91,6 +91,18 @@ sanitize: setup
 	LD_PRELOAD="$$(c++ -print-file-name=libasan.so) $$(c++ -print-file-name=libubsan.so)" $(SANITIZE_ENV) \
 	  PYTHONPATH=$(abspath $(SANITIZE_BUILD))/python $(BIN)/python -m pytest -q -p no:cacheprovider \
 	  tests/python/test_fuzz.py tests/python/test_bad_input.py
+
+# The thread test (one planner per thread over a shared world, path, A*
+# planner and scanner) built with ThreadSanitizer in a tree of its own.
+TSAN_BUILD ?= build/tsan
+TSAN_FLAGS := -fsanitize=thread -fno-omit-frame-pointer
+tsan: setup
+	$(BIN)/cmake -S . -B $(TSAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON \
+	  -DFGDWA_BUILD_PYTHON=OFF -DFGDWA_BUILD_ROS=OFF -DCMAKE_CXX_FLAGS="$(TSAN_FLAGS)" \
+	  -DCMAKE_EXE_LINKER_FLAGS="$(TSAN_FLAGS)" -DCMAKE_SHARED_LINKER_FLAGS="$(TSAN_FLAGS)" \
+	  -DCMAKE_MAKE_PROGRAM=$(abspath $(BIN))/ninja
+	$(BIN)/cmake --build $(TSAN_BUILD) -j $(JOBS) --target test_threads
+	TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 $(TSAN_BUILD)/tests/cpp/test_threads
 
 clean:
 	rm -rf build $(OUT) $(VENV)

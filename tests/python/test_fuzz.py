@@ -20,7 +20,8 @@ Library bugs found are pinned by short reproducers marked xfail(strict=True)
 at the end of the module, and their exact inputs are kept out of the fuzz
 tests so the rest still runs. `pytest -s` prints how many calls the module
 made and how many each function answered and refused; FGDWA_FUZZ_SCALE=4 runs
-four times the examples.
+four times the examples, and FGDWA_FUZZ_RANDOM=1 with `--hypothesis-seed=N`
+draws other inputs than the seeded ones.
 """
 
 from __future__ import annotations
@@ -84,7 +85,8 @@ TRACE = bool(os.environ.get("FGDWA_FUZZ_TRACE"))  # log every call's arguments, 
 HANG_LOG = open(os.path.join(tempfile.gettempdir(), "fgdwa_test_fuzz_hang.log"), "w")
 FUZZ_TESTS_RUN = set()
 
-FUZZ = settings(derandomize=True, database=None, deadline=None, print_blob=False,
+# FGDWA_FUZZ_RANDOM=1 lets pytest's --hypothesis-seed choose the inputs instead (a fresh hunt, reproducible by its seed).
+FUZZ = settings(derandomize=not os.environ.get("FGDWA_FUZZ_RANDOM"), database=None, deadline=None, print_blob=False,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
                                        HealthCheck.data_too_large, HealthCheck.function_scoped_fixture])
 
