@@ -59,7 +59,7 @@ void NavigatorParams::validate() const {
   detail::require_at_most("rotate_limit", rotate_limit, limits::kMaxAngle);
   time("wait_time", wait_time);
   detail::require_distance("wait_radius", wait_radius);
-  detail::require_count("max_recoveries", max_recoveries, 0, 1000000);
+  detail::require_count("max_recoveries", max_recoveries, 0, limits::kMaxEventCount);
   detail::require_distance("progress_reset", progress_reset);
   detail::require_count("record_top_k", record_top_k, 0, limits::kMaxWindowSamples);
   occupancy.validate();

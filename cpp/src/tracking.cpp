@@ -29,7 +29,7 @@ void TrackerParams::validate() const {
   detail::require_positive("tracker accel_std", accel_std);
   detail::require_at_most("tracker accel_std", accel_std, limits::kMaxAcceleration);
   detail::require_length("tracker measurement_std", measurement_std);
-  detail::require_count("tracker confirm_hits", confirm_hits, 1, 1000000);
+  detail::require_count("tracker confirm_hits", confirm_hits, 1, limits::kMaxEventCount);
   detail::require_positive("tracker lost_time", lost_time);
   detail::require_at_most("tracker lost_time", lost_time, kMaxHorizon);
   detail::require_non_negative("tracker moving_speed", moving_speed);
