@@ -72,6 +72,7 @@ void init_tracking(py::module_& m) {
              c.radius = to_float(radius, "radius");
              c.occluded = occluded;
              c.points = {c.center};
+             c.validate();
              return c;
            }),
            py::arg("center"), py::arg("radius") = 0.3, py::arg("occluded") = false,
