@@ -102,6 +102,7 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
       tracker_(params.tracker) {
   params_.validate();
   lidar_.validate();
+  validate_passing_factors(passing_factors);
   controller_.set_range_noise(lidar_.noise_std);
   if (terrain_ && !terrain_->matches(map))
     throw Error("terrain: its cells must lie exactly on the map's (same size, resolution and origin)");
