@@ -14,8 +14,9 @@ using namespace fgdwa::py_convert;
 
 void init_clearance(py::module_& m) {
   py::class_<Disc>(m, "Disc", "A disc obstacle moving at constant velocity; radius 0 is a point.")
-      .def(py::init([](py::handle center, double radius, py::handle velocity, double growth) {
-             Disc d{to_vec2(center, "center"), radius, to_vec2(velocity, "velocity"), growth};
+      .def(py::init([](py::handle center, FloatArg radius, py::handle velocity, FloatArg growth) {
+             Disc d{to_vec2(center, "center"), to_float(radius, "radius"), to_vec2(velocity, "velocity"),
+                    to_float(growth, "growth")};
              d.validate();
              return d;
            }),
@@ -24,11 +25,12 @@ void init_clearance(py::module_& m) {
       .def_property_readonly("center", [](const Disc& d) { return py::make_tuple(d.center.x(), d.center.y()); })
       .def_readonly("radius", &Disc::radius)
       .def_readonly("growth", &Disc::growth)
-      .def("radius_at", [](const Disc& d, double t) { return std::max(d.radius_at(to_time(t, "t")), 0.0); }, py::arg("t"),
-           "The radius t seconds ahead (for a t in the past, never below 0).")
+      .def(
+          "radius_at", [](const Disc& d, FloatArg t) { return std::max(d.radius_at(to_time(to_float(t, "t"), "t")), 0.0); },
+          py::arg("t"), "The radius t seconds ahead (for a t in the past, never below 0).")
       .def_property_readonly("velocity", [](const Disc& d) { return py::make_tuple(d.velocity.x(), d.velocity.y()); })
-      .def("center_at", [](const Disc& d, double t) {
-        const Vec2 c = d.center_at(to_time(t, "t"));
+      .def("center_at", [](const Disc& d, FloatArg t) {
+        const Vec2 c = d.center_at(to_time(to_float(t, "t"), "t"));
         return py::make_tuple(c.x(), c.y());
       }, py::arg("t"))
       .def("__repr__", [](const Disc& d) {
@@ -44,8 +46,8 @@ void init_clearance(py::module_& m) {
       m, "ClearanceSource", "Where a rollout's clearance comes from (FieldClearance or CollisionWorld).")
       .def(
           "clearance",
-          [](const ClearanceSource& s, const Footprint& fp, py::handle poses, double t) {
-            return clearances(s, fp, poses, t);
+          [](const ClearanceSource& s, const Footprint& fp, py::handle poses, FloatArg t) {
+            return clearances(s, fp, poses, to_float(t, "t"));
           },
           py::arg("footprint"), py::arg("poses"), py::arg("t") = 0.0,
           "Clearance in metres of the footprint at each of (n, 3) poses (or one pose), moving obstacles "

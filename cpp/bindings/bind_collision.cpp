@@ -41,8 +41,8 @@ void init_collision(py::module_& m) {
           "(k, 4) merged boxes as (row, col, rows, cols) of cells.")
       .def(
           "in_collision",
-          [](const CollisionWorld& w, const Footprint& fp, py::handle pose, double t) {
-            return w.in_collision(fp, to_pose(pose, "pose"), t);
+          [](const CollisionWorld& w, const Footprint& fp, py::handle pose, FloatArg t) {
+            return w.in_collision(fp, to_pose(pose, "pose"), to_float(t, "t"));
           },
           py::arg("footprint"), py::arg("pose"), py::arg("t") = 0.0)
       .def("__repr__", [](const CollisionWorld& w) {

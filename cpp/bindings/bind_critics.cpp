@@ -10,6 +10,9 @@
 namespace py = pybind11;
 using namespace fgdwa;
 using fgdwa::py_convert::critic_config;
+using fgdwa::py_convert::FloatArg;
+using fgdwa::py_convert::float_setter;
+using fgdwa::py_convert::to_float;
 
 namespace fgdwa::py_convert {
 CriticConfig critic_config(std::string name, double weight, const py::dict& params) {
@@ -103,15 +106,16 @@ void init_critics(py::module_& m) {
   py::class_<CriticConfig>(m, "CriticConfig",
                            "A critic by registered name, its weight, and its own parameters "
                            "(e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).")
-      .def(py::init([](std::string name, double weight, py::dict params) {
-             CriticConfig c = critic_config(std::move(name), weight, params);
+      .def(py::init([](std::string name, FloatArg weight, py::dict params) {
+             CriticConfig c = critic_config(std::move(name), to_float(weight, "weight"), params);
              make_critic(c);  // validates name, weight and parameters now
              return c;
            }),
            py::arg("name"), py::arg("weight") = 1.0, py::arg("params") = py::dict(),
            "params: numbers (e.g. {'cap': 2.0}) and words (e.g. {'sampling': 'segment'}).")
       .def_readwrite("name", &CriticConfig::name)
-      .def_readwrite("weight", &CriticConfig::weight)
+      .def_property("weight", [](const CriticConfig& c) { return c.weight; },
+                    float_setter(&CriticConfig::weight, "weight"))
       .def_property_readonly("params", [](const CriticConfig& c) {
         py::dict out;
         for (const auto& [k, v] : c.params) out[py::str(k)] = v;

@@ -12,7 +12,8 @@ void init_dtw(py::module_& m) {
   m.attr("NO_BAND") = kNoBand;
   m.def(
       "dtw",
-      [](py::handle a, py::handle b, int band) {
+      [](py::handle a, py::handle b, IntArg band_arg) {
+        const int band = to_int<int>(band_arg, "band", kNoBand);
         if (band < kNoBand) throw Error("band = " + std::to_string(band) + ": must be >= 0, or -1 for no band");
         return dtw(to_points(a, "a"), to_points(b, "b"), band);
       },

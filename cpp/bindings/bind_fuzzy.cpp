@@ -5,11 +5,16 @@
 #include <cmath>
 #include <sstream>
 
+#include "convert.hpp"
 #include "fgdwa/error.hpp"
 #include "fgdwa/fuzzy.hpp"
 
 namespace py = pybind11;
 using namespace fgdwa;
+using py_convert::FloatArg;
+using py_convert::IntArg;
+using py_convert::to_float;
+using py_convert::to_int;
 
 namespace {
 
@@ -20,7 +25,12 @@ double to_number(py::handle obj, const std::string& name) {
   if (py::isinstance<py::bool_>(obj) || !(py::isinstance<py::float_>(obj) || py::isinstance<py::int_>(obj) ||
                                           py::hasattr(obj, "__float__")))
     throw Error(name + ": expected a number, got " + std::string(py::str(py::type::of(obj).attr("__name__"))));
+  if (py::isinstance<py::int_>(obj)) return py_convert::to_number(obj, name);  // names an int beyond a double
   return obj.cast<double>();
+}
+
+int to_resolution(const IntArg& resolution) {
+  return to_int<int>(resolution, "resolution", MamdaniEngine::kMinResolution, MamdaniEngine::kMaxResolution);
 }
 
 std::string to_name(py::handle obj, const std::string& name) {
@@ -207,12 +217,23 @@ void init_fuzzy(py::module_& m) {
                  "A fuzzy membership function: degrees in [0, 1]. Build one with triangle(a, b, c), "
                  "trapezoid(a, b, c, d) or gaussian(mean, sigma); a == b or b == c makes a shoulder. "
                  "Calling it gives the degree of a number, or of every element of an array.")
-      .def_static("triangle", &MF::triangle, py::arg("a"), py::arg("b"), py::arg("c"),
-                  "Zero outside [a, c], 1 at b, linear in between (a <= b <= c, a < c).")
-      .def_static("trapezoid", &MF::trapezoid, py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"),
-                  "Zero outside [a, d], 1 on [b, c], linear in between (a <= b <= c <= d, a < d).")
-      .def_static("gaussian", &MF::gaussian, py::arg("mean"), py::arg("sigma"),
-                  "exp(-((x - mean) / sigma)^2 / 2), sigma > 0.")
+      .def_static(
+          "triangle",
+          [](FloatArg a, FloatArg b, FloatArg c) {
+            return MF::triangle(to_float(a, "a"), to_float(b, "b"), to_float(c, "c"));
+          },
+          py::arg("a"), py::arg("b"), py::arg("c"), "Zero outside [a, c], 1 at b, linear in between (a <= b <= c, a < c).")
+      .def_static(
+          "trapezoid",
+          [](FloatArg a, FloatArg b, FloatArg c, FloatArg d) {
+            return MF::trapezoid(to_float(a, "a"), to_float(b, "b"), to_float(c, "c"), to_float(d, "d"));
+          },
+          py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"),
+          "Zero outside [a, d], 1 on [b, c], linear in between (a <= b <= c <= d, a < d).")
+      .def_static(
+          "gaussian",
+          [](FloatArg mean, FloatArg sigma) { return MF::gaussian(to_float(mean, "mean"), to_float(sigma, "sigma")); },
+          py::arg("mean"), py::arg("sigma"), "exp(-((x - mean) / sigma)^2 / 2), sigma > 0.")
       .def_property_readonly("shape", &MF::shape_name, "'triangle', 'trapezoid' or 'gaussian'.")
       .def_property_readonly(
           "params",
@@ -305,9 +326,9 @@ void init_fuzzy(py::module_& m) {
       "defuzzification on a uniform grid of `resolution` points per output domain (the centroid of "
       "the piecewise-linear aggregate through those points). Inputs outside their domains are "
       "clamped. When no rule fires for an output, it is the midpoint of its domain.")
-      .def(py::init([](py::handle inputs, py::handle outputs, py::handle rules, int resolution) {
+      .def(py::init([](py::handle inputs, py::handle outputs, py::handle rules, IntArg resolution) {
              return MamdaniEngine(to_variables(inputs, "inputs"), to_variables(outputs, "outputs"), to_rules(rules),
-                                  resolution);
+                                  to_resolution(resolution));
            }),
            py::arg("inputs"), py::arg("outputs"), py::arg("rules"),
            py::arg("resolution") = MamdaniEngine::kDefaultResolution,
@@ -397,8 +418,10 @@ void init_fuzzy(py::module_& m) {
                std::to_string(e.rules().size()) + " rules; resolution " + std::to_string(e.resolution()) + ")";
       });
 
-  m.def("paper_fuzzy_controller", &paper_fuzzy_controller, py::arg("resolution") = MamdaniEngine::kDefaultResolution,
-        "The paper's weight controller (Section 2.2.2, Tables 3 and 4): inputs I (obstacle density, "
-        "[0, 2]) and D (path deviation, [0, 5] m), outputs beta ([0, 1]) and delta ([0, 5]), S/M/L "
-        "uniform triangular partitions, 9 rules.");
+  m.def(
+      "paper_fuzzy_controller", [](IntArg resolution) { return paper_fuzzy_controller(to_resolution(resolution)); },
+      py::arg("resolution") = MamdaniEngine::kDefaultResolution,
+      "The paper's weight controller (Section 2.2.2, Tables 3 and 4): inputs I (obstacle density, "
+      "[0, 2]) and D (path deviation, [0, 5] m), outputs beta ([0, 1]) and delta ([0, 5]), S/M/L "
+      "uniform triangular partitions, 9 rules.");
 }

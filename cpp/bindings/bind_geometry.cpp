@@ -7,14 +7,17 @@
 
 namespace py = pybind11;
 using namespace fgdwa;
+using namespace fgdwa::py_convert;
 
 void init_geometry(py::module_& m) {
   py::class_<Pose2>(m, "Pose2", "A planar pose: x, y in metres and theta in radians.")
-      .def(py::init([](double x, double y, double theta) { return Pose2{x, y, theta}; }), py::arg("x") = 0.0,
-           py::arg("y") = 0.0, py::arg("theta") = 0.0)
-      .def_readwrite("x", &Pose2::x)
-      .def_readwrite("y", &Pose2::y)
-      .def_readwrite("theta", &Pose2::theta)
+      .def(py::init([](FloatArg x, FloatArg y, FloatArg theta) {
+             return Pose2{to_float(x, "x"), to_float(y, "y"), to_float(theta, "theta")};
+           }),
+           py::arg("x") = 0.0, py::arg("y") = 0.0, py::arg("theta") = 0.0)
+      .def_property("x", [](const Pose2& p) { return p.x; }, float_setter(&Pose2::x, "x"))
+      .def_property("y", [](const Pose2& p) { return p.y; }, float_setter(&Pose2::y, "y"))
+      .def_property("theta", [](const Pose2& p) { return p.theta; }, float_setter(&Pose2::theta, "theta"))
       .def("__iter__", [](const Pose2& p) { return py::iter(py::make_tuple(p.x, p.y, p.theta)); })
       .def("__repr__", [](const Pose2& p) {
         std::ostringstream s;
@@ -23,10 +26,10 @@ void init_geometry(py::module_& m) {
       });
 
   py::class_<Twist>(m, "Twist", "A velocity command: v in m/s forward, omega in rad/s counter-clockwise.")
-      .def(py::init([](double v, double omega) { return Twist{v, omega}; }), py::arg("v") = 0.0,
-           py::arg("omega") = 0.0)
-      .def_readwrite("v", &Twist::v)
-      .def_readwrite("omega", &Twist::omega)
+      .def(py::init([](FloatArg v, FloatArg omega) { return Twist{to_float(v, "v"), to_float(omega, "omega")}; }),
+           py::arg("v") = 0.0, py::arg("omega") = 0.0)
+      .def_property("v", [](const Twist& t) { return t.v; }, float_setter(&Twist::v, "v"))
+      .def_property("omega", [](const Twist& t) { return t.omega; }, float_setter(&Twist::omega, "omega"))
       .def("__iter__", [](const Twist& t) { return py::iter(py::make_tuple(t.v, t.omega)); })
       .def("__repr__", [](const Twist& t) {
         std::ostringstream s;
@@ -34,6 +37,10 @@ void init_geometry(py::module_& m) {
         return s.str();
       });
 
-  m.def("wrap_angle", &wrap_angle, py::arg("angle"), "The angle in (-pi, pi].");
-  m.def("angle_difference", &angle_difference, py::arg("a"), py::arg("b"), "The signed difference a - b in (-pi, pi].");
+  m.def(
+      "wrap_angle", [](FloatArg angle) { return wrap_angle(to_float(angle, "angle")); }, py::arg("angle"),
+      "The angle in (-pi, pi].");
+  m.def(
+      "angle_difference", [](FloatArg a, FloatArg b) { return angle_difference(to_float(a, "a"), to_float(b, "b")); },
+      py::arg("a"), py::arg("b"), "The signed difference a - b in (-pi, pi].");
 }

@@ -45,8 +45,8 @@ void init_global_planner(py::module_& m) {
 
   m.def(
       "inflate",
-      [](const OccupancyGrid& grid, double inflation_radius, const TerrainGrid* terrain) {
-        auto blocked = inflate(grid, inflation_radius, terrain);
+      [](const OccupancyGrid& grid, FloatArg inflation_radius, const TerrainGrid* terrain) {
+        auto blocked = inflate(grid, to_float(inflation_radius, "inflation_radius"), terrain);
         py::array_t<std::uint8_t> out({grid.rows(), grid.cols()});
         std::copy(blocked.begin(), blocked.end(), out.mutable_data());
         return out;
@@ -58,13 +58,13 @@ void init_global_planner(py::module_& m) {
   py::class_<AStarPlanner>(m, "AStarPlanner",
                            "8-connected grid A* (octile heuristic, no corner cutting, inflated obstacles, optional "
                            "terrain cost = step length x (1 + w_risk x risk[grade])).")
-      .def(py::init([](const OccupancyGrid& grid, double inflation_radius, bool simplify, const TerrainGrid* terrain,
-                       double w_risk, py::handle risk, double unknown_cost) {
+      .def(py::init([](const OccupancyGrid& grid, FloatArg inflation_radius, bool simplify, const TerrainGrid* terrain,
+                       FloatArg w_risk, py::handle risk, FloatArg unknown_cost) {
              AStarParams params;
-             params.inflation_radius = inflation_radius;
+             params.inflation_radius = to_float(inflation_radius, "inflation_radius");
              params.simplify = simplify;
-             params.terrain = terrain_cost(w_risk, risk);
-             params.unknown_cost = unknown_cost;
+             params.terrain = terrain_cost(to_float(w_risk, "w_risk"), risk);
+             params.unknown_cost = to_float(unknown_cost, "unknown_cost");
              std::optional<TerrainGrid> t;
              if (terrain) t = *terrain;
              return AStarPlanner(grid, params, t);
@@ -106,22 +106,23 @@ void init_global_planner(py::module_& m) {
                           "OMPL's sampling-based planners over the same map, with a weighted cost of path length, "
                           "clearance and terrain risk; seeded and time-bounded.")
       .def(py::init([](const OccupancyGrid& grid, const Footprint& footprint, const std::string& planner,
-                       double time_limit, double range, std::uint32_t max_iterations, std::uint32_t seed, py::object inflation_radius, double w_length,
-                       double w_clearance, double clearance_reference, const TerrainGrid* terrain, double w_risk,
-                       py::handle risk, bool simplify, double interpolation, bool verbose) {
+                       FloatArg time_limit, FloatArg range, IntArg max_iterations, IntArg seed,
+                       py::object inflation_radius, FloatArg w_length, FloatArg w_clearance,
+                       FloatArg clearance_reference, const TerrainGrid* terrain, FloatArg w_risk, py::handle risk,
+                       bool simplify, FloatArg interpolation, bool verbose) {
              OmplParams params;
              params.planner = planner;
-             params.time_limit = time_limit;
-             params.range = range;
-             params.max_iterations = max_iterations;
-             params.seed = seed;
+             params.time_limit = to_float(time_limit, "time_limit");
+             params.range = to_float(range, "range");
+             params.max_iterations = to_int<std::uint32_t>(max_iterations, "max_iterations");
+             params.seed = to_int<std::uint32_t>(seed, "seed");
              params.inflation_radius = inflation_radius.is_none() ? footprint.radius() : to_number(inflation_radius, "inflation_radius");
-             params.w_length = w_length;
-             params.w_clearance = w_clearance;
-             params.clearance_reference = clearance_reference;
-             params.terrain = terrain_cost(w_risk, risk);
+             params.w_length = to_float(w_length, "w_length");
+             params.w_clearance = to_float(w_clearance, "w_clearance");
+             params.clearance_reference = to_float(clearance_reference, "clearance_reference");
+             params.terrain = terrain_cost(to_float(w_risk, "w_risk"), risk);
              params.simplify = simplify;
-             params.interpolation = interpolation;
+             params.interpolation = to_float(interpolation, "interpolation");
              params.verbose = verbose;
              std::optional<TerrainGrid> t;
              if (terrain) t = *terrain;

@@ -44,8 +44,8 @@ void init_grid(py::module_& m) {
                             "An occupancy grid: cells[row, col], row 0 at the bottom (lowest y), 1 = obstacle. "
                             "Cell (row, col) covers x in origin.x + [col, col + 1) * resolution and "
                             "y in origin.y + [row, row + 1) * resolution. Outside the grid is free.")
-      .def(py::init([](py::handle cells, double resolution, py::handle origin) {
-             return grid_from_array(cells, resolution, origin);
+      .def(py::init([](py::handle cells, FloatArg resolution, py::handle origin) {
+             return grid_from_array(cells, to_float(resolution, "resolution"), origin);
            }),
            py::arg("cells"), py::arg("resolution"),
            py::arg("origin") = py::make_tuple(0.0, 0.0))
@@ -72,7 +72,9 @@ void init_grid(py::module_& m) {
             return out;
           },
           py::arg("points"), "Whether each of (n, 2) points lies in an occupied cell.")
-      .def("cell_center", [](const OccupancyGrid& g, int row, int col) {
+      .def("cell_center", [](const OccupancyGrid& g, IntArg row_arg, IntArg col_arg) {
+        const int row = to_int<int>(row_arg, "row", 0, g.rows() - 1);
+        const int col = to_int<int>(col_arg, "col", 0, g.cols() - 1);
         if (!g.in_bounds(row, col)) throw Error("cell (" + std::to_string(row) + ", " + std::to_string(col) + ") is outside the grid");
         const Vec2 c = g.cell_center(row, col);
         return py::make_tuple(c.x(), c.y());
@@ -87,7 +89,8 @@ void init_grid(py::module_& m) {
   py::class_<TerrainGrid>(m, "TerrainGrid",
                           "Slope grades 0-4 per cell, laid out like an OccupancyGrid (grades[row, col]); grade 4 "
                           "cannot be entered.")
-      .def(py::init([](py::handle grades, double resolution, py::handle origin) {
+      .def(py::init([](py::handle grades, FloatArg resolution_arg, py::handle origin) {
+             const double resolution = to_float(resolution_arg, "resolution");
              const OccupancyGrid layout = grid_from_array(grades, resolution, origin, "grades", false);
              return TerrainGrid(layout.rows(), layout.cols(), resolution, layout.origin(), layout.cells());
            }),

@@ -16,18 +16,18 @@ using namespace fgdwa::py_convert;
 void init_mapping(py::module_& m) {
   py::class_<OccupancyParams>(m, "OccupancyParams",
                               "The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).")
-      .def(py::init([](double hit, double miss, double clamp_min, double clamp_max, double occupied, double free,
-                       double range_std, double clear_range, double hit_share, bool clear) {
+      .def(py::init([](FloatArg hit, FloatArg miss, FloatArg clamp_min, FloatArg clamp_max, FloatArg occupied,
+                       FloatArg free, FloatArg range_std, FloatArg clear_range, FloatArg hit_share, bool clear) {
              OccupancyParams p;
-             p.hit = hit;
-             p.miss = miss;
-             p.clamp_min = clamp_min;
-             p.clamp_max = clamp_max;
-             p.occupied = occupied;
-             p.free = free;
-             p.range_std = range_std;
-             p.clear_range = clear_range;
-             p.hit_share = hit_share;
+             p.hit = to_float(hit, "hit");
+             p.miss = to_float(miss, "miss");
+             p.clamp_min = to_float(clamp_min, "clamp_min");
+             p.clamp_max = to_float(clamp_max, "clamp_max");
+             p.occupied = to_float(occupied, "occupied");
+             p.free = to_float(free, "free");
+             p.range_std = to_float(range_std, "range_std");
+             p.clear_range = to_float(clear_range, "clear_range");
+             p.hit_share = to_float(hit_share, "hit_share");
              p.clear = clear;
              p.validate();
              return p;
@@ -64,8 +64,10 @@ void init_mapping(py::module_& m) {
                       "evidence of free space, the hit's cell of an obstacle), so spurious hits and moved objects fade.")
       .def(py::init<const OccupancyGrid&, const OccupancyParams&>(), py::arg("like"),
            py::arg("params") = OccupancyParams(), "An empty map with the layout of `like`.")
-      .def(py::init([](int rows, int cols, double resolution, py::handle origin, const OccupancyParams& params) {
-             return ScanMap(rows, cols, resolution, to_vec2(origin, "origin"), params);
+      .def(py::init([](IntArg rows, IntArg cols, FloatArg resolution, py::handle origin, const OccupancyParams& params) {
+             const int most = static_cast<int>(limits::kMaxGridCells);
+             return ScanMap(to_int<int>(rows, "grid rows", 1, most), to_int<int>(cols, "grid cols", 1, most),
+                            to_float(resolution, "resolution"), to_vec2(origin, "origin"), params);
            }),
            py::arg("rows"), py::arg("cols"), py::arg("resolution"), py::arg("origin"),
            py::arg("params") = OccupancyParams())
@@ -117,8 +119,8 @@ void init_mapping(py::module_& m) {
 
   m.def(
       "path_blocked",
-      [](const GlobalPath& path, py::handle position, const DistanceField& field, double clearance) {
-        return path_blocked(path, to_vec2(position, "position"), field, clearance);
+      [](const GlobalPath& path, py::handle position, const DistanceField& field, FloatArg clearance) {
+        return path_blocked(path, to_vec2(position, "position"), field, to_float(clearance, "clearance"));
       },
       py::arg("path"), py::arg("position"), py::arg("field"), py::arg("clearance"),
       "Whether the path ahead of `position` (from its nearest point on) passes closer than `clearance` (m) "

@@ -41,36 +41,39 @@ void init_navigator(py::module_& m) {
       .value("RecoveriesExhausted", FailureReason::RecoveriesExhausted);
 
   py::class_<NavigatorParams>(m, "NavigatorParams", "Replanning and recovery settings of a Navigator (SPEC 13).")
-      .def(py::init([](double path_margin, double replan_period, double stall_time, double stall_distance,
-                       double give_up_length, double keep_clear, double sensed_close_radius, double backup_distance,
-                       double backup_speed,
-                       double rotate_limit_deg, double wait_time, double wait_radius, int max_recoveries,
-                       double progress_reset, int record_top_k, const OccupancyParams& occupancy,
-                       double unknown_cost, bool track_moving, const SegmentParams& segment,
-                       const TrackerParams& tracker, bool learn_obstacles, double mover_margin) {
+      .def(py::init([](FloatArg path_margin, FloatArg replan_period, FloatArg stall_time, FloatArg stall_distance,
+                       FloatArg give_up_length, FloatArg keep_clear, FloatArg sensed_close_radius,
+                       FloatArg backup_distance, FloatArg backup_speed, FloatArg rotate_limit_deg, FloatArg wait_time,
+                       FloatArg wait_radius, IntArg max_recoveries, FloatArg progress_reset, IntArg record_top_k,
+                       const OccupancyParams& occupancy, FloatArg unknown_cost, bool track_moving,
+                       const SegmentParams& segment, const TrackerParams& tracker, bool learn_obstacles,
+                       FloatArg mover_margin) {
              NavigatorParams p;
-             p.path_margin = path_margin;
-             p.replan_period = replan_period;
-             p.stall_time = stall_time;
-             p.stall_distance = stall_distance;
-             p.give_up_length = give_up_length;
-             p.keep_clear = keep_clear;
-             p.sensed_close_radius = sensed_close_radius;
-             p.backup_distance = backup_distance;
-             p.backup_speed = backup_speed;
-             p.rotate_limit = radians_from_degrees("rotate_limit_deg", rotate_limit_deg, 0.0, 36000.0);
-             p.wait_time = wait_time;
-             p.wait_radius = wait_radius;
-             p.max_recoveries = max_recoveries;
-             p.progress_reset = progress_reset;
-             p.record_top_k = record_top_k;
+             p.path_margin = to_float(path_margin, "path_margin");
+             p.replan_period = to_float(replan_period, "replan_period");
+             p.stall_time = to_float(stall_time, "stall_time");
+             p.stall_distance = to_float(stall_distance, "stall_distance");
+             p.give_up_length = to_float(give_up_length, "give_up_length");
+             p.keep_clear = to_float(keep_clear, "keep_clear");
+             p.sensed_close_radius = to_float(sensed_close_radius, "sensed_close_radius");
+             p.backup_distance = to_float(backup_distance, "backup_distance");
+             p.backup_speed = to_float(backup_speed, "backup_speed");
+             p.rotate_limit =
+                 radians_from_degrees("rotate_limit_deg", to_float(rotate_limit_deg, "rotate_limit_deg"), 0.0, 36000.0);
+             p.wait_time = to_float(wait_time, "wait_time");
+             p.wait_radius = to_float(wait_radius, "wait_radius");
+             p.max_recoveries =
+                 to_int<int>(max_recoveries, "max_recoveries", 0, static_cast<int>(limits::kMaxEventCount));
+             p.progress_reset = to_float(progress_reset, "progress_reset");
+             p.record_top_k =
+                 to_int<int>(record_top_k, "record_top_k", 0, static_cast<int>(limits::kMaxWindowSamples));
              p.occupancy = occupancy;
-             p.unknown_cost = unknown_cost;
+             p.unknown_cost = to_float(unknown_cost, "unknown_cost");
              p.track_moving = track_moving;
              p.segment = segment;
              p.tracker = tracker;
              p.learn_obstacles = learn_obstacles;
-             p.mover_margin = mover_margin;
+             p.mover_margin = to_float(mover_margin, "mover_margin");
              p.validate();
              return p;
            }),
@@ -208,8 +211,14 @@ void init_navigator(py::module_& m) {
               n.set_global_path(GlobalPath(to_points(path, "path")));
           },
           py::arg("path"), "Follow this path (GlobalPath or (n, 2) points) instead of planning one; after set_goal().")
-      .def("step", &Navigator::step, py::arg("state"), py::arg("scan"), py::arg("time"),
-           py::arg("discs") = std::vector<Disc>{}, py::return_value_policy::reference_internal,
+      .def(
+          "step",
+          [](Navigator& n, const RobotState& state, const Scan* scan, FloatArg time,
+             const std::vector<Disc>& discs) -> const CycleRecord& {
+            return n.step(state, scan, to_float(time, "time"), discs);
+          },
+          py::arg("state"), py::arg("scan"), py::arg("time"), py::arg("discs") = std::vector<Disc>{},
+          py::return_value_policy::reference_internal,
            "One cycle from `state` with this cycle's scan (or None) at `time` (s); `discs`: known moving obstacles "
            "placed now. The record stays valid until the next step().")
       .def_property_readonly("record", &Navigator::record, py::return_value_policy::reference_internal)

@@ -15,7 +15,10 @@ using namespace fgdwa::py_convert;
 void init_path(py::module_& m) {
   m.def(
       "reference_samples",
-      [](const GlobalPath& path, py::handle robot, double v_ref, double dt, int n, const std::string& sampling) {
+      [](const GlobalPath& path, py::handle robot, FloatArg v_ref_arg, FloatArg dt_arg, IntArg n_arg,
+         const std::string& sampling) {
+        const double v_ref = to_float(v_ref_arg, "v_ref"), dt = to_float(dt_arg, "dt");
+        const int n = to_int<int>(n_arg, "n", 1, static_cast<int>(limits::kMaxRolloutSteps));
         if (!(v_ref >= 0.0) || !std::isfinite(v_ref)) throw Error("v_ref = " + number_text(v_ref) + ": must be >= 0");
         if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + number_text(dt) + ": must be > 0");
         if (n < 1) throw Error("n = " + std::to_string(n) + ": must be >= 1");
@@ -53,7 +56,8 @@ void init_path(py::module_& m) {
       .def_property_readonly("points", [](const GlobalPath& p) { return points_array(p.points()); })
       .def_property_readonly("length", &GlobalPath::length)
       .def_property_readonly("segment_count", &GlobalPath::segment_count)
-      .def("segment_direction", [](const GlobalPath& p, std::size_t i) {
+      .def("segment_direction", [](const GlobalPath& p, IntArg segment) {
+        const std::size_t i = to_int<std::size_t>(segment, "segment", 0, p.segment_count() - 1);
         if (i >= p.segment_count()) throw Error("segment " + std::to_string(i) + " does not exist");
         return p.segment_direction(i);
       }, py::arg("segment"))
@@ -61,13 +65,14 @@ void init_path(py::module_& m) {
            py::arg("point"))
       .def("deviation", [](const GlobalPath& p, py::handle point) { return p.deviation(to_vec2(point, "point")); },
            py::arg("point"), "Distance in metres from the point to the path (D).")
-      .def("point_at", [](const GlobalPath& p, double s) {
+      .def("point_at", [](const GlobalPath& p, FloatArg s_arg) {
+        const double s = to_float(s_arg, "s");
         if (!std::isfinite(s)) throw Error("s: must be finite");
         const Vec2 q = p.point_at(s);
         return py::make_tuple(q.x(), q.y());
       }, py::arg("s"), "The point at arc length s metres (clamped to the path).")
-      .def("key_nodes", [](const GlobalPath& p, double min_turn_deg) {
-        return p.key_nodes(radians_from_degrees("min_turn_deg", min_turn_deg, 0.0, 180.0, true));
+      .def("key_nodes", [](const GlobalPath& p, FloatArg min_turn_deg) {
+        return p.key_nodes(radians_from_degrees("min_turn_deg", to_float(min_turn_deg, "min_turn_deg"), 0.0, 180.0, true));
       }, py::arg("min_turn_deg") = 10.0,
            "Indices of the vertices where the path turns by more than min_turn_deg degrees, then the last vertex.")
       .def("__len__", [](const GlobalPath& p) { return p.points().size(); })

@@ -15,8 +15,11 @@ using namespace fgdwa::py_convert;
 void init_perception(py::module_& m) {
   py::class_<LidarParams>(m, "LidarParams", "A planar lidar: field of view (deg), beams, max range (m), range noise (m), "
                                         "the probability a beam returns nothing (reads +inf).")
-      .def(py::init([](double fov_deg, int beams, double max_range, double noise_std, double dropout) {
-             LidarParams p{radians_from_degrees("fov_deg", fov_deg, 0.0, 360.0), beams, max_range, noise_std, dropout};
+      .def(py::init([](FloatArg fov_deg, IntArg beams, FloatArg max_range, FloatArg noise_std, FloatArg dropout) {
+             LidarParams p{radians_from_degrees("fov_deg", to_float(fov_deg, "fov_deg"), 0.0, 360.0),
+                           to_int<int>(beams, "lidar beams", 1, static_cast<int>(limits::kMaxBeams)),
+                           to_float(max_range, "max_range"), to_float(noise_std, "noise_std"),
+                           to_float(dropout, "dropout")};
              p.validate();
              return p;
            }),
@@ -42,8 +45,11 @@ void init_perception(py::module_& m) {
   py::class_<Scan>(m, "Scan", "One lidar scan: ranges (m, +inf for no hit) of beams from angle_min by angle_increment.")
       // Scans measured elsewhere (a real lidar, another simulator) enter here;
       // LaserScanner makes fgdwa's own.
-      .def(py::init([](py::handle ranges, double angle_min, double angle_increment, double max_range,
+      .def(py::init([](py::handle ranges, FloatArg angle_min_arg, FloatArg angle_increment_arg, FloatArg max_range_arg,
                        py::handle pose) {
+             const double angle_min = to_float(angle_min_arg, "angle_min");
+             const double angle_increment = to_float(angle_increment_arg, "angle_increment");
+             const double max_range = to_float(max_range_arg, "max_range");
              Scan s;
              s.pose = to_pose(pose, "pose");
              if (!std::isfinite(angle_min)) throw Error("angle_min: must be finite, got " + std::to_string(angle_min));
@@ -94,10 +100,10 @@ void init_perception(py::module_& m) {
       .def_property_readonly("params", &LaserScanner::params)
       .def(
           "scan",
-          [](const LaserScanner& s, py::handle pose, std::vector<Disc> discs, double t, std::uint64_t seed) {
-            std::mt19937_64 rng(seed);
+          [](const LaserScanner& s, py::handle pose, std::vector<Disc> discs, FloatArg t, IntArg seed) {
+            std::mt19937_64 rng(to_int<std::uint64_t>(seed, "seed"));
             Scan out;
-            s.scan(to_pose(pose, "pose"), discs, t, rng, out);
+            s.scan(to_pose(pose, "pose"), discs, to_float(t, "t"), rng, out);
             return out;
           },
           py::arg("pose"), py::arg("discs") = std::vector<Disc>{}, py::arg("t") = 0.0, py::arg("seed") = 0,
@@ -105,8 +111,10 @@ void init_perception(py::module_& m) {
           "seeded with seed.");
 
   py::class_<DetectWindowParams>(m, "DetectWindowParams", "The detect window: +-half_angle_deg about the heading, radius R (m), base c of Eq. 13.")
-      .def(py::init([](double half_angle_deg, double radius, double base) {
-             DetectWindowParams p{radians_from_degrees("half_angle_deg", half_angle_deg, 0.0, 180.0), radius, base};
+      .def(py::init([](FloatArg half_angle_deg, FloatArg radius, FloatArg base) {
+             DetectWindowParams p{
+                 radians_from_degrees("half_angle_deg", to_float(half_angle_deg, "half_angle_deg"), 0.0, 180.0),
+                 to_float(radius, "radius"), to_float(base, "base")};
              p.validate();
              return p;
            }),
@@ -131,7 +139,9 @@ void init_perception(py::module_& m) {
         "Eq. 13: I = S_d / S_w + c^max_gap over the detect window, clamped to [0, 2].");
   m.def(
       "points_field",
-      [](py::handle points, double resolution) { return points_field(to_points(points, "points"), resolution); },
+      [](py::handle points, FloatArg resolution) {
+        return points_field(to_points(points, "points"), to_float(resolution, "resolution"));
+      },
       py::arg("points"), py::arg("resolution"),
       "A DistanceField of scattered obstacle points on a grid just covering them (None for no point).");
 }

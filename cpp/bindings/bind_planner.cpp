@@ -73,27 +73,29 @@ void init_planner(py::module_& m) {
       .value("Moving", RejectReason::Moving);
 
   py::class_<PlannerParams>(m, "PlannerParams", "Parameters of the local planner (SI units).")
-      .def(py::init([](double dt, double sim_time, int n_v, int n_omega, const std::string& normalization,
-                       const std::string& braking, double goal_tolerance, py::object critics,
-                       const std::string& heading_target, double key_node_angle_deg, double key_node_radius,
-                       double safety_margin, bool key_node_sight, double moving_horizon,
-                       double mover_caution_radius, double mover_speed_weight) {
+      .def(py::init([](FloatArg dt, FloatArg sim_time, IntArg n_v, IntArg n_omega, const std::string& normalization,
+                       const std::string& braking, FloatArg goal_tolerance, py::object critics,
+                       const std::string& heading_target, FloatArg key_node_angle_deg, FloatArg key_node_radius,
+                       FloatArg safety_margin, bool key_node_sight, FloatArg moving_horizon,
+                       FloatArg mover_caution_radius, FloatArg mover_speed_weight) {
              PlannerParams p;
-             p.dt = dt;
-             p.sim_time = sim_time;
-             p.window.n_v = n_v;
-             p.window.n_omega = n_omega;
+             p.dt = to_float(dt, "dt");
+             p.sim_time = to_float(sim_time, "sim_time");
+             const int most = static_cast<int>(limits::kMaxWindowSamplesPerAxis);
+             p.window.n_v = to_int<int>(n_v, "n_v", 1, most);
+             p.window.n_omega = to_int<int>(n_omega, "n_omega", 1, most);
              p.normalization = normalization_from_string(normalization);
              p.braking = braking_from_string(braking);
-             p.goal_tolerance = goal_tolerance;
+             p.goal_tolerance = to_float(goal_tolerance, "goal_tolerance");
              p.heading_target = heading_target_from_string(heading_target);
-             p.key_nodes.min_turn = radians_from_degrees("key_node_angle_deg", key_node_angle_deg, 0.0, 180.0, true);
-             p.key_nodes.reach_radius = key_node_radius;
+             p.key_nodes.min_turn = radians_from_degrees(
+                 "key_node_angle_deg", to_float(key_node_angle_deg, "key_node_angle_deg"), 0.0, 180.0, true);
+             p.key_nodes.reach_radius = to_float(key_node_radius, "key_node_radius");
              p.key_nodes.require_sight = key_node_sight;
-             p.safety_margin = safety_margin;
-             p.moving_horizon = moving_horizon;
-             p.mover_caution_radius = mover_caution_radius;
-             p.mover_speed_weight = mover_speed_weight;
+             p.safety_margin = to_float(safety_margin, "safety_margin");
+             p.moving_horizon = to_float(moving_horizon, "moving_horizon");
+             p.mover_caution_radius = to_float(mover_caution_radius, "mover_caution_radius");
+             p.mover_speed_weight = to_float(mover_speed_weight, "mover_speed_weight");
              if (!critics.is_none()) {
                p.critics.clear();
                for (auto item : critics) p.critics.push_back(critic_from_python(item));
@@ -222,7 +224,12 @@ void init_planner(py::module_& m) {
       .def_property_readonly("key_nodes", &LocalPlanner::key_nodes, "Indices of the key nodes in the global path's points.")
       .def_property_readonly("needs_path", &LocalPlanner::needs_path,
                              "Whether a cycle needs a global path: the key-node heading or a critic reads it.")
-      .def("set_weight", &LocalPlanner::set_weight, py::arg("critic"), py::arg("weight"))
+      .def(
+          "set_weight",
+          [](LocalPlanner& p, const std::string& critic, FloatArg weight) {
+            p.set_weight(critic, to_float(weight, "weight"));
+          },
+          py::arg("critic"), py::arg("weight"))
       .def("weight", &LocalPlanner::weight, py::arg("critic"))
       .def_property_readonly("limits", &LocalPlanner::limits)
       .def_property_readonly("footprint", &LocalPlanner::footprint)

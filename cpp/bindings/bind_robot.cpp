@@ -15,21 +15,31 @@ void init_robot(py::module_& m) {
   py::class_<RobotLimits>(m, "RobotLimits",
                           "Velocity and acceleration limits of a differential-drive robot (SI units). "
                           "brake_v / brake_omega of 0 mean: equal to the accelerations.")
-      .def(py::init([](double v_min, double v_max, double omega_max, double acc_v, double acc_omega, double brake_v,
-                       double brake_omega) {
-             RobotLimits l{v_min, v_max, omega_max, acc_v, acc_omega, brake_v, brake_omega};
+      .def(py::init([](FloatArg v_min, FloatArg v_max, FloatArg omega_max, FloatArg acc_v, FloatArg acc_omega,
+                       FloatArg brake_v, FloatArg brake_omega) {
+             RobotLimits l{to_float(v_min, "v_min"),     to_float(v_max, "v_max"),
+                           to_float(omega_max, "omega_max"), to_float(acc_v, "acc_v"),
+                           to_float(acc_omega, "acc_omega"), to_float(brake_v, "brake_v"),
+                           to_float(brake_omega, "brake_omega")};
              l.validate();
              return l;
            }),
            py::arg("v_min") = 0.0, py::arg("v_max") = 1.2, py::arg("omega_max") = 1.0, py::arg("acc_v") = 1.0,
            py::arg("acc_omega") = 2.0, py::arg("brake_v") = 0.0, py::arg("brake_omega") = 0.0)
-      .def_readwrite("v_min", &RobotLimits::v_min)
-      .def_readwrite("v_max", &RobotLimits::v_max)
-      .def_readwrite("omega_max", &RobotLimits::omega_max)
-      .def_readwrite("acc_v", &RobotLimits::acc_v)
-      .def_readwrite("acc_omega", &RobotLimits::acc_omega)
-      .def_readwrite("brake_v", &RobotLimits::brake_v)
-      .def_readwrite("brake_omega", &RobotLimits::brake_omega)
+      .def_property("v_min", [](const RobotLimits& l) { return l.v_min; },
+                    float_setter(&RobotLimits::v_min, "v_min"))
+      .def_property("v_max", [](const RobotLimits& l) { return l.v_max; },
+                    float_setter(&RobotLimits::v_max, "v_max"))
+      .def_property("omega_max", [](const RobotLimits& l) { return l.omega_max; },
+                    float_setter(&RobotLimits::omega_max, "omega_max"))
+      .def_property("acc_v", [](const RobotLimits& l) { return l.acc_v; },
+                    float_setter(&RobotLimits::acc_v, "acc_v"))
+      .def_property("acc_omega", [](const RobotLimits& l) { return l.acc_omega; },
+                    float_setter(&RobotLimits::acc_omega, "acc_omega"))
+      .def_property("brake_v", [](const RobotLimits& l) { return l.brake_v; },
+                    float_setter(&RobotLimits::brake_v, "brake_v"))
+      .def_property("brake_omega", [](const RobotLimits& l) { return l.brake_omega; },
+                    float_setter(&RobotLimits::brake_omega, "brake_omega"))
       .def("braking_v", &RobotLimits::braking_v)
       .def("braking_omega", &RobotLimits::braking_omega)
       .def("validate", &RobotLimits::validate, "Raise FgdwaError naming the first bad field.")
@@ -56,7 +66,9 @@ void init_robot(py::module_& m) {
       });
 
   py::class_<Footprint>(m, "Footprint", "The robot's outline: a circle, or a convex polygon in the robot frame.")
-      .def_static("circle", &Footprint::circle, py::arg("radius"), "A circle of `radius` metres about the robot origin.")
+      .def_static(
+          "circle", [](FloatArg radius) { return Footprint::circle(to_float(radius, "radius")); }, py::arg("radius"),
+          "A circle of `radius` metres about the robot origin.")
       .def_static(
           "polygon", [](py::handle vertices) { return Footprint::polygon(to_points(vertices, "vertices")); },
           py::arg("vertices"), "A convex polygon, (n, 2) vertices in metres, robot frame (x forward, y left).")
@@ -90,7 +102,8 @@ void init_robot(py::module_& m) {
 
   m.def(
       "step",
-      [](py::handle pose, py::handle twist, double dt) {
+      [](py::handle pose, py::handle twist, FloatArg dt_arg) {
+        const double dt = to_float(dt_arg, "dt");
         if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + number_text(dt) + ": must be > 0");
         return step(to_pose(pose, "pose"), to_twist(twist, "twist"), dt);
       },
@@ -98,7 +111,9 @@ void init_robot(py::module_& m) {
       "One unicycle step: theta += omega dt, then x += v cos(theta) dt, y += v sin(theta) dt.");
   m.def(
       "rollout",
-      [](py::handle pose, py::handle twist, double dt, int n_steps) {
+      [](py::handle pose, py::handle twist, FloatArg dt_arg, IntArg n_steps_arg) {
+        const double dt = to_float(dt_arg, "dt");
+        const int n_steps = to_int<int>(n_steps_arg, "n_steps", 1, static_cast<int>(limits::kMaxRolloutSteps));
         if (!(dt > 0.0)) throw Error("dt = " + number_text(dt) + ": must be > 0");
         if (n_steps < 1) throw Error("n_steps = " + std::to_string(n_steps) + ": must be >= 1");
         return poses_to_array(rollout(to_pose(pose, "pose"), to_twist(twist, "twist"), dt, n_steps));

@@ -23,9 +23,14 @@ void init_tracking(py::module_& m) {
                             "How segment_scan cuts a scan into clusters: breakpoint gap (m, growing by "
                             "range_gap_factor m per m of range), min_points, max_size (m), min_radius (m) of a "
                             "fitted disc, range_noise (m) the disc fit assumes.")
-      .def(py::init([](double base_gap, double range_gap_factor, int min_points, double max_size, double min_radius,
-                       double range_noise) {
-             SegmentParams p{base_gap, range_gap_factor, min_points, max_size, min_radius, range_noise};
+      .def(py::init([](FloatArg base_gap, FloatArg range_gap_factor, IntArg min_points, FloatArg max_size,
+                       FloatArg min_radius, FloatArg range_noise) {
+             SegmentParams p{to_float(base_gap, "base_gap"),
+                             to_float(range_gap_factor, "range_gap_factor"),
+                             to_int<int>(min_points, "segment min_points", 1, static_cast<int>(limits::kMaxBeams)),
+                             to_float(max_size, "max_size"),
+                             to_float(min_radius, "min_radius"),
+                             to_float(range_noise, "range_noise")};
              p.validate();
              return p;
            }),
@@ -61,12 +66,13 @@ void init_tracking(py::module_& m) {
   py::class_<Cluster>(m, "Cluster",
                       "Neighbouring hits of one scan and the disc fitted to them (its centre behind the near side "
                       "the lidar sees).")
-      .def(py::init([](py::handle center, double radius, bool occluded) {
+      .def(py::init([](py::handle center, FloatArg radius, bool occluded) {
              Cluster c;
              c.center = to_vec2(center, "center");
-             c.radius = radius;
+             c.radius = to_float(radius, "radius");
              c.occluded = occluded;
              c.points = {c.center};
+             c.validate();
              return c;
            }),
            py::arg("center"), py::arg("radius") = 0.3, py::arg("occluded") = false,
@@ -109,12 +115,23 @@ void init_tracking(py::module_& m) {
                             "Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), "
                             "confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, "
                             "moving_window s, free_margin m), max_speed (m/s), uncertainty_sigmas, max_uncertainty (m).")
-      .def(py::init([](double gate, double gate_sigmas, double accel_std, double measurement_std, int confirm_hits,
-                       double lost_time, double moving_speed, double moving_sigmas, double moving_window,
-                       double free_margin, double max_speed, double uncertainty_sigmas, double max_uncertainty) {
-             TrackerParams p{gate,          gate_sigmas, accel_std, measurement_std, confirm_hits,      lost_time,
-                             moving_speed,  moving_sigmas, moving_window, free_margin, max_speed, uncertainty_sigmas,
-                             max_uncertainty};
+      .def(py::init([](FloatArg gate, FloatArg gate_sigmas, FloatArg accel_std, FloatArg measurement_std,
+                       IntArg confirm_hits, FloatArg lost_time, FloatArg moving_speed, FloatArg moving_sigmas,
+                       FloatArg moving_window, FloatArg free_margin, FloatArg max_speed, FloatArg uncertainty_sigmas,
+                       FloatArg max_uncertainty) {
+             TrackerParams p{to_float(gate, "gate"),
+                             to_float(gate_sigmas, "gate_sigmas"),
+                             to_float(accel_std, "accel_std"),
+                             to_float(measurement_std, "measurement_std"),
+                             to_int<int>(confirm_hits, "tracker confirm_hits", 1, static_cast<int>(limits::kMaxEventCount)),
+                             to_float(lost_time, "lost_time"),
+                             to_float(moving_speed, "moving_speed"),
+                             to_float(moving_sigmas, "moving_sigmas"),
+                             to_float(moving_window, "moving_window"),
+                             to_float(free_margin, "free_margin"),
+                             to_float(max_speed, "max_speed"),
+                             to_float(uncertainty_sigmas, "uncertainty_sigmas"),
+                             to_float(max_uncertainty, "max_uncertainty")};
              p.validate();
              return p;
            }),
@@ -187,8 +204,8 @@ void init_tracking(py::module_& m) {
       .def_property_readonly("params", &Tracker::params)
       .def(
           "update",
-          [](Tracker& t, const std::vector<Cluster>& clusters, double time, const Scan* scan) {
-            t.update(clusters, time, scan);
+          [](Tracker& t, const std::vector<Cluster>& clusters, FloatArg time, const Scan* scan) {
+            t.update(clusters, to_float(time, "time"), scan);
           },
           py::arg("clusters"), py::arg("time"), py::arg("scan") = nullptr,
           "Predicts the tracks to time (s, never going back), assigns the clusters, corrects, starts, loses and "
@@ -204,7 +221,9 @@ void init_tracking(py::module_& m) {
            "per second ahead.")
       .def(
           "explains",
-          [](const Tracker& t, py::handle point, double margin) { return t.explains(to_vec2(point, "point"), margin); },
+          [](const Tracker& t, py::handle point, FloatArg margin) {
+            return t.explains(to_vec2(point, "point"), to_float(margin, "margin"));
+          },
           py::arg("point"), py::arg("margin") = 0.0,
           "Whether the point lies within margin (m) of a confirmed moving track's grown disc.")
       .def("reset", &Tracker::reset, "Forgets every track; ids keep counting.")

@@ -4,12 +4,14 @@
 #include <cmath>
 #include <sstream>
 
+#include "convert.hpp"
 #include "fgdwa/error.hpp"
 #include "fgdwa/presets.hpp"
 #include "fgdwa/weights.hpp"
 
 namespace py = pybind11;
 using namespace fgdwa;
+using namespace fgdwa::py_convert;
 
 namespace {
 // Lets a Python class derive from WeightPolicy and define
@@ -56,7 +58,8 @@ void init_weights(py::module_& m) {
       .def_property_readonly("name", &WeightPolicy::name)
       .def(
           "weights",
-          [](const WeightPolicy& p, double density, double deviation) {
+          [](const WeightPolicy& p, FloatArg density_arg, FloatArg deviation_arg) {
+            const double density = to_float(density_arg, "density"), deviation = to_float(deviation_arg, "deviation");
             if (std::isnan(density)) throw Error("density I is NaN");
             if (std::isnan(deviation)) throw Error("deviation D is NaN");
             return p.weights(density, deviation);
@@ -67,8 +70,17 @@ void init_weights(py::module_& m) {
   py::class_<FixedWeights, WeightPolicy, std::shared_ptr<FixedWeights>>(
       m, "FixedWeights", "Critics' weights held fixed: FixedWeights(beta, delta) for clearance and similarity, or "
                          "FixedWeights(weights={critic name: weight}).")
-      .def(py::init<double, double>(), py::arg("beta"), py::arg("delta"))
-      .def(py::init<CriticWeights>(), py::arg("weights"))
+      .def(py::init([](FloatArg beta, FloatArg delta) {
+             return std::make_shared<FixedWeights>(to_float(beta, "beta"), to_float(delta, "delta"));
+           }),
+           py::arg("beta"), py::arg("delta"))
+      .def(py::init([](const std::map<std::string, FloatArg>& weights) {
+             CriticWeights values;
+             for (const auto& [critic, weight] : weights)
+               values[critic] = to_float(weight, "weight of critic '" + critic + "'");
+             return std::make_shared<FixedWeights>(std::move(values));
+           }),
+           py::arg("weights"))
       .def("__repr__", [](const FixedWeights& w) {
         std::ostringstream s;
         s << "FixedWeights({";

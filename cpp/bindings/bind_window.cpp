@@ -28,7 +28,8 @@ void init_window(py::module_& m) {
 
   m.def(
       "dynamic_window",
-      [](const RobotLimits& limits, py::handle current, double dt) {
+      [](const RobotLimits& limits, py::handle current, FloatArg dt_arg) {
+        const double dt = to_float(dt_arg, "dt");
         limits.validate();
         if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + number_text(dt) + ": must be > 0");
         return dynamic_window(limits, to_twist(current, "current"), dt);
@@ -36,8 +37,9 @@ void init_window(py::module_& m) {
       py::arg("limits"), py::arg("current"), py::arg("dt"), "Vm ∩ Vd for the current (v, omega).");
   m.def(
       "sample_window",
-      [](const VelocityWindow& w, py::handle current, int n_v, int n_omega) {
-        WindowParams params{n_v, n_omega};
+      [](const VelocityWindow& w, py::handle current, IntArg n_v, IntArg n_omega) {
+        const int most = static_cast<int>(limits::kMaxWindowSamplesPerAxis);
+        WindowParams params{to_int<int>(n_v, "n_v", 1, most), to_int<int>(n_omega, "n_omega", 1, most)};
         params.validate();
         std::vector<Twist> samples;
         sample_window(w, to_twist(current, "current"), params, samples);

@@ -55,9 +55,54 @@ double to_number(py::handle obj, const std::string& name) {
   const double value = PyFloat_AsDouble(obj.ptr());
   if (value == -1.0 && PyErr_Occurred()) {
     PyErr_Clear();
-    throw Error(name + ": the integer is too large for a float");
+    throw Error(name + " = " + int_text(obj) + ": too large for a float");
   }
   return value;
+}
+
+std::string int_text(py::handle value) {
+  constexpr std::size_t kShown = 10, kLongest = 24;
+  PyObject* text = PyObject_Str(value.ptr());
+  if (!text) {  // beyond Python's own limit on the digits of int to str
+    PyErr_Clear();
+    const auto bits = py::reinterpret_steal<py::object>(PyObject_CallMethod(value.ptr(), "bit_length", nullptr));
+    if (!bits) {
+      PyErr_Clear();
+      return "an int";
+    }
+    return "an int of " + std::string(py::str(bits)) + " bits";
+  }
+  std::string s = py::reinterpret_steal<py::str>(text);
+  const std::size_t sign = !s.empty() && s[0] == '-';
+  if (s.size() <= kLongest) return s;
+  return s.substr(0, sign + kShown) + "... (" + std::to_string(s.size() - sign) + " digits)";
+}
+
+bool int_fits(const py::int_& value, long long& out) {
+  int overflow = 0;
+  out = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  if (out == -1 && PyErr_Occurred()) {
+    PyErr_Clear();
+    return false;
+  }
+  return overflow == 0;
+}
+
+bool int_fits(const py::int_& value, unsigned long long& out) {
+  out = PyLong_AsUnsignedLongLong(value.ptr());
+  if (out == static_cast<unsigned long long>(-1) && PyErr_Occurred()) {
+    PyErr_Clear();
+    return false;
+  }
+  return true;
+}
+
+void fail_int(const IntArg& arg, const std::string& name, const std::string& lo, const std::string& hi) {
+  throw Error(name + " = " + int_text(arg.value) + ": must lie in [" + lo + ", " + hi + "]");
+}
+
+double to_float(const FloatArg& arg, const std::string& name) {
+  return arg.too_large ? to_number(arg.too_large, name) : arg.value;
 }
 
 std::string number_text(double value) { return std::string(py::repr(py::float_(value))); }
@@ -150,3 +195,46 @@ py::array_t<double> twists_array(const std::vector<Twist>& twists) {
 }
 
 }  // namespace fgdwa::py_convert
+
+namespace pybind11::detail {
+
+bool type_caster<fgdwa::py_convert::IntArg>::load(handle src, bool convert) {
+  if (!src || PyFloat_Check(src.ptr()) || !(convert || PyLong_Check(src.ptr()) || PyIndex_Check(src.ptr())))
+    return false;
+  // ints (bool included) and objects with __index__, as an exact int
+  auto number = reinterpret_steal<object>(PyNumber_Index(src.ptr()));
+  if (!number) {
+    PyErr_Clear();
+    // other numbers through __int__ (a numpy float32), as pybind11 converts them
+    if (!convert || !PyNumber_Check(src.ptr())) return false;
+    number = reinterpret_steal<object>(PyNumber_Long(src.ptr()));
+    if (!number) {
+      PyErr_Clear();
+      return false;
+    }
+  }
+  value.value = reinterpret_steal<int_>(number.release());
+  return true;
+}
+
+bool type_caster<fgdwa::py_convert::FloatArg>::load(handle src, bool convert) {
+  if (!src || !(convert || PyFloat_Check(src.ptr()) || PyLong_Check(src.ptr()))) return false;
+  const double number = PyFloat_AsDouble(src.ptr());
+  if (number == -1.0 && PyErr_Occurred()) {
+    const bool overflow = PyErr_ExceptionMatches(PyExc_OverflowError);
+    PyErr_Clear();
+    if (overflow && PyLong_Check(src.ptr())) {
+      value.too_large = reinterpret_borrow<object>(src);
+      return true;
+    }
+    if (!convert || !PyNumber_Check(src.ptr())) return false;
+    auto as_float = reinterpret_steal<object>(PyNumber_Float(src.ptr()));
+    PyErr_Clear();
+    return load(as_float, false);
+  }
+  value.value = number;
+  value.too_large = object();
+  return true;
+}
+
+}  // namespace pybind11::detail

@@ -5,7 +5,9 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "fgdwa/critics.hpp"
@@ -31,8 +33,61 @@ double to_number(py::handle obj, const std::string& name);
 double to_time(double t, const std::string& name);
 // A number as Python writes it (the shortest text that reads back the same).
 std::string number_text(double value);
+// An int as Python writes it; one of many digits shortened to its first ones
+// and its length, so that a message stays readable.
+std::string int_text(py::handle value);
 std::string to_word(py::handle obj, const std::string& name);
 py::dict to_dict(py::handle obj, const std::string& name);
+
+// The argument types of integer and float parameters. pybind11 refuses a
+// Python int that does not fit the C++ type with a TypeError naming no
+// parameter ("incompatible function arguments"); these take any int, and
+// to_int / to_float refuse the ones that do not fit with fgdwa::Error naming
+// the parameter and the value. They take what pybind11 takes for int and
+// double otherwise (bool and objects with __index__ for an int, never a float),
+// and the type stubs name them as pybind11 names int and float.
+struct IntArg {
+  py::int_ value;
+};
+
+struct FloatArg {
+  double value = 0.0;
+  py::object too_large;  // an int beyond a double, as given
+};
+
+// Whether `value` fits a long long / an unsigned long long; if so, it is in `out`.
+bool int_fits(const py::int_& value, long long& out);
+bool int_fits(const py::int_& value, unsigned long long& out);
+[[noreturn]] void fail_int(const IntArg& arg, const std::string& name, const std::string& lo, const std::string& hi);
+
+// `arg` as a T. A value T cannot hold is refused as "name = value: must lie in
+// [lo, hi]", lo and hi being the bounds the library checks the parameter
+// against (by default T's own); a value T holds is returned as it is, for the
+// library's own checks to refuse in their words.
+template <typename T>
+T to_int(const IntArg& arg, const std::string& name, T lo = std::numeric_limits<T>::min(),
+         T hi = std::numeric_limits<T>::max()) {
+  static_assert(std::is_integral_v<T> && !std::is_same_v<T, bool>);
+  if constexpr (std::is_signed_v<T>) {
+    long long value;
+    if (int_fits(arg.value, value) && value >= std::numeric_limits<T>::min() && value <= std::numeric_limits<T>::max())
+      return static_cast<T>(value);
+  } else {
+    unsigned long long value;
+    if (int_fits(arg.value, value) && value <= std::numeric_limits<T>::max()) return static_cast<T>(value);
+  }
+  fail_int(arg, name, std::to_string(lo), std::to_string(hi));
+}
+
+// `arg` as a double; an int too large for one is refused naming `name`.
+double to_float(const FloatArg& arg, const std::string& name);
+
+// The setter of a float field of C, for def_property (def_readwrite's takes a
+// double, so pybind11 refuses a huge int with a TypeError).
+template <typename C>
+auto float_setter(double C::*field, const char* name) {
+  return [field, name](C& object, FloatArg value) { object.*field = to_float(value, name); };
+}
 
 // An angle given in degrees, checked in degrees (lo <= degrees <= hi; `hi_open`:
 // degrees < hi), so a refusal names the value as the user gave it; in radians.
@@ -63,3 +118,35 @@ Enum enum_from_string(const std::string& field, const std::string& name, const s
 CriticConfig critic_config(std::string name, double weight, const py::dict& params);
 
 }  // namespace fgdwa::py_convert
+
+namespace pybind11::detail {
+
+#if PYBIND11_VERSION_MAJOR >= 3
+#define FGDWA_NUMBER_NAME(in, out) io_name(in, out)
+#else
+#define FGDWA_NUMBER_NAME(in, out) const_name(out)
+#endif
+
+template <>
+struct type_caster<fgdwa::py_convert::IntArg> {
+  PYBIND11_TYPE_CASTER(fgdwa::py_convert::IntArg,
+                       FGDWA_NUMBER_NAME("typing.SupportsInt | typing.SupportsIndex", "int"));
+  bool load(handle src, bool convert);
+  static handle cast(const fgdwa::py_convert::IntArg& arg, return_value_policy, handle) {
+    return arg.value.inc_ref();
+  }
+};
+
+template <>
+struct type_caster<fgdwa::py_convert::FloatArg> {
+  PYBIND11_TYPE_CASTER(fgdwa::py_convert::FloatArg,
+                       FGDWA_NUMBER_NAME("typing.SupportsFloat | typing.SupportsIndex", "float"));
+  bool load(handle src, bool convert);
+  static handle cast(const fgdwa::py_convert::FloatArg& arg, return_value_policy, handle) {
+    return arg.too_large ? arg.too_large.inc_ref() : PyFloat_FromDouble(arg.value);
+  }
+};
+
+#undef FGDWA_NUMBER_NAME
+
+}  // namespace pybind11::detail

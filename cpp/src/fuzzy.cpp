@@ -289,9 +289,7 @@ std::string FuzzyRule::to_string() const {
 MamdaniEngine::MamdaniEngine(std::vector<FuzzyVariable> inputs, std::vector<FuzzyVariable> outputs,
                              std::vector<FuzzyRule> rules, int resolution)
     : inputs_(std::move(inputs)), outputs_(std::move(outputs)), rules_(std::move(rules)), resolution_(resolution) {
-  // Each output's defuzzification grid: a million points is far finer than
-  // any term needs, and bounds the engine's memory.
-  detail::require_count("resolution", resolution_, 3, 1000000);
+  detail::require_count("resolution", resolution_, kMinResolution, kMaxResolution);
   if (inputs_.empty()) throw Error("inputs: the engine needs at least one input variable");
   if (outputs_.empty()) throw Error("outputs: the engine needs at least one output variable");
   if (rules_.empty()) throw Error("rules: the engine needs at least one rule");

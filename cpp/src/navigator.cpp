@@ -59,7 +59,7 @@ void NavigatorParams::validate() const {
   detail::require_at_most("rotate_limit", rotate_limit, limits::kMaxAngle);
   time("wait_time", wait_time);
   detail::require_distance("wait_radius", wait_radius);
-  detail::require_count("max_recoveries", max_recoveries, 0, 1000000);
+  detail::require_count("max_recoveries", max_recoveries, 0, limits::kMaxEventCount);
   detail::require_distance("progress_reset", progress_reset);
   detail::require_count("record_top_k", record_top_k, 0, limits::kMaxWindowSamples);
   occupancy.validate();
@@ -102,6 +102,7 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
       tracker_(params.tracker) {
   params_.validate();
   lidar_.validate();
+  validate_passing_factors(passing_factors);
   controller_.set_range_noise(lidar_.noise_std);
   if (terrain_ && !terrain_->matches(map))
     throw Error("terrain: its cells must lie exactly on the map's (same size, resolution and origin)");

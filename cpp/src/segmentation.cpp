@@ -23,6 +23,13 @@ void SegmentParams::validate() const {
   detail::require_length("segment range_noise", range_noise);
 }
 
+void Cluster::validate(const std::string& name) const {
+  detail::require_query_point(name + " center", center);
+  detail::require_distance(name + " radius", radius);
+  for (const Vec2& p : points)
+    if (!p.allFinite()) throw Error(name + " points: must be finite");
+}
+
 namespace {
 
 OrientedBox principal_box(const std::vector<Vec2>& points) {

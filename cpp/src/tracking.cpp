@@ -29,7 +29,7 @@ void TrackerParams::validate() const {
   detail::require_positive("tracker accel_std", accel_std);
   detail::require_at_most("tracker accel_std", accel_std, limits::kMaxAcceleration);
   detail::require_length("tracker measurement_std", measurement_std);
-  detail::require_count("tracker confirm_hits", confirm_hits, 1, 1000000);
+  detail::require_count("tracker confirm_hits", confirm_hits, 1, limits::kMaxEventCount);
   detail::require_positive("tracker lost_time", lost_time);
   detail::require_at_most("tracker lost_time", lost_time, kMaxHorizon);
   detail::require_non_negative("tracker moving_speed", moving_speed);
@@ -246,13 +246,7 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time, const Sc
   detail::require_finite("tracker time", time);
   if (time < time_)
     throw Error(detail::describe("tracker time", time, "must not be before the last update's " + std::to_string(time_)));
-  for (std::size_t i = 0; i < clusters.size(); ++i) {
-    const std::string name = "cluster[" + std::to_string(i) + "] ";
-    detail::require_query_point(name + "center", clusters[i].center);
-    detail::require_distance(name + "radius", clusters[i].radius);
-    for (const Vec2& p : clusters[i].points)
-      if (!p.allFinite()) throw Error(name + "points: must be finite");
-  }
+  for (std::size_t i = 0; i < clusters.size(); ++i) clusters[i].validate("cluster[" + std::to_string(i) + "]");
   if (scan) {
     detail::require_finite("scan pose x", scan->pose.x);
     detail::require_finite("scan pose y", scan->pose.y);

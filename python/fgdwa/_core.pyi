@@ -23,19 +23,19 @@ class Pose2:
     def theta(self) -> float:
         ...
     @theta.setter
-    def theta(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def theta(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def x(self) -> float:
         ...
     @x.setter
-    def x(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def x(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def y(self) -> float:
         ...
     @y.setter
-    def y(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def y(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
 class Twist:
     """
@@ -51,13 +51,13 @@ class Twist:
     def omega(self) -> float:
         ...
     @omega.setter
-    def omega(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def omega(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def v(self) -> float:
         ...
     @v.setter
-    def v(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def v(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
 class RobotLimits:
     """
@@ -79,43 +79,43 @@ class RobotLimits:
     def acc_omega(self) -> float:
         ...
     @acc_omega.setter
-    def acc_omega(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def acc_omega(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def acc_v(self) -> float:
         ...
     @acc_v.setter
-    def acc_v(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def acc_v(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def brake_omega(self) -> float:
         ...
     @brake_omega.setter
-    def brake_omega(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def brake_omega(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def brake_v(self) -> float:
         ...
     @brake_v.setter
-    def brake_v(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def brake_v(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def omega_max(self) -> float:
         ...
     @omega_max.setter
-    def omega_max(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def omega_max(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def v_max(self) -> float:
         ...
     @v_max.setter
-    def v_max(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def v_max(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def v_min(self) -> float:
         ...
     @v_min.setter
-    def v_min(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def v_min(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
 class RobotState:
     """
@@ -408,7 +408,7 @@ class CriticConfig:
     def weight(self) -> float:
         ...
     @weight.setter
-    def weight(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def weight(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
 class PathProjection:
     """

@@ -364,6 +364,12 @@ TEST(Navigator, RejectsBadInputNamingIt) {
   expect_error_naming(
       [&] { Navigator(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, lidar, nullptr, {}, flat, factors); },
       "passing_factors[2]");
+  expect_error_naming(
+      [&] {
+        Navigator(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, lidar, nullptr, {}, std::nullopt,
+                  factors);
+      },
+      "passing_factors[2]");
 }
 
 TEST(PlannerTerrain, RejectsRolloutsIntoGradeFourAndCapsTheWindow) {

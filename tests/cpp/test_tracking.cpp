@@ -554,6 +554,13 @@ TEST(Tracker, BadInputIsAnError) {
   EXPECT_TRUE(tracker.tracks().empty());  // a rejected update changes nothing
 }
 
+TEST(Cluster, ValidateNamesTheField) {
+  EXPECT_NO_THROW(cluster_at(Vec2(1.0, 2.0)).validate());
+  expect_error_naming([&] { cluster_at(Vec2(0.0, 0.0), NAN).validate(); }, "cluster radius");
+  expect_error_naming([&] { cluster_at(Vec2(0.0, NAN)).validate(); }, "cluster center y");
+  expect_error_naming([&] { cluster_at(Vec2(2e7, 0.0)).validate("detection"); }, "detection center x");
+}
+
 TEST(Tracker, CostOfOneScan) {
   // Printed, not asserted: segment + update for a 541-beam scan with two movers
   // and a pillar.

@@ -98,11 +98,16 @@ struct FuzzyRule {
 class MamdaniEngine {
  public:
   static constexpr int kDefaultResolution = 1001;
+  // Points of each output's defuzzification grid: a million is far finer than
+  // any term needs, and bounds the engine's memory.
+  static constexpr int kMinResolution = 3;
+  static constexpr int kMaxResolution = 1000000;
 
   // Throws fgdwa::Error on: no inputs, outputs or rules; a bad variable; a name
   // used twice; a rule naming an unknown variable or term, or an output in its
-  // IF part or an input in its THEN part; resolution < 3; an output term that
-  // is zero at every grid point (narrower than the grid spacing).
+  // IF part or an input in its THEN part; resolution outside [kMinResolution,
+  // kMaxResolution]; an output term that is zero at every grid point (narrower
+  // than the grid spacing).
   MamdaniEngine(std::vector<FuzzyVariable> inputs, std::vector<FuzzyVariable> outputs, std::vector<FuzzyRule> rules,
                 int resolution = kDefaultResolution);
 

@@ -56,5 +56,8 @@ inline constexpr double kMaxDtwCells = 1e9;
 inline constexpr long kMaxBeams = 100000;
 // Discs of one world.
 inline constexpr long kMaxDiscs = 1000000;
+// A count of events a parameter sets (hits that confirm a track, recoveries
+// in a row).
+inline constexpr long kMaxEventCount = 1000000;
 
 }  // namespace fgdwa::limits

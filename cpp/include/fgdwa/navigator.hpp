@@ -149,9 +149,10 @@ struct CycleRecord {
 class Navigator {
  public:
   // `map`: the known map (MapMode::Known) or the layout of the one to build
-  // (MapMode::Scan); `terrain` (optional) on the same layout. `lidar`: the
-  // robot's scanner, against which every scan is checked. `policy` null keeps
-  // the params' weights.
+  // (MapMode::Scan); `terrain` (optional) on the same layout, its grades
+  // scaling v_max by `passing_factors` (each in [0, 1], checked with or
+  // without terrain). `lidar`: the robot's scanner, against which every scan
+  // is checked. `policy` null keeps the params' weights.
   Navigator(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& planner,
             const OccupancyGrid& map, MapMode mode, const LidarParams& lidar,
             std::shared_ptr<const WeightPolicy> policy = nullptr, const NavigatorParams& params = {},

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <deque>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -49,6 +50,10 @@ struct Cluster {
   // A beam next to an end hit something nearer, or an end is the field of
   // view's: part of the object may be hidden, so its disc is less certain.
   bool occluded = false;
+  // Throws fgdwa::Error naming the field (after `name`) that is out of bounds:
+  // a centre beyond the query coordinates, a radius that is not a distance, a
+  // point that is not finite.
+  void validate(const std::string& name = "cluster") const;
 };
 
 // Cuts the finite hits of `scan` into clusters of neighbouring hits, in beam
