@@ -804,10 +804,11 @@ def test_points_field(points, res, spread):
     with np.errstate(over="ignore", invalid="ignore"):
         pts = points * spread
         cells_needed = np.prod(np.ptp(pts, axis=0) / res + 3) if len(pts) and finite(pts) and res > 0 else 1.0
-    if 2e6 < cells_needed <= 2e8 and within(res, MIN_RES, MAX_RES) and np.max(np.abs(pts)) <= MAX_COORD:
+    bound = MAX_QUERY + MAX_LENGTH  # sensed points reach a lidar's range past a robot on the query limit
+    if 2e6 < cells_needed <= 2e8 and within(res, MIN_RES, MAX_RES) and np.max(np.abs(pts)) <= bound:
         return  # a valid field of 10^7 cells: correct and slow, not the fuzz's to wait for
     out = attempt(fgdwa.points_field, pts, res)
-    if not finite(pts) or (len(pts) and np.max(np.abs(pts)) > MAX_COORD) or not within(res, MIN_RES, MAX_RES):
+    if not finite(pts) or (len(pts) and np.max(np.abs(pts)) > bound) or not within(res, MIN_RES, MAX_RES):
         if len(pts) or not within(res, MIN_RES, MAX_RES):
             expect(out, False, "points", "resolution")
         return
