@@ -12,6 +12,7 @@ using namespace fgdwa;
 using fgdwa::py_convert::critic_config;
 using fgdwa::py_convert::FloatArg;
 using fgdwa::py_convert::float_setter;
+using fgdwa::py_convert::refuse_unnamed_values;
 using fgdwa::py_convert::to_float;
 
 namespace fgdwa::py_convert {
@@ -100,9 +101,11 @@ class PythonCritic : public Critic {
 }  // namespace
 
 void init_critics(py::module_& m) {
-  py::enum_<CriticSense>(m, "CriticSense", "Whether a critic's larger raw scores are better (reward) or worse (cost).")
+  py::enum_<CriticSense> critic_sense_enum(m, "CriticSense", "Whether a critic's larger raw scores are better (reward) or worse (cost).");
+  critic_sense_enum
       .value("Reward", CriticSense::Reward)
       .value("Cost", CriticSense::Cost);
+  refuse_unnamed_values(critic_sense_enum);
   py::class_<CriticConfig>(m, "CriticConfig",
                            "A critic by registered name, its weight, and its own parameters "
                            "(e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).")

@@ -25,10 +25,12 @@ TerrainCost terrain_cost(double w_risk, py::handle risk) {
 }  // namespace
 
 void init_global_planner(py::module_& m) {
-  py::enum_<GlobalStatus>(m, "GlobalStatus", "Outcome of a global planning query.")
+  py::enum_<GlobalStatus> global_status_enum(m, "GlobalStatus", "Outcome of a global planning query.");
+  global_status_enum
       .value("Found", GlobalStatus::Found)
       .value("NoPath", GlobalStatus::NoPath)
       .value("Timeout", GlobalStatus::Timeout);
+  refuse_unnamed_values(global_status_enum);
 
   py::class_<GlobalPlan>(m, "GlobalPlan", "A global planner's result: status, (n, 2) path, cost, planning time (s).")
       .def_readonly("status", &GlobalPlan::status)

@@ -27,7 +27,8 @@ PassingFactors passing_factors_from(py::handle obj) {
 }  // namespace
 
 void init_navigator(py::module_& m) {
-  py::enum_<NavigatorMode>(m, "NavigatorMode", "What the navigator is doing this cycle.")
+  py::enum_<NavigatorMode> navigator_mode_enum(m, "NavigatorMode", "What the navigator is doing this cycle.");
+  navigator_mode_enum
       .value("Following", NavigatorMode::Following)
       .value("Replanning", NavigatorMode::Replanning)
       .value("BackingUp", NavigatorMode::BackingUp)
@@ -35,10 +36,13 @@ void init_navigator(py::module_& m) {
       .value("Waiting", NavigatorMode::Waiting)
       .value("GoalReached", NavigatorMode::GoalReached)
       .value("Failed", NavigatorMode::Failed);
-  py::enum_<FailureReason>(m, "FailureReason", "Why the navigator gave up.")
+  refuse_unnamed_values(navigator_mode_enum);
+  py::enum_<FailureReason> failure_reason_enum(m, "FailureReason", "Why the navigator gave up.");
+  failure_reason_enum
       .value("None_", FailureReason::None)
       .value("NoGlobalPath", FailureReason::NoGlobalPath)
       .value("RecoveriesExhausted", FailureReason::RecoveriesExhausted);
+  refuse_unnamed_values(failure_reason_enum);
 
   py::class_<NavigatorParams>(m, "NavigatorParams", "Replanning and recovery settings of a Navigator (SPEC 13).")
       .def(py::init([](FloatArg path_margin, FloatArg replan_period, FloatArg stall_time, FloatArg stall_distance,

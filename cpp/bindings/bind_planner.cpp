@@ -60,17 +60,21 @@ Normalization normalization_from_string(const std::string& name) {
 }  // namespace
 
 void init_planner(py::module_& m) {
-  py::enum_<Status>(m, "Status", "Outcome of one control cycle.")
+  py::enum_<Status> status_enum(m, "Status", "Outcome of one control cycle.");
+  status_enum
       .value("Ok", Status::Ok)
       .value("NoAdmissibleVelocity", Status::NoAdmissibleVelocity)
       .value("GoalReached", Status::GoalReached)
       .value("Evading", Status::Evading);
-  py::enum_<RejectReason>(m, "RejectReason", "Why a sampled command was rejected.")
+  refuse_unnamed_values(status_enum);
+  py::enum_<RejectReason> reject_reason_enum(m, "RejectReason", "Why a sampled command was rejected.");
+  reject_reason_enum
       .value("None_", RejectReason::None)
       .value("Collision", RejectReason::Collision)
       .value("Terrain", RejectReason::Terrain)
       .value("Critic", RejectReason::Critic)
       .value("Moving", RejectReason::Moving);
+  refuse_unnamed_values(reject_reason_enum);
 
   py::class_<PlannerParams>(m, "PlannerParams", "Parameters of the local planner (SI units).")
       .def(py::init([](FloatArg dt, FloatArg sim_time, IntArg n_v, IntArg n_omega, const std::string& normalization,

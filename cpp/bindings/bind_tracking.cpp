@@ -105,10 +105,12 @@ void init_tracking(py::module_& m) {
       "Clusters of the scan's neighbouring hits, each with a fitted disc and box; beams whose mask entry is "
       "false are skipped (mask: one flag per beam, or None).");
 
-  py::enum_<TrackStatus>(m, "TrackStatus", "Where a track is in its life.")
+  py::enum_<TrackStatus> track_status_enum(m, "TrackStatus", "Where a track is in its life.");
+  track_status_enum
       .value("Tentative", TrackStatus::Tentative)
       .value("Confirmed", TrackStatus::Confirmed)
       .value("Lost", TrackStatus::Lost);
+  refuse_unnamed_values(track_status_enum);
 
   const TrackerParams td;
   py::class_<TrackerParams>(m, "TrackerParams",

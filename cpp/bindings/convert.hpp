@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "fgdwa/critics.hpp"
@@ -87,6 +88,28 @@ double to_float(const FloatArg& arg, const std::string& name);
 template <typename C>
 auto float_setter(double C::*field, const char* name) {
   return [field, name](C& object, FloatArg value) { object.*field = to_float(value, name); };
+}
+
+// Makes `E(value)` from Python refuse an int that names none of the enum's
+// members: pybind11's own constructor, replaced here, takes any value of the
+// underlying type and gives a member named "???". Call it after the last .value().
+template <typename E>
+void refuse_unnamed_values(py::enum_<E>& cls) {
+  std::vector<std::pair<long long, std::string>> members;
+  for (const auto& [name, member] : py::cast<py::dict>(cls.attr("__members__")))
+    members.emplace_back(static_cast<long long>(py::cast<E>(member)), py::str(name));
+  const std::string type = py::str(cls.attr("__name__"));
+  py::delattr(cls, "__init__");
+  cls.def(py::init([members, type](IntArg value) {
+            const long long v = to_int<long long>(value, type + " value");
+            std::string names;
+            for (const auto& [number, name] : members) {
+              if (number == v) return static_cast<E>(v);
+              names += (names.empty() ? "" : ", ") + std::to_string(number) + " (" + name + ")";
+            }
+            throw Error(type + " value = " + std::to_string(v) + ": must be one of " + names);
+          }),
+          py::arg("value"));
 }
 
 // An angle given in degrees, checked in degrees (lo <= degrees <= hi; `hi_open`:

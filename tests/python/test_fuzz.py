@@ -2375,6 +2375,22 @@ def test_fixed_negative_ints():
     expect(attempt(fgdwa.OmplPlanner, grid, fgdwa.Footprint.circle(0.1), max_iterations=-1), False, "max_iterations")
 
 
+ENUMS = ("Status", "RejectReason", "CriticSense", "GlobalStatus", "NavigatorMode", "FailureReason", "TrackStatus")
+
+
+# A fixed finding of the fuzz: an enum built from an int (fgdwa.Status(99)) took any value of its C++ type and gave
+# a member named "???"; -1 or 2**63 raised pybind11's TypeError
+@pytest.mark.parametrize("name", ENUMS)
+def test_fixed_enum_from_unnamed_int(name):
+    cls = getattr(fgdwa, name)
+    for member in cls.__members__.values():
+        out = attempt(cls, int(member))
+        assert out.ok and out.value == member, f"{out.call}: {out.value if out.ok else out.message}"
+    named = {int(m) for m in cls.__members__.values()}
+    for value in (max(named) + 1, -1, 2**63, 10**400):
+        expect(attempt(cls, value), False, f"{name} value")
+
+
 # A fixed finding of the fuzz: MamdaniEngine / paper_fuzzy_controller take any resolution >= 3: 2**31 - 1 allocates 16 GB per output (std::bad_alloc -> MemoryError, or the machine's memory) instead of FgdwaError
 def test_fixed_fuzzy_resolution_unbounded():
     assert run_limited("fgdwa.paper_fuzzy_controller(2**31 - 1)") == "FgdwaError"
