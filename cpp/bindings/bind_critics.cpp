@@ -22,11 +22,11 @@ CriticConfig critic_config(std::string name, double weight, const py::dict& para
     const auto key = py::str(kv.first).cast<std::string>();
     if (py::isinstance<py::str>(kv.second))
       c.options[key] = kv.second.cast<std::string>();
-    else if (py::isinstance<py::float_>(kv.second) || py::isinstance<py::int_>(kv.second))
-      c.params[key] = to_number(kv.second, "critic " + c.name + "." + key);
-    else
+    else if (py::isinstance<py::bool_>(kv.second) || !py::hasattr(kv.second, "__float__"))
       throw Error("critic " + c.name + "." + key + ": expected a number or a word, got " +
                   std::string(py::str(py::type::of(kv.second))));
+    else
+      c.params[key] = to_number(kv.second, "critic " + c.name + "." + key);
   }
   return c;
 }

@@ -15,28 +15,16 @@ using py_convert::FloatArg;
 using py_convert::IntArg;
 using py_convert::to_float;
 using py_convert::to_int;
+using py_convert::to_number;
+using py_convert::to_word;
 
 namespace {
 
 using MF = MembershipFunction;
 using DoubleArray = py::array_t<double, py::array::c_style>;
 
-double to_number(py::handle obj, const std::string& name) {
-  if (py::isinstance<py::bool_>(obj) || !(py::isinstance<py::float_>(obj) || py::isinstance<py::int_>(obj) ||
-                                          py::hasattr(obj, "__float__")))
-    throw Error(name + ": expected a number, got " + std::string(py::str(py::type::of(obj).attr("__name__"))));
-  if (py::isinstance<py::int_>(obj)) return py_convert::to_number(obj, name);  // names an int beyond a double
-  return obj.cast<double>();
-}
-
 int to_resolution(const IntArg& resolution) {
   return to_int<int>(resolution, "resolution", MamdaniEngine::kMinResolution, MamdaniEngine::kMaxResolution);
-}
-
-std::string to_name(py::handle obj, const std::string& name) {
-  if (!py::isinstance<py::str>(obj))
-    throw Error(name + ": expected a str, got " + std::string(py::str(py::type::of(obj).attr("__name__"))));
-  return obj.cast<std::string>();
 }
 
 // A float64 array of any shape, or an error naming `name`.
@@ -83,7 +71,7 @@ std::vector<FuzzyTerm> to_terms(py::handle terms, const std::string& variable) {
   const std::string field = "variable " + variable + " terms";
   std::vector<FuzzyTerm> out;
   const auto add = [&](py::handle name, py::handle mf) {
-    const std::string term = to_name(name, field + " name");
+    const std::string term = to_word(name, field + " name");
     if (!py::isinstance<MF>(mf))
       throw Error(field + "['" + term + "']: expected a MembershipFunction, got " +
                   std::string(py::str(py::type::of(mf).attr("__name__"))));
@@ -117,7 +105,7 @@ std::vector<FuzzyClause> to_clauses(py::handle clauses, const std::string& field
   std::vector<FuzzyClause> out;
   if (py::isinstance<py::dict>(clauses)) {
     for (auto item : clauses.cast<py::dict>())
-      out.push_back({to_name(item.first, field + " variable"), to_name(item.second, field + " term")});
+      out.push_back({to_word(item.first, field + " variable"), to_word(item.second, field + " term")});
     return out;
   }
   if (py::isinstance<py::str>(clauses) || !py::hasattr(clauses, "__iter__"))
@@ -126,7 +114,7 @@ std::vector<FuzzyClause> to_clauses(py::handle clauses, const std::string& field
     if (!py::isinstance<py::sequence>(item) || py::isinstance<py::str>(item) || py::len(item) != 2)
       throw Error(field + ": expected (variable, term) pairs, got " + std::string(py::repr(item)));
     auto pair = item.cast<py::sequence>();
-    out.push_back({to_name(pair[0], field + " variable"), to_name(pair[1], field + " term")});
+    out.push_back({to_word(pair[0], field + " variable"), to_word(pair[1], field + " term")});
   }
   return out;
 }
@@ -254,7 +242,7 @@ void init_fuzzy(py::module_& m) {
                             "(a dict {name: MembershipFunction}, in order). Names are letters, digits "
                             "and '_'. Every term must reach a positive degree inside the domain.")
       .def(py::init([](py::handle name, py::handle domain, py::handle terms) {
-             const std::string n = to_name(name, "variable name");
+             const std::string n = to_word(name, "variable name");
              const auto [lo, hi] = to_domain(domain, n);
              FuzzyVariable v{n, lo, hi, to_terms(terms, n)};
              v.validate();

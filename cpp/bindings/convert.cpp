@@ -50,12 +50,15 @@ std::string type_name(py::handle obj) { return py::str(py::type::of(obj).attr("_
 }  // namespace
 
 double to_number(py::handle obj, const std::string& name) {
-  if (!(py::isinstance<py::float_>(obj) || py::isinstance<py::int_>(obj)))
+  // A bool is an int to Python, but never the number a user meant.
+  if (py::isinstance<py::bool_>(obj) ||
+      !(py::isinstance<py::float_>(obj) || py::isinstance<py::int_>(obj) || py::hasattr(obj, "__float__")))
     throw Error(name + ": expected a number, got " + type_name(obj));
   const double value = PyFloat_AsDouble(obj.ptr());
   if (value == -1.0 && PyErr_Occurred()) {
     PyErr_Clear();
-    throw Error(name + " = " + int_text(obj) + ": too large for a float");
+    if (py::isinstance<py::int_>(obj)) throw Error(name + " = " + int_text(obj) + ": too large for a float");
+    throw Error(name + ": expected a number, got " + type_name(obj) + " whose __float__ failed");
   }
   return value;
 }

@@ -239,3 +239,16 @@ def test_degree_arguments_are_reported_in_degrees(make, field):
 def test_tiny_control_period_names_the_bound():
     with raises(r"dt = 1e-09: must lie in \[1e-04, 10\]"):
         fgdwa.PlannerParams(dt=1e-9)
+
+
+def test_numbers_in_python_containers():
+    """A critic's weight or parameter given in a list or dict: a numpy scalar is a number, a bool is not."""
+    params = fgdwa.PlannerParams(critics=[("heading", np.float32(0.5)), ("clearance", 0.15, {"cap": np.float32(1.5)}),
+                                          ("velocity", 1.0)])
+    assert params.critics[0].weight == 0.5 and params.critics[1].params["cap"] == 1.5
+    with pytest.raises(fgdwa.FgdwaError, match="weight of 'heading'.*bool"):
+        fgdwa.PlannerParams(critics=[("heading", True)])
+    with pytest.raises(fgdwa.FgdwaError, match="critic clearance.cap.*bool"):
+        fgdwa.PlannerParams(critics=[("clearance", 1.0, {"cap": False})])
+    with pytest.raises(fgdwa.FgdwaError, match="too large for a float"):
+        fgdwa.PlannerParams(critics=[("heading", 10**400)])
