@@ -487,12 +487,35 @@ double DistanceField::distance(const Vec2& p) const {
   const int rows = grid_.rows(), cols = grid_.cols();
   const double gx = (p.x() - grid_.origin().x()) * inverse_resolution_;
   const double gy = (p.y() - grid_.origin().y()) * inverse_resolution_;
-  const auto square_distance = [&](const Vec2& o) {
-    const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
-    const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
+  // Squared distance from a to the obstacle square centred at o.
+  const auto square_distance_from = [&](const Vec2& a, const Vec2& o) {
+    const double dx = std::max(std::abs(a.x() - o.x()) - half, 0.0);
+    const double dy = std::max(std::abs(a.y() - o.y()) - half, 0.0);
     return dx * dx + dy * dy;
   };
+  const auto square_distance = [&](const Vec2& o) { return square_distance_from(p, o); };
+  // Outside the grid, the walk below starts from an upper bound: the distance
+  // to the grid's nearest point q, plus q's own (from q's cell), a little
+  // raised so that the obstacle giving it is still visited. Started from
+  // infinity, a point beside an edge with no obstacle near it walked line
+  // after line before the gap alone beat the best.
+  const auto inside_cell = [&](double x, double y) {
+    return grid_.index(std::min(static_cast<int>(y), rows - 1), std::min(static_cast<int>(x), cols - 1));
+  };
+  // The squared distance from a, in or on the edge of the cell, to the nearest obstacle: from the cell's candidates.
+  const auto cell_best = [&](std::size_t cell, const Vec2& a) {
+    const CellCandidates& near = candidates_[cell];
+    double b = std::min(square_distance_from(a, Vec2(near.x0, near.y0)), square_distance_from(a, Vec2(near.x1, near.y1)));
+    for (std::uint32_t k = 0; k < near.more_count; ++k) b = std::min(b, square_distance_from(a, more_[near.more + k]));
+    return b;
+  };
   double best = kInf;
+  if (gx < 0.0 || gx > cols || gy < 0.0 || gy > rows) {
+    const double qx = std::clamp(gx, 0.0, static_cast<double>(cols)), qy = std::clamp(gy, 0.0, static_cast<double>(rows));
+    const Vec2 q(grid_.origin().x() + qx * grid_.resolution(), grid_.origin().y() + qy * grid_.resolution());
+    const double bound = (p - q).norm() + std::sqrt(cell_best(inside_cell(qx, qy), q));
+    best = bound * bound * (1.0 + 1e-9) + 1e-300;
+  }
   // Lines (rows or columns) taken outward from the one nearest p, each
   // through `candidate(line)`, until a line's gap alone (its distance from p
   // across the lines, `across` in cells) is no nearer than the best so far:
@@ -548,10 +571,7 @@ double DistanceField::distance(const Vec2& p) const {
             [&](int c) { best = std::min(best, square_distance(grid_.cell_center(outermost[c], c))); });
   } else {
     // Inside the grid (its far edges included): the candidates of p's cell.
-    const std::size_t cell = grid_.index(std::min(static_cast<int>(gy), rows - 1), std::min(static_cast<int>(gx), cols - 1));
-    const CellCandidates& near = candidates_[cell];
-    best = std::min(square_distance(Vec2(near.x0, near.y0)), square_distance(Vec2(near.x1, near.y1)));
-    for (std::uint32_t k = 0; k < near.more_count; ++k) best = std::min(best, square_distance(more_[near.more + k]));
+    best = cell_best(inside_cell(gx, gy), p);
   }
   return std::sqrt(best);
 }
