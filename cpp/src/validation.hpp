@@ -141,18 +141,18 @@ inline void require_field_point(std::string_view field, const Vec2& p) {
   require_magnitude(std::string(field) + " theta", pose.theta, limits::kMaxAngle);
 }
 
+// A pose whose position lies within `bound` (m) and whose heading is finite and bounded.
+inline void require_pose_within(std::string_view field, const Pose2& pose, double bound) {
+  if (std::abs(pose.x) <= bound && std::abs(pose.y) <= bound && std::abs(pose.theta) <= limits::kMaxAngle) return;
+  fail_pose(field, pose, bound);
+}
+
 inline void require_pose(std::string_view field, const Pose2& pose) {
-  if (std::abs(pose.x) <= limits::kMaxCoordinate && std::abs(pose.y) <= limits::kMaxCoordinate &&
-      std::abs(pose.theta) <= limits::kMaxAngle)
-    return;
-  fail_pose(field, pose, limits::kMaxCoordinate);
+  require_pose_within(field, pose, limits::kMaxCoordinate);
 }
 
 inline void require_query_pose(std::string_view field, const Pose2& pose) {
-  if (std::abs(pose.x) <= limits::kMaxQueryCoordinate && std::abs(pose.y) <= limits::kMaxQueryCoordinate &&
-      std::abs(pose.theta) <= limits::kMaxAngle)
-    return;
-  fail_pose(field, pose, limits::kMaxQueryCoordinate);
+  require_pose_within(field, pose, limits::kMaxQueryCoordinate);
 }
 
 // Every point of an array, in one branch-free pass for the common case; the
