@@ -43,9 +43,7 @@ std::array<double, N> fixed(py::handle obj, const std::string& name) {
   for (std::size_t i = 0; i < N; ++i) out[i] = a.data()[i];
   return out;
 }
-}  // namespace
 
-namespace {
 std::string type_name(py::handle obj) { return py::str(py::type::of(obj).attr("__name__")); }
 }  // namespace
 
