@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 import os
 import reprlib
+import contextlib
 import zipfile
 from pathlib import Path
 from typing import Any, Optional, Union
@@ -261,21 +262,31 @@ def npy_shape(path: Union[str, os.PathLike], where: str, max_bytes: Optional[int
         return _npy_header(handle, where, MAX_ARRAY_BYTES if max_bytes is None else max_bytes)
 
 
-def load_npy(path: Union[str, os.PathLike], where: str, max_bytes: Optional[int] = None) -> np.ndarray:
-    """A .npy array of at most ``max_bytes`` bytes (default MAX_ARRAY_BYTES), its size read
-    from the header first; no pickled objects."""
-    limit = MAX_ARRAY_BYTES if max_bytes is None else max_bytes
+@contextlib.contextmanager
+def unreadable_as_error(where: str, kind: str, also: tuple = ()):
+    """Turns what the file system or numpy raise on a missing or unreadable file, and the
+    exception types ``also`` (a damaged archive's), into FgdwaError naming ``where``
+    ("no such file", "not a readable ``kind`` (why)"); FgdwaError passes."""
     try:
-        with open(path, "rb") as handle:
-            _npy_header(handle, where, limit)
-            handle.seek(0)
-            return np.lib.format.read_array(handle, allow_pickle=False)
+        yield
     except FgdwaError:
         raise
     except FileNotFoundError:
         raise FgdwaError(f"{where}: no such file") from None
     except (OSError, ValueError, EOFError) as error:
-        raise FgdwaError(f"{where}: not a readable .npy file ({clip(error)})") from None
+        raise FgdwaError(f"{where}: not a readable {kind} ({clip(error)})") from None
+    except also as error:
+        raise FgdwaError(f"{where}: not a readable {kind} ({type(error).__name__}: {clip(error)})") from None
+
+
+def load_npy(path: Union[str, os.PathLike], where: str, max_bytes: Optional[int] = None) -> np.ndarray:
+    """A .npy array of at most ``max_bytes`` bytes (default MAX_ARRAY_BYTES), its size read
+    from the header first; no pickled objects."""
+    limit = MAX_ARRAY_BYTES if max_bytes is None else max_bytes
+    with unreadable_as_error(where, ".npy file"), open(path, "rb") as handle:
+        _npy_header(handle, where, limit)
+        handle.seek(0)
+        return np.lib.format.read_array(handle, allow_pickle=False)
 
 
 def npz_names(archive: zipfile.ZipFile) -> list:

@@ -33,7 +33,7 @@ import numpy as np
 
 from fgdwa import file_limits as limits
 from fgdwa._core import FgdwaError, OccupancyGrid
-from fgdwa.file_limits import clip, npz_names, read_npz_member
+from fgdwa.file_limits import npz_names, read_npz_member, unreadable_as_error
 
 # --- the format's constants (docs/barn.md) ----------------------------------------
 RESOLUTION = 0.15  # m per cell; also the spacing of the challenge's cylinders
@@ -243,7 +243,8 @@ def load_barn(path: Union[str, os.PathLike]) -> BarnDataset:
     """
     name = str(path)
     not_barn = f"{name}: not a barn.npz file (expected an .npz archive with keys {', '.join(SHARED_KEYS)})"
-    try:
+    # Exception: zipfile.BadZipFile, zlib.error and friends from a damaged archive.
+    with unreadable_as_error(name, ".npz file", also=(Exception,)):
         if not zipfile.is_zipfile(path):
             with open(path, "rb") as handle:
                 npy = handle.read(len(np.lib.format.MAGIC_PREFIX)) == np.lib.format.MAGIC_PREFIX
@@ -267,14 +268,6 @@ def load_barn(path: Union[str, os.PathLike]) -> BarnDataset:
                     raise FgdwaError(f"{name}: missing key '{key}': world {int(wid)} is in world_ids but has no "
                                      f"reference path")
                 arrays[key] = read_npz_member(archive, key, name)
-    except FgdwaError:
-        raise
-    except FileNotFoundError:
-        raise FgdwaError(f"{name}: no such file") from None
-    except (OSError, ValueError, EOFError) as error:
-        raise FgdwaError(f"{name}: not a readable .npz file ({clip(error)})") from None
-    except Exception as error:  # zipfile.BadZipFile, zlib.error and friends from a damaged archive
-        raise FgdwaError(f"{name}: not a readable .npz file ({type(error).__name__}: {clip(error)})") from None
     _check_arrays(name, arrays, keys)
     return BarnDataset(name, arrays)
 
