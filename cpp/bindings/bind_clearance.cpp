@@ -26,7 +26,7 @@ void init_clearance(py::module_& m) {
       .def_readonly("radius", &Disc::radius)
       .def_readonly("growth", &Disc::growth)
       .def(
-          "radius_at", [](const Disc& d, FloatArg t) { return std::max(d.radius_at(to_time(to_float(t, "t"), "t")), 0.0); },
+          "radius_at", [](const Disc& d, FloatArg t) { return d.radius_at(to_time(to_float(t, "t"), "t")); },
           py::arg("t"), "The radius t seconds ahead (for a t in the past, never below 0).")
       .def_property_readonly("velocity", [](const Disc& d) { return py::make_tuple(d.velocity.x(), d.velocity.y()); })
       .def("center_at", [](const Disc& d, FloatArg t) {

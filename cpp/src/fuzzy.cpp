@@ -187,6 +187,7 @@ int FuzzyVariable::term_index(const std::string& term) const {
 }
 
 double FuzzyVariable::membership(const std::string& term, double x) const {
+  if (std::isnan(x)) throw Error("variable " + name + " x = nan: must be a number");
   const int i = term_index(term);
   if (i < 0) throw Error("variable " + name + " has no term '" + term + "' (terms: " + term_names(*this) + ")");
   return terms[static_cast<std::size_t>(i)].membership(x);

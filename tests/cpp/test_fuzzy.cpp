@@ -138,6 +138,13 @@ TEST(FuzzyVariable, UniformPartitionIsThePapersShapes) {
   EXPECT_DOUBLE_EQ(v.membership("M", 1.25), 0.5);
   EXPECT_EQ(v.term_index("L"), 2);
   EXPECT_EQ(v.term_index("X"), -1);
+  // NaN has no degree: refused, naming the variable.
+  try {
+    v.membership("S", std::numeric_limits<double>::quiet_NaN());
+    FAIL() << "NaN accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("variable D x = nan"), std::string::npos) << e.what();
+  }
   expect_error_naming([&] { v.membership("X", 1.0); }, "no term 'X'");
   const FuzzyVariable five = uniform_partition("v", -1.0, 1.0, {"a", "b", "c", "d", "e"});
   EXPECT_EQ(five.terms[1].membership.to_string(), "triangle(-1, -0.5, 0)");

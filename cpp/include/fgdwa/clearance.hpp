@@ -23,7 +23,8 @@ struct Disc {
   Vec2 center_at(double t) const { return center + t * velocity; }
   // Whether it moves or grows: otherwise it is a static obstacle.
   bool moves() const { return growth > 0.0 || !velocity.isZero(); }
-  double radius_at(double t) const { return radius + growth * t; }
+  // Never below 0, for a time past as well.
+  double radius_at(double t) const { return std::max(radius + growth * t, 0.0); }
   void validate() const;
 };
 

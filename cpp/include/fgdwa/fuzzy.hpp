@@ -38,6 +38,7 @@ struct MembershipFunction {
   static MembershipFunction trapezoid(double a, double b, double c, double d);
   static MembershipFunction gaussian(double mean, double sigma);
 
+  // NaN in, NaN out: the engine and FuzzyVariable::membership refuse NaN before it gets here.
   double operator()(double x) const;
   // How many entries of `params` the shape uses (3, 4 or 2).
   std::size_t n_params() const;
@@ -63,7 +64,7 @@ struct FuzzyVariable {
 
   // Index of the term called `term`, or -1.
   int term_index(const std::string& term) const;
-  // Degree of `x` (not clamped) in the term called `term`; throws on an unknown term.
+  // Degree of `x` (not clamped) in the term called `term`; throws on an unknown term or a NaN x.
   double membership(const std::string& term, double x) const;
   // Names: letters, digits and '_', not starting with a digit. Every term must be
   // valid, uniquely named, and reach a positive degree inside [lo, hi].
