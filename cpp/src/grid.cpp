@@ -494,11 +494,6 @@ double DistanceField::distance(const Vec2& p) const {
     return dx * dx + dy * dy;
   };
   const auto square_distance = [&](const Vec2& o) { return square_distance_from(p, o); };
-  // Outside the grid, the walk below starts from an upper bound: the distance
-  // to the grid's nearest point q, plus q's own (from q's cell), a little
-  // raised so that the obstacle giving it is still visited. Started from
-  // infinity, a point beside an edge with no obstacle near it walked line
-  // after line before the gap alone beat the best.
   const auto inside_cell = [&](double x, double y) {
     return grid_.index(std::min(static_cast<int>(y), rows - 1), std::min(static_cast<int>(x), cols - 1));
   };
@@ -511,6 +506,11 @@ double DistanceField::distance(const Vec2& p) const {
   };
   double best = kInf;
   if (gx < 0.0 || gx > cols || gy < 0.0 || gy > rows) {
+    // Outside the grid, the walk below starts from an upper bound: the distance
+    // to the grid's nearest point q, plus q's own (from q's cell), a little
+    // raised so that the obstacle giving it is still visited. Started from
+    // infinity, a point beside an edge with no obstacle near it walked line
+    // after line before the gap alone beat the best.
     const double qx = std::clamp(gx, 0.0, static_cast<double>(cols)), qy = std::clamp(gy, 0.0, static_cast<double>(rows));
     const Vec2 q(grid_.origin().x() + qx * grid_.resolution(), grid_.origin().y() + qy * grid_.resolution());
     const double bound = (p - q).norm() + std::sqrt(cell_best(inside_cell(qx, qy), q));

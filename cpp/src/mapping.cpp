@@ -19,8 +19,6 @@ void OccupancyParams::validate() const {
   detail::require_magnitude("occupancy clamp_min", clamp_min, kMaxLogOdds);
   detail::require_magnitude("occupancy clamp_max", clamp_max, kMaxLogOdds);
   if (miss >= 0.0) throw Error("occupancy miss = " + std::to_string(miss) + ": must be < 0 (a pass is evidence of free space)");
-  detail::require_finite("occupancy clamp_min", clamp_min);
-  detail::require_finite("occupancy clamp_max", clamp_max);
   detail::require_finite("occupancy occupied", occupied);
   detail::require_finite("occupancy free", free);
   if (!(clamp_min <= free && free < occupied && occupied <= clamp_max))

@@ -32,7 +32,7 @@ void Scan::validate() const {
                                  "a scan has at most " + std::to_string(limits::kMaxBeams) + " beams"));
   for (std::size_t i = 0; i < ranges.size(); ++i)
     if (!(ranges[i] >= 0.0) || (std::isfinite(ranges[i]) && ranges[i] > limits::kMaxLength))
-      throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", ranges[i], "must lie in [0, 1e6] (+inf: no hit)"));
+      throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", ranges[i], "must lie in [0, " + detail::format_number(limits::kMaxLength) + "] (+inf: no hit)"));
 }
 
 std::vector<Vec2> Scan::hit_points() const {
