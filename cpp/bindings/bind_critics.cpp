@@ -11,7 +11,7 @@ namespace py = pybind11;
 using namespace fgdwa;
 using fgdwa::py_convert::critic_config;
 using fgdwa::py_convert::FloatArg;
-using fgdwa::py_convert::float_setter;
+using fgdwa::py_convert::float_fields;
 using fgdwa::py_convert::refuse_unnamed_values;
 using fgdwa::py_convert::to_float;
 
@@ -106,9 +106,11 @@ void init_critics(py::module_& m) {
       .value("Reward", CriticSense::Reward)
       .value("Cost", CriticSense::Cost);
   refuse_unnamed_values(critic_sense_enum);
-  py::class_<CriticConfig>(m, "CriticConfig",
-                           "A critic by registered name, its weight, and its own parameters "
-                           "(e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).")
+  py::class_<CriticConfig> config_class(m, "CriticConfig",
+                                        "A critic by registered name, its weight, and its own parameters "
+                                        "(e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).");
+  float_fields(config_class, {{"weight", &CriticConfig::weight}});
+  config_class
       .def(py::init([](std::string name, FloatArg weight, py::dict params) {
              CriticConfig c = critic_config(std::move(name), to_float(weight, "weight"), params);
              make_critic(c);  // validates name, weight and parameters now
@@ -117,8 +119,6 @@ void init_critics(py::module_& m) {
            py::arg("name"), py::arg("weight") = 1.0, py::arg("params") = py::dict(),
            "params: numbers (e.g. {'cap': 2.0}) and words (e.g. {'sampling': 'segment'}).")
       .def_readwrite("name", &CriticConfig::name)
-      .def_property("weight", [](const CriticConfig& c) { return c.weight; },
-                    float_setter(&CriticConfig::weight, "weight"))
       .def_property_readonly("params", [](const CriticConfig& c) {
         py::dict out;
         for (const auto& [k, v] : c.params) out[py::str(k)] = v;

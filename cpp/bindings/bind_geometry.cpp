@@ -10,14 +10,13 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_geometry(py::module_& m) {
-  py::class_<Pose2>(m, "Pose2", "A planar pose: x, y in metres and theta in radians.")
+  py::class_<Pose2> pose_class(m, "Pose2", "A planar pose: x, y in metres and theta in radians.");
+  float_fields(pose_class, {{"x", &Pose2::x}, {"y", &Pose2::y}, {"theta", &Pose2::theta}});
+  pose_class
       .def(py::init([](FloatArg x, FloatArg y, FloatArg theta) {
              return Pose2{to_float(x, "x"), to_float(y, "y"), to_float(theta, "theta")};
            }),
            py::arg("x") = 0.0, py::arg("y") = 0.0, py::arg("theta") = 0.0)
-      .def_property("x", [](const Pose2& p) { return p.x; }, float_setter(&Pose2::x, "x"))
-      .def_property("y", [](const Pose2& p) { return p.y; }, float_setter(&Pose2::y, "y"))
-      .def_property("theta", [](const Pose2& p) { return p.theta; }, float_setter(&Pose2::theta, "theta"))
       .def("__iter__", [](const Pose2& p) { return py::iter(py::make_tuple(p.x, p.y, p.theta)); })
       .def("__repr__", [](const Pose2& p) {
         std::ostringstream s;
@@ -25,11 +24,11 @@ void init_geometry(py::module_& m) {
         return s.str();
       });
 
-  py::class_<Twist>(m, "Twist", "A velocity command: v in m/s forward, omega in rad/s counter-clockwise.")
+  py::class_<Twist> twist_class(m, "Twist", "A velocity command: v in m/s forward, omega in rad/s counter-clockwise.");
+  float_fields(twist_class, {{"v", &Twist::v}, {"omega", &Twist::omega}});
+  twist_class
       .def(py::init([](FloatArg v, FloatArg omega) { return Twist{to_float(v, "v"), to_float(omega, "omega")}; }),
            py::arg("v") = 0.0, py::arg("omega") = 0.0)
-      .def_property("v", [](const Twist& t) { return t.v; }, float_setter(&Twist::v, "v"))
-      .def_property("omega", [](const Twist& t) { return t.omega; }, float_setter(&Twist::omega, "omega"))
       .def("__iter__", [](const Twist& t) { return py::iter(py::make_tuple(t.v, t.omega)); })
       .def("__repr__", [](const Twist& t) {
         std::ostringstream s;

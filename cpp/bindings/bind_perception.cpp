@@ -72,10 +72,14 @@ void init_perception(py::module_& m) {
       .def_property(
           "pose", [](const Scan& s) { return s.pose; },
           [](Scan& s, py::handle pose) {
-            Scan moved = s;
-            moved.pose = to_pose(pose, "pose");
-            moved.validate();
-            s.pose = moved.pose;
+            const Pose2 before = s.pose;
+            s.pose = to_pose(pose, "pose");
+            try {
+              s.validate();
+            } catch (...) {
+              s.pose = before;
+              throw;
+            }
           },
           "Where the scan was taken, as the robot believes: hit_points and the map place the ranges from it.")
       .def_readonly("angle_min", &Scan::angle_min)

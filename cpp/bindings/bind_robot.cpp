@@ -12,9 +12,17 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_robot(py::module_& m) {
-  py::class_<RobotLimits>(m, "RobotLimits",
-                          "Velocity and acceleration limits of a differential-drive robot (SI units). "
-                          "brake_v / brake_omega of 0 mean: equal to the accelerations.")
+  py::class_<RobotLimits> limits_class(m, "RobotLimits",
+                                       "Velocity and acceleration limits of a differential-drive robot (SI units). "
+                                       "brake_v / brake_omega of 0 mean: equal to the accelerations.");
+  float_fields(limits_class, {{"v_min", &RobotLimits::v_min},
+                              {"v_max", &RobotLimits::v_max},
+                              {"omega_max", &RobotLimits::omega_max},
+                              {"acc_v", &RobotLimits::acc_v},
+                              {"acc_omega", &RobotLimits::acc_omega},
+                              {"brake_v", &RobotLimits::brake_v},
+                              {"brake_omega", &RobotLimits::brake_omega}});
+  limits_class
       .def(py::init([](FloatArg v_min, FloatArg v_max, FloatArg omega_max, FloatArg acc_v, FloatArg acc_omega,
                        FloatArg brake_v, FloatArg brake_omega) {
              RobotLimits l{to_float(v_min, "v_min"),     to_float(v_max, "v_max"),
@@ -26,20 +34,6 @@ void init_robot(py::module_& m) {
            }),
            py::arg("v_min") = 0.0, py::arg("v_max") = 1.2, py::arg("omega_max") = 1.0, py::arg("acc_v") = 1.0,
            py::arg("acc_omega") = 2.0, py::arg("brake_v") = 0.0, py::arg("brake_omega") = 0.0)
-      .def_property("v_min", [](const RobotLimits& l) { return l.v_min; },
-                    float_setter(&RobotLimits::v_min, "v_min"))
-      .def_property("v_max", [](const RobotLimits& l) { return l.v_max; },
-                    float_setter(&RobotLimits::v_max, "v_max"))
-      .def_property("omega_max", [](const RobotLimits& l) { return l.omega_max; },
-                    float_setter(&RobotLimits::omega_max, "omega_max"))
-      .def_property("acc_v", [](const RobotLimits& l) { return l.acc_v; },
-                    float_setter(&RobotLimits::acc_v, "acc_v"))
-      .def_property("acc_omega", [](const RobotLimits& l) { return l.acc_omega; },
-                    float_setter(&RobotLimits::acc_omega, "acc_omega"))
-      .def_property("brake_v", [](const RobotLimits& l) { return l.brake_v; },
-                    float_setter(&RobotLimits::brake_v, "brake_v"))
-      .def_property("brake_omega", [](const RobotLimits& l) { return l.brake_omega; },
-                    float_setter(&RobotLimits::brake_omega, "brake_omega"))
       .def("braking_v", &RobotLimits::braking_v)
       .def("braking_omega", &RobotLimits::braking_omega)
       .def("validate", &RobotLimits::validate, "Raise FgdwaError naming the first bad field.")

@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <initializer_list>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -83,11 +84,14 @@ T to_int(const IntArg& arg, const std::string& name, T lo = std::numeric_limits<
 // `arg` as a double; an int too large for one is refused naming `name`.
 double to_float(const FloatArg& arg, const std::string& name);
 
-// The setter of a float field of C, for def_property (def_readwrite's takes a
-// double, so pybind11 refuses a huge int with a TypeError).
+// Float fields of C as read-write properties whose setter takes a FloatArg
+// (def_readwrite's takes a double, so pybind11 refuses a huge int with a TypeError).
 template <typename C>
-auto float_setter(double C::*field, const char* name) {
-  return [field, name](C& object, FloatArg value) { object.*field = to_float(value, name); };
+void float_fields(py::class_<C>& cls, std::initializer_list<std::pair<const char*, double C::*>> fields) {
+  for (const auto& [name, field] : fields)
+    cls.def_property(
+        name, [field = field](const C& object) { return object.*field; },
+        [field = field, name = name](C& object, FloatArg value) { object.*field = to_float(value, name); });
 }
 
 // Makes `E(value)` from Python refuse an int that names none of the enum's
