@@ -1493,11 +1493,17 @@ def params_valid(k):
 
 
 @st.composite
-def planner_kwargs(draw):
-    kw = dict(PARAM_DEFAULTS)
-    for name in sorted(draw(st.sets(st.sampled_from(sorted(kw)), max_size=3))):
-        kw[name] = draw(hi_(0, 30) if name in ("n_v", "n_omega") else hf(0.0, 5.0))
+def overridden(draw, defaults, ints, int_hi, float_hi, max_size):
+    """`defaults` with up to `max_size` entries redrawn: those named in `ints` as ints up to `int_hi`, the
+    others as floats up to `float_hi`."""
+    kw = dict(defaults)
+    for name in sorted(draw(st.sets(st.sampled_from(sorted(kw)), max_size=max_size))):
+        kw[name] = draw(hi_(0, int_hi) if name in ints else hf(0.0, float_hi))
     return kw
+
+
+def planner_kwargs():
+    return overridden(PARAM_DEFAULTS, ("n_v", "n_omega"), 30, 5.0, 3)
 
 
 @fuzz(300)
@@ -1624,12 +1630,8 @@ def nav_valid(k):
             and within(k["unknown_cost"], 0.0, 1e6))
 
 
-@st.composite
-def nav_kwargs(draw):
-    kw = dict(NAV_DEFAULTS)
-    for name in sorted(draw(st.sets(st.sampled_from(sorted(kw)), max_size=2))):
-        kw[name] = draw(hi_(0, 8) if name in ("max_recoveries", "record_top_k") else hf(0.0, 4.0))
-    return kw
+def nav_kwargs():
+    return overridden(NAV_DEFAULTS, ("max_recoveries", "record_top_k"), 8, 4.0, 2)
 
 
 @fuzz(100)
