@@ -100,7 +100,12 @@ void refine_piece(const DistanceField& field, const Vec2& a, double da, const Ve
   refine_piece(field, a, da, mid, dm, best);
 }
 
-double field_clearance(const DistanceField* field, const Footprint& footprint, const Pose2& pose) {
+// The footprint's clearance from the field's obstacles where it is below
+// `cutoff`; elsewhere a value from cutoff up to it. Both give the same bits
+// below the cutoff: the result is the least of the distances and piece bounds
+// the search reaches, and what a lower starting point prunes lies above it.
+double field_clearance(const DistanceField* field, const Footprint& footprint, const Pose2& pose,
+                       double cutoff = std::numeric_limits<double>::infinity()) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!field || !field->has_obstacles()) return kInf;
   if (footprint.is_circle()) return field->distance(pose.position()) - footprint.radius();
@@ -150,7 +155,7 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     if (std::isnan(sample.exact)) sample.exact = field->distance(sample.point);
     return sample.exact;
   };
-  double best = exact(samples[lowest]);
+  double best = samples[lowest].low < cutoff ? std::min(cutoff, exact(samples[lowest])) : cutoff;
   for (std::size_t j = 0; j < n; ++j)
     if (samples[j].low < best) best = std::min(best, exact(samples[j]));
   for (std::size_t j = 0; j < n; ++j) {
@@ -283,8 +288,12 @@ double FieldClearance::moving_clearance(const Footprint& footprint, const Pose2&
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
   detail::require_query_pose("pose", pose);
   detail::require_magnitude("t", t, limits::kMaxHorizon);
-  double best = field_clearance(field_.get(), footprint, pose);
-  if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose));
+  return clearance_below(footprint, pose, t, std::numeric_limits<double>::infinity());
+}
+
+double FieldClearance::clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const {
+  double best = field_clearance(field_.get(), footprint, pose, cutoff);
+  if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose, std::min(best, cutoff)));
   if (footprint.is_circle()) {
     if (!static_discs_.x.empty()) best = std::min(best, static_discs_.distance(pose.x, pose.y, footprint.radius()));
   } else {

@@ -310,6 +310,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
   bounds_.resize(static_cast<std::size_t>(n_steps_));
   exact_.resize(static_cast<std::size_t>(n_steps_));
+  at_least_.resize(static_cast<std::size_t>(n_steps_));
   // A footprint already over grade-4 cells may still leave: only its centre is held to them then.
   const bool terrain_centre_only = impassable_ && impassable_->clearance(footprint_, state.pose, 0.0) <= 0.0;
   const double cos_start = std::cos(state.pose.theta), sin_start = std::sin(state.pose.theta);
@@ -333,11 +334,28 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       for (int k = 0; k < n_steps_; ++k) exact_[static_cast<std::size_t>(k)] = bounds_[static_cast<std::size_t>(k)] - margin;
     else
       std::fill(exact_.begin(), exact_.end(), std::numeric_limits<double>::quiet_NaN());
+    std::fill(at_least_.begin(), at_least_.end(), -inf);
     const auto exact = [&](int k) {
       double& c = exact_[static_cast<std::size_t>(k)];
       if (std::isnan(c))
         c = fixed.clearance(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt) - margin;
       return c;
+    };
+    // min(clearance at pose k, cutoff): the source may stop short of the exact
+    // value once it is sure of the cutoff.
+    const auto below = [&](int k, double cutoff) {
+      double& c = exact_[static_cast<std::size_t>(k)];
+      double& reached = at_least_[static_cast<std::size_t>(k)];
+      if (std::isnan(c) && reached < cutoff) {
+        // A nanometre above the cutoff, so that a value the source stops at
+        // still reaches the cutoff after the margin is taken off.
+        const double raw_cutoff = cutoff + margin + 1e-9;
+        const double raw =
+            fixed.clearance_below(footprint_, poses[static_cast<std::size_t>(k)], (k + 1) * params_.dt, raw_cutoff);
+        if (raw < raw_cutoff) c = raw - margin;
+        else reached = cutoff;
+      }
+      return std::isnan(c) ? cutoff : std::min(c, cutoff);
     };
     double free_distance = inf;
     int last = n_steps_ - 1;  // the last pose reached: the first in contact, or the end
@@ -348,13 +366,15 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       const bool leaving_contact = k == 0 && start_clearance <= 0.0;
       if (bound > 0.0 && (leaving_contact || step.covered(previous_bound, bound)))
         continue;  // clear at pose k and on the way there
-      const double c = exact(k);
-      if (c > 0.0 && !leaving_contact) {
-        // The previous pose's bound, or its clearance if known, may already settle the step.
-        const double known = k == 0 ? start_clearance : exact_[static_cast<std::size_t>(k - 1)];
-        const double previous_low = std::isnan(known) ? previous_bound : known;
-        if (step.covered(previous_low, c)) continue;
-      }
+      // The previous pose's clearance if known, else what it is known to
+      // reach, may already settle the step with a little clearance at pose k:
+      // that much is all the check needs to know there.
+      const double known = k == 0 ? start_clearance : exact_[static_cast<std::size_t>(k - 1)];
+      const double previous_low =
+          std::isnan(known) ? std::max(previous_bound, at_least_[static_cast<std::size_t>(k - 1)]) : known;
+      double c = leaving_contact ? exact(k) : below(k, step.settling_clearance(previous_low));
+      if (c > 0.0 && !leaving_contact && step.covered(previous_low, c)) continue;
+      c = exact(k);
       const Pose2& from = k == 0 ? state.pose : poses[static_cast<std::size_t>(k - 1)];
       const bool clear = c > 0.0 && (leaving_contact || detail::step_clear(fixed, footprint_, step, from,
                                                                    k == 0 ? start_clearance : exact(k - 1),
@@ -378,7 +398,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     }
     double min_clearance = exact(first_guess);
     for (int k = 0; k <= last; ++k)
-      if (bounds_[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = std::min(min_clearance, exact(k));
+      if (bounds_[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = below(k, min_clearance);
     result_.min_clearance[i] = min_clearance + margin;
     result_.free_distance[i] = free_distance;
     RejectReason reason = detail::is_admissible_unchecked(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;

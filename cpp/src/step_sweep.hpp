@@ -4,6 +4,7 @@
 // halving the pieces they cannot vouch for.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/geometry.hpp"
@@ -51,6 +52,18 @@ struct StepSweep {
     const double a0 = c0 * (2.0 * rho + c0), a1 = c1 * (2.0 * rho + c1);  // the terms squared
     // (sqrt(a0) + sqrt(a1))^2 >= a0 + a1: most steps pass without a square root.
     return a0 + a1 > length * length || std::sqrt(a0) + std::sqrt(a1) > length;
+  }
+
+  // A clearance after the step from which on covered(c0, c1) holds (+inf:
+  // none, for c0 <= 0). Beyond turn_reach, c0 vouches for the turned placement
+  // and c1 has only to cover the rest of the drive; short of it, c1 must also
+  // vouch for the turned placement, a drive back from it. A micrometre above,
+  // for the rounding of the sums.
+  double settling_clearance(double c0) const {
+    if (!(c0 > 0.0)) return std::numeric_limits<double>::infinity();
+    const double length = relative(drive, 1.0);
+    const double need = c0 > turn_reach ? length - chord - (c0 - turn_reach) : length + turn_reach - c0;
+    return std::max(need, 0.0) + 1e-6;
   }
 
   // Whether the whole step, turn and drive, is clear given the clearances c0

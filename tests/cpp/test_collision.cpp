@@ -145,6 +145,45 @@ TEST_P(ClearanceAgreement, FieldNeverAboveFclAndWithinAFewMillimetres) {
 
 INSTANTIATE_TEST_SUITE_P(CircleAndRectangle, ClearanceAgreement, ::testing::Values(0, 1, 2));
 
+// The planner's query with a cutoff, which LocalPlanner alone may call.
+struct CutoffQueries : FieldClearance {
+  using FieldClearance::clearance_below;
+  using FieldClearance::FieldClearance;
+};
+
+// Below the cutoff the same bits as clearance(); at or above it, a value
+// between the cutoff and the clearance. With a sensed field beside the map,
+// since the second field's cutoff is the first one's answer.
+TEST(FieldClearance, ClearanceBelowACutoffIsTheClearanceBitForBit) {
+  const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
+  std::mt19937 rng(77);
+  const OccupancyGrid grid = test::random_rectangles(rng, 80, 80, 0.1, Vec2::Zero(), 0.12);
+  const OccupancyGrid sensed = test::random_cells(rng, 80, 80, 0.1, Vec2::Zero(), 0.01);
+  CutoffQueries world(std::make_shared<const DistanceField>(grid));
+  world.set_sensed(std::make_shared<const DistanceField>(sensed));
+  std::uniform_real_distribution<double> cutoff(-0.05, 0.4);
+  int below = 0, stopped = 0;
+  for (const Query& q : random_queries(rng, grid, 2000)) {
+    for (const Footprint& fp : {rectangle, Footprint::circle(0.2)}) {
+      const double exact = world.clearance(fp, q.pose, 0.0);
+      const double c = cutoff(rng);
+      const double answer = world.clearance_below(fp, q.pose, 0.0, c);
+      SCOPED_TRACE(::testing::Message() << "pose " << q.pose.x << "," << q.pose.y << "," << q.pose.theta << " cutoff "
+                                        << c << " exact " << exact << " answer " << answer);
+      if (exact < c) {
+        ASSERT_EQ(answer, exact);
+        ++below;
+      } else {
+        ASSERT_GE(answer, c);
+        ASSERT_LE(answer, exact);
+        stopped += answer < exact;
+      }
+    }
+  }
+  EXPECT_GE(below, 500);
+  EXPECT_GE(stopped, 500);  // the cutoff saved work
+}
+
 TEST(CollisionWorld, MovingDiscsMatchTheAnalyticDistance) {
   std::mt19937 rng(77);
   std::uniform_real_distribution<double> pos(-3.0, 3.0), vel(-1.0, 1.0), rad(0.0, 0.5), angle(-M_PI, M_PI),
@@ -245,7 +284,9 @@ TEST(FieldClearance, StillAndMovingDiscsGiveThePlainMinimumOverEveryDisc) {
       for (std::size_t k = 0; k < poses.size(); ++k) {
         const double exact = source.clearance(fp, poses[k], 0.1 * static_cast<double>(k + 1));
         EXPECT_LE(bounds[k], exact + 1e-12);
-        if (fp.is_circle()) EXPECT_EQ(bounds[k], exact);  // a circle's bound is its clearance
+        if (fp.is_circle()) {
+          EXPECT_EQ(bounds[k], exact);  // a circle's bound is its clearance
+        }
       }
     }
   }

@@ -71,6 +71,14 @@ class ClearanceSource {
     (void)footprint, (void)dt;
     std::fill(out, out + poses.size(), -std::numeric_limits<double>::infinity());
   }
+  // clearance() without the checks, bit for bit where it is below `cutoff`;
+  // elsewhere any value from cutoff up to the clearance. The planner often
+  // needs to know only that a pose is at least so clear, which a source may
+  // settle from cheap bounds without the exact value.
+  virtual double clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const {
+    (void)cutoff;
+    return clearance(footprint, pose, t);
+  }
 };
 
 // The footprint's distance to those of `discs` that move or grow, placed `t` seconds ahead.
@@ -102,6 +110,7 @@ class FieldClearance : public ClearanceSource {
 
  protected:
   void lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const override;
+  double clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const override;
 
  private:
   std::shared_ptr<const DistanceField> field_;

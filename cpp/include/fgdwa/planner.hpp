@@ -192,6 +192,7 @@ class LocalPlanner {
   std::vector<std::unique_ptr<Critic>> critics_;
   std::vector<Trajectory> rollouts_;
   std::vector<double> bounds_, exact_;
+  std::vector<double> at_least_;  // per pose: a clearance it is known to reach without its exact value
   std::vector<RolloutHeadings> headings_;  // per omega of the window
   std::vector<double> escape_;  // per sample: clearance to the movers at the end of moving_horizon
   // The velocity critic's index (none: past the end), and the weights this
