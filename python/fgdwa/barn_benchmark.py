@@ -39,7 +39,19 @@ from fgdwa.world import World
 BARN_PLANNERS = ("dwa", "gdwa", "sgdwa", "fgdwa", "dwb")
 OUTCOMES = ("success", "collision", "timeout")
 RUN_FIELDS = ("world", "planner", "mapping", "trial", "seed", "outcome", "success", "time", "score", "optimal_time",
-              "mileage", "min_clearance", "replans", "backing_up", "cycle_ms_mean", "cycle_ms_p95", "wall_time")
+              "mileage", "min_clearance", "replans", "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time")
+
+
+def run_timing(wall: float, cycle_times) -> dict:
+    """A run's cost per control cycle (ms): the Navigator's step (mean, 95th
+    percentile) and the simulator's own share, everything else the run's wall
+    time held (world, lidar, referee, set-up)."""
+    cycle_times = np.asarray(cycle_times, dtype=float)
+    if not len(cycle_times):
+        return {"cycle_ms_mean": float("nan"), "cycle_ms_p95": float("nan"), "sim_ms_mean": float("nan")}
+    return {"cycle_ms_mean": 1e3 * float(np.mean(cycle_times)),
+            "cycle_ms_p95": 1e3 * float(np.percentile(cycle_times, 95)),
+            "sim_ms_mean": 1e3 * max(0.0, wall - float(np.sum(cycle_times))) / len(cycle_times)}
 
 
 def check_sensing(owner: str, noise_std, dropout, latency) -> None:
@@ -214,7 +226,6 @@ def run_barn_task(task: BarnTask) -> BarnRun:
     # The challenge knows three outcomes; running out of steps is its timeout.
     outcome = result.outcome if result.outcome in OUTCOMES else "timeout"
     success = outcome == "success"
-    cycle_ms = 1e3 * result.cycle_times if len(result.cycle_times) else np.array([float("nan")])
     paths = result.paths if result.paths else ([] if result.global_path is None else [(0, result.global_path)])
     row = {
         "world": task.world_id, "planner": task.planner, "mapping": task.mapping, "trial": task.trial,
@@ -222,8 +233,7 @@ def run_barn_task(task: BarnTask) -> BarnRun:
         "score": barn_score(success, result.sim_time, task.optimal_time), "optimal_time": task.optimal_time,
         "mileage": result.mileage, "min_clearance": result.min_clearance,
         "replans": max(0, len(result.paths) - 1), "backing_up": result.statuses.count("BackingUp"),
-        "cycle_ms_mean": float(np.mean(cycle_ms)), "cycle_ms_p95": float(np.percentile(cycle_ms, 95)),
-        "wall_time": wall,
+        **run_timing(wall, result.cycle_times), "wall_time": wall,
     }
     grid = world.grid
     return BarnRun(row=row, cells=task.cells, extent=tuple(grid.extent), poses=result.poses, paths=paths,
@@ -256,7 +266,9 @@ def summarize(runs: Sequence[BarnRun], outcomes: Sequence[str] = OUTCOMES) -> di
         }
         if all("score" in r for r in rows):
             entry["mean_score"] = float(np.mean([r["score"] for r in rows]))
-        entry["cycle_ms_mean"] = float(np.nanmean([r["cycle_ms_mean"] for r in rows]))
+        for key in ("cycle_ms_mean", "sim_ms_mean"):
+            if all(key in r for r in rows):
+                entry[key] = float(np.nanmean([r[key] for r in rows]))
         table[planner] = entry
     return table
 
@@ -265,7 +277,8 @@ def format_table(summary: dict, title: str, outcomes: Sequence[str] = OUTCOMES) 
     """The terminal table of a :func:`summarize` summary: one line per planner."""
     scored = all("mean_score" in s for s in summary.values())
     header = f"{'planner':<14} {'n':>5}" + "".join(f" {o:>9}" for o in outcomes) + f" {'mean time':>10}"
-    header += f" {'mean score':>11}" * scored + f" {'cycle ms':>9}"
+    simulated = all("sim_ms_mean" in s for s in summary.values())
+    header += f" {'mean score':>11}" * scored + f" {'cycle ms':>9}" + f" {'sim ms':>7}" * simulated
     lines = [title, header]
     for planner, s in summary.items():
         mean_time = "-" if math.isnan(s["mean_time"]) else f"{s['mean_time']:.1f} s"
@@ -273,6 +286,8 @@ def format_table(summary: dict, title: str, outcomes: Sequence[str] = OUTCOMES) 
         if scored:
             line += f" {s['mean_score']:>11.3f}"
         line += f" {s['cycle_ms_mean']:>9.2f}"
+        if simulated:
+            line += f" {s['sim_ms_mean']:>7.2f}"
         lines.append(line)
     return "\n".join(lines)
 

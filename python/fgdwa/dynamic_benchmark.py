@@ -23,7 +23,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from fgdwa._core import FgdwaError, NavigatorParams
-from fgdwa.barn_benchmark import BarnRun, check_sensing, format_table, write_run_outputs
+from fgdwa.barn_benchmark import BarnRun, check_sensing, format_table, run_timing, write_run_outputs
 from fgdwa.datasets.barn import parse_world_selection
 from fgdwa.dynamic_fields import (DROPOUT, NOISE_STD, check_field_seed, check_level, closed_route, field_name,
                                   generate_field, write_field)
@@ -44,7 +44,7 @@ PLANNER_VARIANTS = MappingProxyType({
 })
 OUTCOMES = ("success", "collision", "timeout", "failed")
 RUN_FIELDS = ("level", "seed", "planner", "outcome", "success", "time", "mileage", "min_clearance", "replans",
-              "backing_up", "cycle_ms_mean", "cycle_ms_p95", "wall_time")
+              "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time")
 
 
 @dataclass(frozen=True)
@@ -119,13 +119,11 @@ def run_dynamic_task(task: DynamicTask) -> BarnRun:
     result = run_scenario(scenario, preset, task.seed, navigator=NavigatorParams(**overrides),
                           latency=task.setup.latency)
     wall = time.perf_counter() - tic
-    cycle_ms = 1e3 * result.cycle_times if len(result.cycle_times) else np.array([float("nan")])
     row = {
         "level": task.level, "seed": task.seed, "planner": task.planner, "outcome": result.outcome,
         "success": int(result.outcome == "success"), "time": result.sim_time, "mileage": result.mileage,
         "min_clearance": result.min_clearance, "replans": max(0, len(result.paths) - 1),
-        "backing_up": result.statuses.count("BackingUp"), "cycle_ms_mean": float(np.mean(cycle_ms)),
-        "cycle_ms_p95": float(np.percentile(cycle_ms, 95)), "wall_time": wall,
+        "backing_up": result.statuses.count("BackingUp"), **run_timing(wall, result.cycle_times), "wall_time": wall,
     }
     _, world, _ = trial_variation(scenario, task.seed)
     grid = world.grid

@@ -22,6 +22,7 @@ from fgdwa.barn_benchmark import (
     format_summary,
     run_barn,
     run_barn_task,
+    run_timing,
     summarize,
 )
 
@@ -82,6 +83,16 @@ def test_summary_rates_and_means_on_hand_made_rows():
     assert "a" in table and "0.500" in table and "-" in table
 
 
+def test_run_timing_splits_the_wall_time_between_navigator_and_simulator():
+    timing = run_timing(1.0, [0.1, 0.2, 0.3])
+    assert timing["cycle_ms_mean"] == pytest.approx(200.0)
+    assert timing["sim_ms_mean"] == pytest.approx(400.0 / 3)  # the 0.4 s left, over three cycles
+    assert timing["cycle_ms_p95"] == pytest.approx(290.0)
+    assert all(np.isnan(v) for v in run_timing(0.5, []).values())
+    # A clock that read the steps as longer than the run leaves no negative share.
+    assert run_timing(0.1, [0.2])["sim_ms_mean"] == 0.0
+
+
 def test_command_writes_runs_summary_and_failures(barn_file, tmp_path, capsys):
     from fgdwa.cli import main
 
@@ -89,7 +100,7 @@ def test_command_writes_runs_summary_and_failures(barn_file, tmp_path, capsys):
     assert main(["barn", "--data", str(barn_file), "--worlds", "0,6", "--planners", "fgdwa,dwb", "--map", "known",
                  "--executor", "serial", "--no-progress", "--out", str(out)]) == 0
     printed = capsys.readouterr().out
-    assert "fgdwa" in printed and "dwb" in printed and "mean score" in printed
+    assert "fgdwa" in printed and "dwb" in printed and "mean score" in printed and "sim ms" in printed
     with open(out / "runs.csv") as handle:
         rows = list(csv.DictReader(handle))
     assert [(r["world"], r["planner"]) for r in rows] == [("0", "fgdwa"), ("0", "dwb"), ("6", "fgdwa"), ("6", "dwb")]
@@ -101,6 +112,7 @@ def test_command_writes_runs_summary_and_failures(barn_file, tmp_path, capsys):
         assert stats["n"] == 2
         assert stats["success"] + stats["collision"] + stats["timeout"] == pytest.approx(1.0)
         assert set(stats) >= {"n", "success", "collision", "timeout", "mean_time", "mean_score"}
+        assert stats["cycle_ms_mean"] > 0 and stats["sim_ms_mean"] > 0
     assert (out / "failures.png").stat().st_size > 1000
     # The lidar is noisy by default, and the command says so.
     assert summary["setup"]["noise_std"] == 0.03 and summary["setup"]["dropout"] == 0.01
