@@ -116,11 +116,12 @@ void init_tracking(py::module_& m) {
   py::class_<TrackerParams>(m, "TrackerParams",
                             "Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), "
                             "confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, "
-                            "moving_window s, free_margin m), max_speed (m/s), uncertainty_sigmas, max_uncertainty (m).")
+                            "moving_window s, free_margin m), prediction_window (s, velocity fit for prediction), max_speed (m/s), "
+                            "uncertainty_sigmas, max_uncertainty (m).")
       .def(py::init([](FloatArg gate, FloatArg gate_sigmas, FloatArg accel_std, FloatArg measurement_std,
                        IntArg confirm_hits, FloatArg lost_time, FloatArg moving_speed, FloatArg moving_sigmas,
                        FloatArg moving_window, FloatArg free_margin, FloatArg max_speed, FloatArg uncertainty_sigmas,
-                       FloatArg max_uncertainty) {
+                       FloatArg max_uncertainty, FloatArg prediction_window) {
              TrackerParams p{to_float(gate, "gate"),
                              to_float(gate_sigmas, "gate_sigmas"),
                              to_float(accel_std, "accel_std"),
@@ -130,6 +131,7 @@ void init_tracking(py::module_& m) {
                              to_float(moving_speed, "moving_speed"),
                              to_float(moving_sigmas, "moving_sigmas"),
                              to_float(moving_window, "moving_window"),
+                             to_float(prediction_window, "prediction_window"),
                              to_float(free_margin, "free_margin"),
                              to_float(max_speed, "max_speed"),
                              to_float(uncertainty_sigmas, "uncertainty_sigmas"),
@@ -142,7 +144,7 @@ void init_tracking(py::module_& m) {
            py::arg("lost_time") = td.lost_time, py::arg("moving_speed") = td.moving_speed,
            py::arg("moving_sigmas") = td.moving_sigmas, py::arg("moving_window") = td.moving_window,
            py::arg("free_margin") = td.free_margin, py::arg("max_speed") = td.max_speed, py::arg("uncertainty_sigmas") = td.uncertainty_sigmas,
-           py::arg("max_uncertainty") = td.max_uncertainty)
+           py::arg("max_uncertainty") = td.max_uncertainty, py::arg("prediction_window") = td.prediction_window)
       .def_readonly("gate", &TrackerParams::gate)
       .def_readonly("gate_sigmas", &TrackerParams::gate_sigmas)
       .def_readonly("accel_std", &TrackerParams::accel_std)
@@ -152,6 +154,7 @@ void init_tracking(py::module_& m) {
       .def_readonly("moving_speed", &TrackerParams::moving_speed)
       .def_readonly("moving_sigmas", &TrackerParams::moving_sigmas)
       .def_readonly("moving_window", &TrackerParams::moving_window)
+      .def_readonly("prediction_window", &TrackerParams::prediction_window)
       .def_readonly("free_margin", &TrackerParams::free_margin)
       .def_readonly("max_speed", &TrackerParams::max_speed)
       .def_readonly("uncertainty_sigmas", &TrackerParams::uncertainty_sigmas)
@@ -162,6 +165,7 @@ void init_tracking(py::module_& m) {
           << ", measurement_std=" << p.measurement_std << ", confirm_hits=" << p.confirm_hits
           << ", lost_time=" << p.lost_time << ", moving_speed=" << p.moving_speed
           << ", moving_sigmas=" << p.moving_sigmas << ", moving_window=" << p.moving_window
+          << ", prediction_window=" << p.prediction_window
           << ", free_margin=" << p.free_margin
           << ", max_speed=" << p.max_speed << ", uncertainty_sigmas=" << p.uncertainty_sigmas << ")";
         return s.str();
@@ -173,7 +177,9 @@ void init_tracking(py::module_& m) {
       .def_property_readonly("position", [](const Track& t) { return pair(t.position); }, "m, at the last update.")
       .def_property_readonly("velocity", [](const Track& t) { return pair(t.velocity); }, "m/s, the filter's.")
       .def_property_readonly("window_velocity", [](const Track& t) { return pair(t.window_velocity); },
-                             "m/s, slope of the unoccluded centres over the last moving_window; moving_discs use it.")
+                             "m/s, slope of the centres over the last moving_window; the moving label uses it.")
+      .def_property_readonly("predicted_velocity", [](const Track& t) { return pair(t.predicted_velocity); },
+                             "m/s, slope of the centres over the last prediction_window; moving_discs use it.")
       .def_readonly("window_speed_std", &Track::window_speed_std)
       .def_property_readonly(
           "covariance",

@@ -270,6 +270,7 @@ std::vector<Entry> entries(NodeConfig& c) {
       number("navigator/tracker/moving_speed", t.moving_speed),
       number("navigator/tracker/moving_sigmas", t.moving_sigmas),
       number("navigator/tracker/moving_window", t.moving_window),
+      number("navigator/tracker/prediction_window", t.prediction_window),
       number("navigator/tracker/free_margin", t.free_margin), number("navigator/tracker/max_speed", t.max_speed),
       number("navigator/tracker/uncertainty_sigmas", t.uncertainty_sigmas),
       number("navigator/tracker/max_uncertainty", t.max_uncertainty),

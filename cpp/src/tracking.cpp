@@ -38,6 +38,8 @@ void TrackerParams::validate() const {
   detail::require_at_most("tracker moving_sigmas", moving_sigmas, 1e3);
   detail::require_positive("tracker moving_window", moving_window);
   detail::require_at_most("tracker moving_window", moving_window, kMaxHorizon);
+  detail::require_positive("tracker prediction_window", prediction_window);
+  detail::require_at_most("tracker prediction_window", prediction_window, kMaxHorizon);
   detail::require_length("tracker free_margin", free_margin);
   detail::require_positive("tracker max_speed", max_speed);
   detail::require_at_most("tracker max_speed", max_speed, kMaxSpeed);
@@ -178,36 +180,48 @@ void Tracker::correct(Track& t, const Cluster& cluster, double time) {
 // does not hang on the filter's noise model, so static clutter whose centres
 // wobble more than modelled is not called moving, and a mover's label does not
 // flicker.
-void Tracker::relabel(Track& t, const Memory& memory) const {
-  const auto& centres = memory.centres;
-  t.window_velocity = Vec2::Zero();
-  t.window_speed_std = std::numeric_limits<double>::infinity();
+Tracker::LineFit Tracker::fit_line(const std::deque<Centre>& centres, double since) const {
+  LineFit fit;
   // Weighted least squares; the weights are relative to an unoccluded centre,
   // whose std the scatter estimates.
   double w_sum = 0.0, t_mean = 0.0;
   Vec2 p_mean = Vec2::Zero();
-  for (const Centre& c : centres) w_sum += c.weight, t_mean += c.weight * c.time, p_mean += c.weight * c.position;
-  if (centres.size() >= 3) {
-    t_mean /= w_sum;
-    p_mean /= w_sum;
-    double stt = 0.0;
-    Vec2 stp = Vec2::Zero();
-    for (const Centre& c : centres) {
-      stt += c.weight * (c.time - t_mean) * (c.time - t_mean);
-      stp += c.weight * (c.time - t_mean) * (c.position - p_mean);
-    }
-    if (stt > 0.0) {
-      t.window_velocity = stp / stt;
-      double scatter = 0.0;
-      for (const Centre& c : centres)
-        scatter += c.weight * (c.position - p_mean - (c.time - t_mean) * t.window_velocity).squaredNorm();
-      // Two coordinates per centre, two parameters fitted per coordinate.
-      const double dof = 2.0 * (static_cast<double>(centres.size()) - 2.0);
-      const double point_std =
-          std::max(std::sqrt(scatter * static_cast<double>(centres.size()) / (w_sum * dof)), params_.measurement_std);
-      t.window_speed_std = point_std / std::sqrt(stt);
-    }
+  std::size_t n = 0;
+  for (const Centre& c : centres) {
+    if (c.time < since) continue;
+    w_sum += c.weight, t_mean += c.weight * c.time, p_mean += c.weight * c.position;
+    ++n;
   }
+  if (n < 3) return fit;
+  t_mean /= w_sum;
+  p_mean /= w_sum;
+  double stt = 0.0;
+  Vec2 stp = Vec2::Zero();
+  for (const Centre& c : centres) {
+    if (c.time < since) continue;
+    stt += c.weight * (c.time - t_mean) * (c.time - t_mean);
+    stp += c.weight * (c.time - t_mean) * (c.position - p_mean);
+  }
+  if (!(stt > 0.0)) return fit;
+  fit.velocity = stp / stt;
+  double scatter = 0.0;
+  for (const Centre& c : centres)
+    if (c.time >= since) scatter += c.weight * (c.position - p_mean - (c.time - t_mean) * fit.velocity).squaredNorm();
+  // Two coordinates per centre, two parameters fitted per coordinate.
+  const double dof = 2.0 * (static_cast<double>(n) - 2.0);
+  const double point_std = std::max(std::sqrt(scatter * static_cast<double>(n) / (w_sum * dof)), params_.measurement_std);
+  fit.speed_std = point_std / std::sqrt(stt);
+  return fit;
+}
+
+void Tracker::relabel(Track& t, const Memory& memory) const {
+  const double newest = memory.centres.empty() ? 0.0 : memory.centres.back().time;
+  const LineFit window = fit_line(memory.centres, -std::numeric_limits<double>::infinity());
+  t.window_velocity = window.velocity;
+  t.window_speed_std = window.speed_std;
+  // The centres kept go back one moving_window: a longer prediction window is that one.
+  const LineFit recent = fit_line(memory.centres, newest - params_.prediction_window - 1e-9);
+  t.predicted_velocity = std::isfinite(recent.speed_std) ? recent.velocity : window.velocity;
   if (t.status == TrackStatus::Tentative) {
     t.moving = false;
     return;
@@ -354,14 +368,15 @@ std::vector<Disc> Tracker::moving_discs() const {
   std::vector<Disc> discs;
   for (const Track& t : tracks_) {
     if (!t.moving || t.status == TrackStatus::Tentative) continue;
-    // Predicted with the window velocity, the steadier estimate of where it is
-    // heading; spreading with the filter's speed uncertainty, which holds the
+    // Predicted with the velocity of the recent centres, steadier than the
+    // filter's estimate of where it is heading and sooner through a turn than
+    // the label's longer window; spreading with the filter's speed uncertainty, which holds the
     // model's acceleration noise: how far a turn or a reversal may take it
     // from the line. The window fit's own std says only how well the past
     // second's mean velocity is known, a tenth of that or less.
     discs.push_back(Disc{t.position,
                          t.radius + std::min(params_.uncertainty_sigmas * t.position_std(), params_.max_uncertainty),
-                         t.window_velocity, params_.uncertainty_sigmas * t.speed_std()});
+                         t.predicted_velocity, params_.uncertainty_sigmas * t.speed_std()});
   }
   return discs;
 }

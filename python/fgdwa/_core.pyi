@@ -1473,9 +1473,9 @@ class TrackStatus:
         ...
 class TrackerParams:
     """
-    Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, moving_window s, free_margin m), max_speed (m/s), uncertainty_sigmas, max_uncertainty (m).
+    Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, moving_window s, free_margin m), prediction_window (s, velocity fit for prediction), max_speed (m/s), uncertainty_sigmas, max_uncertainty (m).
     """
-    def __init__(self, gate: typing.SupportsFloat | typing.SupportsIndex = 1.0, gate_sigmas: typing.SupportsFloat | typing.SupportsIndex = 4.0, accel_std: typing.SupportsFloat | typing.SupportsIndex = 1.5, measurement_std: typing.SupportsFloat | typing.SupportsIndex = 0.03, confirm_hits: typing.SupportsInt | typing.SupportsIndex = 3, lost_time: typing.SupportsFloat | typing.SupportsIndex = 0.5, moving_speed: typing.SupportsFloat | typing.SupportsIndex = 0.1, moving_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, moving_window: typing.SupportsFloat | typing.SupportsIndex = 1.0, free_margin: typing.SupportsFloat | typing.SupportsIndex = 0.1, max_speed: typing.SupportsFloat | typing.SupportsIndex = 3.0, uncertainty_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, max_uncertainty: typing.SupportsFloat | typing.SupportsIndex = 0.3) -> None:
+    def __init__(self, gate: typing.SupportsFloat | typing.SupportsIndex = 1.0, gate_sigmas: typing.SupportsFloat | typing.SupportsIndex = 4.0, accel_std: typing.SupportsFloat | typing.SupportsIndex = 1.5, measurement_std: typing.SupportsFloat | typing.SupportsIndex = 0.03, confirm_hits: typing.SupportsInt | typing.SupportsIndex = 3, lost_time: typing.SupportsFloat | typing.SupportsIndex = 0.5, moving_speed: typing.SupportsFloat | typing.SupportsIndex = 0.1, moving_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, moving_window: typing.SupportsFloat | typing.SupportsIndex = 1.0, free_margin: typing.SupportsFloat | typing.SupportsIndex = 0.1, max_speed: typing.SupportsFloat | typing.SupportsIndex = 3.0, uncertainty_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, max_uncertainty: typing.SupportsFloat | typing.SupportsIndex = 0.3, prediction_window: typing.SupportsFloat | typing.SupportsIndex = 0.6) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -1516,6 +1516,9 @@ class TrackerParams:
     def moving_window(self) -> float:
         ...
     @property
+    def prediction_window(self) -> float:
+        ...
+    @property
     def uncertainty_sigmas(self) -> float:
         ...
 class Track:
@@ -1553,6 +1556,11 @@ class Track:
     def position_std(self) -> float:
         ...
     @property
+    def predicted_velocity(self) -> tuple:
+        """
+        m/s, slope of the centres over the last prediction_window; moving_discs use it.
+        """
+    @property
     def radius(self) -> float:
         ...
     @property
@@ -1572,7 +1580,7 @@ class Track:
     @property
     def window_velocity(self) -> tuple:
         """
-        m/s, slope of the unoccluded centres over the last moving_window; moving_discs use it.
+        m/s, slope of the centres over the last moving_window; the moving label uses it.
         """
 class Tracker:
     """

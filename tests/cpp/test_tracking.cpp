@@ -248,7 +248,7 @@ TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
     const auto discs = tracker.moving_discs();
     ASSERT_EQ(discs.size(), 1u);
     EXPECT_GT(discs[0].radius, t.radius);  // grown by the position's uncertainty
-    EXPECT_EQ(discs[0].velocity, t.window_velocity);
+    EXPECT_EQ(discs[0].velocity, t.predicted_velocity);
     // Ahead it spreads as the filter's speed uncertainty does: room for a turn or a reversal.
     EXPECT_DOUBLE_EQ(discs[0].growth, tracker.params().uncertainty_sigmas * t.speed_std());
     EXPECT_GT(discs[0].growth, 0.1);
@@ -259,6 +259,35 @@ TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
             << " m/s (the filter's: " << worst_filter << " m/s)\n";
   EXPECT_LT(worst, 0.05);
   EXPECT_LT(worst_filter, 0.15);
+}
+
+// A disc walking back and forth: 0.7 s after it turned, the prediction's
+// 0.6 s window holds only the way back, while the label's 1 s window still
+// straddles the turn (its slope about half the speed).
+TEST(Tracker, ThePredictionFollowsAReversalBeforeTheLabelsWindow) {
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  const Vec2 start(3.0, -1.0), velocity(0.0, 0.5);
+  const double turn = 2.0, after = 0.7;  // s
+  const auto centre = [&](double t) { return start + (t <= turn ? t : 2.0 * turn - t) * velocity; };
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    Tracker tracker;
+    std::mt19937_64 rng(seed);
+    const int steps = static_cast<int>(std::lround((turn + after) / kPeriod));
+    for (int k = 0; k <= steps; ++k) {
+      const double t = k * kPeriod;
+      const Scan scan = scan_of(scanner, Pose2{}, {Disc{centre(t), 0.3}}, t, rng);
+      tracker.update(segment_scan(scan), t, &scan);
+    }
+    ASSERT_EQ(tracker.tracks().size(), 1u);
+    const Track& t = tracker.tracks()[0];
+    ASSERT_TRUE(t.moving);
+    EXPECT_LT((t.predicted_velocity + velocity).norm(), 0.12) << t.predicted_velocity.transpose();
+    EXPECT_GT(t.window_velocity.y(), -0.4);
+    const auto discs = tracker.moving_discs();
+    ASSERT_EQ(discs.size(), 1u);
+    EXPECT_EQ(discs[0].velocity, t.predicted_velocity);
+  }
 }
 
 // A mover seen only in part (beside something nearer, or at the edge of the
@@ -537,6 +566,9 @@ TEST(Tracker, BadInputIsAnError) {
   p = TrackerParams{};
   p.measurement_std = NAN;
   expect_error_naming([&] { Tracker{p}; }, "measurement_std");
+  p = TrackerParams{};
+  p.prediction_window = 0.0;
+  expect_error_naming([&] { Tracker{p}; }, "prediction_window");
   Tracker tracker;
   expect_error_naming([&] { tracker.update({}, NAN); }, "time");
   tracker.update({}, 1.0);

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -81,6 +82,11 @@ struct TrackerParams {
   double moving_speed = 0.1;        // m/s: a confirmed track whose window speed, less moving_sigmas std, exceeds it is moving
   double moving_sigmas = 2.0;       // std devs taken off the window speed before comparing it with moving_speed
   double moving_window = 1.0;       // s: the window speed is the slope of a line fitted to the centres this far back (occluded ones weigh less)
+  // s: the predicted velocity is the slope of the centres this far back (no
+  // farther than moving_window). Shorter than the label's window, so that a
+  // turn or a reversal reaches the prediction sooner; the label keeps the
+  // longer one, which a slow mover needs to show its displacement above the noise.
+  double prediction_window = 0.6;
   double free_margin = 0.1;         // m: a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
   double max_speed = 3.0;           // m/s; an association implying more is rejected
   double uncertainty_sigmas = 2.0;  // std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead
@@ -98,9 +104,12 @@ struct Track {
   bool moving = false;     // confirmed, fast enough with confidence, and displacing free space (with hysteresis)
   // m/s, slope of a line through the centres (occluded ones weighing less) of the last
   // moving_window (as of the last association): steadier than `velocity`,
-  // half a window late through turns. The moving label and moving_discs' predicted velocity use it.
+  // half a window late through turns. The moving label uses it.
   Vec2 window_velocity = Vec2::Zero();
   double window_speed_std = 0.0;  // m/s, its std (infinite until three centres)
+  // m/s, the same slope over the last prediction_window (the window velocity
+  // until it holds three centres): moving_discs' predicted velocity.
+  Vec2 predicted_velocity = Vec2::Zero();
   int hits = 0;            // associations, the first cluster included
   double last_seen = 0.0;  // s, time of the last association
   double age = 0.0;        // s since the first cluster
@@ -165,6 +174,13 @@ class Tracker {
     std::deque<std::pair<double, std::vector<Vec2>>> shapes;   // (s, m) hits of the clusters taken, within moving_window
     std::deque<double> displaced;                              // s, updates whose hits displaced free space
   };
+  // A line through the centres since `since` (s): its slope and that slope's
+  // std (infinite with fewer than three centres).
+  struct LineFit {
+    Vec2 velocity = Vec2::Zero();
+    double speed_std = std::numeric_limits<double>::infinity();
+  };
+  LineFit fit_line(const std::deque<Centre>& centres, double since) const;
   void relabel(Track& track, const Memory& memory) const;
   bool displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan, double time) const;
   const Scan* reference_scan(double time) const;
