@@ -74,6 +74,17 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // intersections below stay well defined, and far above any real squared distance.
 constexpr double kFar = 1e30;
 
+// A piece's bound is held in 64ths of a piece, in 16 bits: at most 1024
+// pieces (25.6 m at 2.5 cm), beyond which it stays there, still a bound.
+constexpr double kBoundSteps = 64.0;
+constexpr std::uint16_t kMostSteps = std::numeric_limits<std::uint16_t>::max();
+
+// `bound` in whole steps, rounded down (lowered by more than the rounding of
+// the step's product first) and held at kMostSteps: never above the bound.
+std::uint16_t bound_in_steps(double bound, double inverse_step) {
+  return static_cast<std::uint16_t>(std::min(std::floor(bound * inverse_step * (1.0 - 1e-12)), double(kMostSteps)));
+}
+
 // 1-D squared distance transform of a sampled function: the lower envelope of
 // the parabolas rooted at each sample.
 void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vector<int>& v, std::vector<double>& z) {
@@ -137,12 +148,13 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   bound_cols_ = static_cast<double>(sub * cols);
   bound_rows_ = static_cast<double>(sub * rows);
   bound_stride_ = static_cast<std::size_t>(sub * cols);
+  bound_step_ = grid.resolution() / sub / kBoundSteps;
   candidates_.assign(n_cells, CellCandidates{kNoCell, kNoCell, 0});
   more_.assign(1, 0);
   piece_scratch_.resize(static_cast<std::size_t>(sub) * sub);
   gap_x_.resize(sub);
   gap_y_.resize(sub);
-  piece_lower_bound_.assign(n_cells * sub * sub, std::numeric_limits<float>::infinity());
+  piece_lower_bound_.assign(n_cells * sub * sub, kMostSteps);
   for (int c = 0; c < cols; ++c) column_pass(c, 0, rows - 1);
   for (int r = 0; r < rows; ++r) row_pass(r, nullptr);
   if (occupied_ > 0)
@@ -275,14 +287,11 @@ void DistanceField::look_up_data(int r, int c) {
       for (int pc = 0; pc < sub; ++pc)
         nearest_piece[pr * sub + pc] = std::min(nearest_piece[pr * sub + pc], gap_x[pc] + gap_y[pr]);
   }
+  const double inverse_step = 1.0 / bound_step_;
   for (int pr = 0; pr < sub; ++pr)
-    for (int pc = 0; pc < sub; ++pc) {
-      // Lowered by 2^-22 before rounding to single precision (relative
-      // error at most 2^-24), so the stored value stays below the bound.
-      const double bound = std::sqrt(nearest_piece[pr * sub + pc]) * (1.0 - 0x1p-22);
+    for (int pc = 0; pc < sub; ++pc)
       piece_lower_bound_[static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c + pc)] =
-          static_cast<float>(bound);
-    }
+          bound_in_steps(std::sqrt(nearest_piece[pr * sub + pc]), inverse_step);
 
   if (count > 1) cell.second = found[1];
   if (count > 2) {

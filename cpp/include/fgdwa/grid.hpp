@@ -91,10 +91,10 @@ class TerrainGrid {
 // cells whose nearest obstacle changed and of their neighbours: its cost
 // follows the change, and it gives the same field as a fresh build.
 //
-// bytes_per_cell() says what a field holds: about 35 bytes per cell at 5 cm
+// bytes_per_cell() says what a field holds: about 27 bytes per cell at 5 cm
 // (the grid's copy 1, each cell's nearest occupied row in its column 4, its
 // candidates 12 and the others of cells with more than two about 2, the bound
-// table 4 per piece, 16 at 2 x 2 pieces a cell), more at coarser cells, whose
+// table 2 per piece, 8 at 2 x 2 pieces a cell), more at coarser cells, whose
 // table is cut finer (16 pieces a cell at 10 cm), up to 4 million pieces in
 // all. update() appends the candidates it redoes and compacts them once half
 // are stale: a field that keeps being updated holds a little more.
@@ -127,8 +127,9 @@ class DistanceField {
   // segments of about a cell); NaN when that box leaves the grid.
   double segment_distance(const Vec2& a, const Vec2& b) const;
   // A value never above distance(p), from one table look-up: the distance
-  // between the piece of p's cell that holds p and the nearest obstacle square.
-  // Cells are cut into
+  // between the piece of p's cell that holds p and the nearest obstacle square,
+  // rounded down to a 64th of a piece and held at 1024 pieces (25.6 m at
+  // 2.5 cm) beyond: still a bound there, if a loose one. Cells are cut into
   // bound_subdivisions() x bound_subdivisions() pieces of about 2.5 cm, at
   // least 2 x 2. Outside the grid, from the point q of the
   // grid's edge nearest p: every obstacle lies in the grid, beyond q as seen
@@ -138,7 +139,8 @@ class DistanceField {
   // The table behind lower_bound(), copied out so that a loop over many points
   // keeps it in registers. Valid while the field lives and is not updated.
   struct LowerBounds {
-    const float* pieces;  // null: no obstacles
+    const std::uint16_t* pieces;  // in steps, rounded down; null: no obstacles
+    double step;                  // m per step
     double origin_x, origin_y, inverse_piece;
     double cols, rows;  // pieces across and down the grid
     std::ptrdiff_t stride;
@@ -146,15 +148,15 @@ class DistanceField {
       if (!pieces) return std::numeric_limits<double>::infinity();
       const double gx = (x - origin_x) * inverse_piece, gy = (y - origin_y) * inverse_piece;
       if (gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows)
-        return pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
+        return step * pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
       return outside(gx, gy);
     }
     // Not a number in, 0 out: never above the distance.
     double outside(double gx, double gy) const {
       if (std::isnan(gx) || std::isnan(gy)) return 0.0;
       const double qx = std::clamp(gx, 0.0, cols), qy = std::clamp(gy, 0.0, rows);
-      const double at_q = pieces[static_cast<std::ptrdiff_t>(std::min(qy, rows - 1.0)) * stride +
-                                 static_cast<std::ptrdiff_t>(std::min(qx, cols - 1.0))];
+      const double at_q = step * pieces[static_cast<std::ptrdiff_t>(std::min(qy, rows - 1.0)) * stride +
+                                        static_cast<std::ptrdiff_t>(std::min(qx, cols - 1.0))];
       const double dx = (gx - qx) / inverse_piece, dy = (gy - qy) / inverse_piece;
       // Lowered a little below the rounding of the sum.
       return std::sqrt(dx * dx + dy * dy + at_q * at_q) * (1.0 - 1e-12);
@@ -162,6 +164,7 @@ class DistanceField {
   };
   LowerBounds lower_bounds() const {
     return LowerBounds{has_obstacles() ? piece_lower_bound_.data() : nullptr,
+                       bound_step_,
                        grid_.origin().x(),
                        grid_.origin().y(),
                        inverse_piece_,
@@ -222,8 +225,11 @@ class DistanceField {
   std::vector<int> row_first_, row_last_, col_first_, col_last_;
   std::vector<int> row_block_first_, row_block_last_, col_block_first_, col_block_last_;
   // Per piece of a cell (subdivisions_ x subdivisions_ per cell): its distance
-  // to the nearest obstacle square, rounded down to a float, row-major.
-  std::vector<float> piece_lower_bound_;
+  // to the nearest obstacle square in whole steps of bound_step_ (a 64th of a
+  // piece), rounded down and held at 65535 beyond, row-major: two bytes a
+  // piece, and a step is far below the slack of the piece itself.
+  std::vector<std::uint16_t> piece_lower_bound_;
+  double bound_step_ = 1.0;  // m
   int subdivisions_ = 2;
   double inverse_resolution_ = 1.0;      // cells per metre
   double inverse_piece_ = 1.0;           // pieces per metre
