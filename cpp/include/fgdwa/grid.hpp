@@ -186,8 +186,9 @@ class DistanceField {
   }
   int row_of(std::uint32_t cell) const { return static_cast<int>(cell >> col_bits_); }
   int col_of(std::uint32_t cell) const { return static_cast<int>(cell & col_mask_); }
-  // The same double as grid_.cell_center(), from two small tables.
-  Vec2 centre_of(std::uint32_t cell) const { return Vec2(centre_x_[col_of(cell)], centre_y_[row_of(cell)]); }
+  // The same double as grid_.cell_center(), from two small tables (indexed
+  // unsigned: no sign extension in distance()'s inner loop).
+  Vec2 centre_of(std::uint32_t cell) const { return Vec2(centre_x_[cell & col_mask_], centre_y_[cell >> col_bits_]); }
 
   // The nearest occupied row of column `col` for rows [from, to].
   void column_pass(int col, int from, int to);
