@@ -74,6 +74,17 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // intersections below stay well defined, and far above any real squared distance.
 constexpr double kFar = 1e30;
 
+// A piece's bound is held in 64ths of a piece, in 16 bits: at most 1024
+// pieces (25.6 m at 2.5 cm), beyond which it stays there, still a bound.
+constexpr double kBoundSteps = 64.0;
+constexpr std::uint16_t kMostSteps = std::numeric_limits<std::uint16_t>::max();
+
+// `bound` in whole steps, rounded down (lowered by more than the rounding of
+// the step's product first) and held at kMostSteps: never above the bound.
+std::uint16_t bound_in_steps(double bound, double inverse_step) {
+  return static_cast<std::uint16_t>(std::min(std::floor(bound * inverse_step * (1.0 - 1e-12)), double(kMostSteps)));
+}
+
 // 1-D squared distance transform of a sampled function: the lower envelope of
 // the parabolas rooted at each sample.
 void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vector<int>& v, std::vector<double>& z) {
@@ -118,7 +129,13 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   v_.resize(n);
   arg_.resize(n);
   column_nearest_.assign(n_cells, -1);
-  nearest_.assign(n_cells, -1);
+  while ((1 << col_bits_) < cols) ++col_bits_;
+  col_mask_ = (std::uint32_t{1} << col_bits_) - 1;
+  static_assert(2 * limits::kMaxGridCells <= std::numeric_limits<std::uint32_t>::max());
+  centre_x_.resize(cols);
+  centre_y_.resize(rows);
+  for (int c = 0; c < cols; ++c) centre_x_[c] = grid.cell_center(0, c).x();
+  for (int r = 0; r < rows; ++r) centre_y_[r] = grid.cell_center(r, 0).y();
   // Pieces of about kBoundPiece metres, at least 2 x 2 per cell, and no more
   // than kMaxBoundPieces in all.
   constexpr double kBoundPiece = 0.025;
@@ -131,11 +148,13 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   bound_cols_ = static_cast<double>(sub * cols);
   bound_rows_ = static_cast<double>(sub * rows);
   bound_stride_ = static_cast<std::size_t>(sub * cols);
-  candidates_.assign(n_cells, CellCandidates{kInf, kInf, kInf, kInf, 0, 0});
+  bound_step_ = grid.resolution() / sub / kBoundSteps;
+  candidates_.assign(n_cells, CellCandidates{kNoCell, kNoCell, 0});
+  more_.assign(1, 0);
   piece_scratch_.resize(static_cast<std::size_t>(sub) * sub);
   gap_x_.resize(sub);
   gap_y_.resize(sub);
-  piece_lower_bound_.assign(n_cells * sub * sub, std::numeric_limits<float>::infinity());
+  piece_lower_bound_.assign(n_cells * sub * sub, kMostSteps);
   for (int c = 0; c < cols; ++c) column_pass(c, 0, rows - 1);
   for (int r = 0; r < rows; ++r) row_pass(r, nullptr);
   if (occupied_ > 0)
@@ -191,9 +210,8 @@ void DistanceField::row_pass(int row, std::vector<std::size_t>* changed) {
   }
   distance_transform_1d(f_.data(), cols, d_.data(), arg_.data(), v_, z_);
   for (int c = 0; c < cols; ++c) {
-    const std::int32_t nearest =
-        d_[c] >= 0.5 * kFar ? -1 : static_cast<std::int32_t>(grid_.index(nearest_row[arg_[c]], arg_[c]));
-    std::int32_t& now = nearest_[grid_.index(row, c)];
+    const std::uint32_t nearest = d_[c] >= 0.5 * kFar ? kNoCell : pack(nearest_row[arg_[c]], arg_[c]);
+    std::uint32_t& now = candidates_[grid_.index(row, c)].first;
     if (nearest == now) continue;
     now = nearest;
     if (changed) changed->push_back(grid_.index(row, c));
@@ -203,41 +221,55 @@ void DistanceField::row_pass(int row, std::vector<std::size_t>* changed) {
 void DistanceField::look_up_data(int r, int c) {
   const int rows = grid_.rows(), cols = grid_.cols();
   const double res = grid_.resolution();
+  const int sub = subdivisions_;
+  CellCandidates& cell = candidates_[grid_.index(r, c)];
+  more_garbage_ += cell.more ? more_[cell.more] + 1 : 0;
+  cell.second = cell.first;
+  cell.more = 0;
+  if (cell.first == kNoCell) return;  // no obstacles: nothing to bound
   // The obstacle square nearest to a point is the one nearest to a cell centre
   // close to it: each cell keeps the distinct nearest obstacles of the cells
-  // within two of it.
-  std::int32_t found[25];
-  int count = 0;
-  for (int dr = -2; dr <= 2; ++dr)
-    for (int dc = -2; dc <= 2; ++dc) {
-      const int rr = std::clamp(r + dr, 0, rows - 1), cc = std::clamp(c + dc, 0, cols - 1);
-      const std::int32_t o = nearest_[grid_.index(rr, cc)];
-      if (o >= 0 && std::find(found, found + count, o) == found + count) found[count++] = o;
-    }
+  // within two of it, its own first. An occupied cell is the nearest square of
+  // every point in it and needs no other.
+  std::uint32_t found[25];
+  found[0] = cell.first;
+  int count = 1;
+  if (!grid_.occupied(r, c))
+    for (int dr = -2; dr <= 2; ++dr)
+      for (int dc = -2; dc <= 2; ++dc) {
+        const int rr = std::clamp(r + dr, 0, rows - 1), cc = std::clamp(c + dc, 0, cols - 1);
+        const std::uint32_t o = candidates_[grid_.index(rr, cc)].first;
+        if (o != kNoCell && std::find(found, found + count, o) == found + count) found[count++] = o;
+      }
   Vec2 centres[25];
-  for (int k = 0; k < count; ++k) centres[k] = grid_.cell_center(found[k] / cols, found[k] % cols);
+  for (int k = 0; k < count; ++k) centres[k] = centre_of(found[k]);
   // Drop the candidates that cannot be nearest anywhere in the cell: their
   // square is farther from the whole cell than some other candidate's square
   // is from the cell's farthest corner. Clustered maps leave a dozen
   // candidates per cell before this and one to three after, and distance()
-  // spends its time in this loop.
-  const Vec2 centre = grid_.cell_center(r, c);
-  double reach = kInf;
-  for (int k = 0; k < count; ++k) reach = std::min(reach, (centre - centres[k]).norm());
+  // spends its time in this loop. The cell's own nearest is the one nearest
+  // its centre, so it stays.
+  const Vec2 centre = centre_of(pack(r, c));
+  const double reach = (centre - centres[0]).norm();
   const auto beyond = [&](const Vec2& o) {
     const double dx = std::max(std::abs(centre.x() - o.x()) - res, 0.0);
     const double dy = std::max(std::abs(centre.y() - o.y()) - res, 0.0);
     const double limit = reach + 1e-9 * res;
     return dx * dx + dy * dy > limit * limit;
   };
-  count = static_cast<int>(std::remove_if(centres, centres + count, beyond) - centres);
+  int kept = 1;
+  for (int k = 1; k < count; ++k)
+    if (!beyond(centres[k])) {
+      found[kept] = found[k];
+      centres[kept++] = centres[k];
+    }
+  count = kept;
 
   // The candidates hold the nearest obstacle of every point of the cell, so
   // the nearest of them to a piece of the cell bounds that piece: an
   // obstacle square of half-size res / 2 against a piece of half-size
   // piece / 2. Its gaps along x and y depend on the piece's column and row
   // alone, so they are squared once per candidate.
-  const int sub = subdivisions_;
   const double piece = res / sub, reach_apart = 0.5 * (res + piece);
   std::vector<double>& nearest_piece = piece_scratch_;  // squared, as are the gaps
   std::vector<double>& gap_x = gap_x_;
@@ -255,34 +287,30 @@ void DistanceField::look_up_data(int r, int c) {
       for (int pc = 0; pc < sub; ++pc)
         nearest_piece[pr * sub + pc] = std::min(nearest_piece[pr * sub + pc], gap_x[pc] + gap_y[pr]);
   }
+  const double inverse_step = 1.0 / bound_step_;
   for (int pr = 0; pr < sub; ++pr)
-    for (int pc = 0; pc < sub; ++pc) {
-      // Lowered by 2^-22 before rounding to single precision (relative
-      // error at most 2^-24), so the stored value stays below the bound.
-      const double bound = std::sqrt(nearest_piece[pr * sub + pc]) * (1.0 - 0x1p-22);
+    for (int pc = 0; pc < sub; ++pc)
       piece_lower_bound_[static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c + pc)] =
-          static_cast<float>(bound);
-    }
+          bound_in_steps(std::sqrt(nearest_piece[pr * sub + pc]), inverse_step);
 
-  CellCandidates& cell = candidates_[grid_.index(r, c)];
-  more_garbage_ += cell.more_count;
-  const Vec2 first = count > 0 ? centres[0] : Vec2(kInf, kInf);
-  const Vec2 second = count > 1 ? centres[1] : first;
-  cell = CellCandidates{first.x(), first.y(), second.x(), second.y(), 0, 0};
+  if (count > 1) cell.second = found[1];
   if (count > 2) {
+    // Indices stay 32-bit: the live entries are at most 24 a cell.
+    if (more_.size() + count - 1 > std::numeric_limits<std::uint32_t>::max()) compact_more();
     cell.more = static_cast<std::uint32_t>(more_.size());
-    cell.more_count = static_cast<std::uint32_t>(count - 2);
-    more_.insert(more_.end(), centres + 2, centres + count);
+    more_.push_back(static_cast<std::uint32_t>(count - 2));
+    more_.insert(more_.end(), found + 2, found + count);
   }
 }
 
 void DistanceField::compact_more() {
-  std::vector<Vec2> kept;
+  std::vector<std::uint32_t> kept;
   kept.reserve(more_.size() - more_garbage_);
+  kept.push_back(0);
   for (CellCandidates& cell : candidates_) {
-    if (!cell.more_count) continue;
+    if (!cell.more) continue;
     const std::uint32_t at = static_cast<std::uint32_t>(kept.size());
-    kept.insert(kept.end(), more_.begin() + cell.more, more_.begin() + cell.more + cell.more_count);
+    kept.insert(kept.end(), more_.begin() + cell.more, more_.begin() + cell.more + 1 + more_[cell.more]);
     cell.more = at;
   }
   more_ = std::move(kept);
@@ -340,13 +368,13 @@ std::size_t DistanceField::update(const OccupancyGrid& grid, const std::vector<s
       for (int cc = std::max(0, c - 2); cc <= std::min(cols - 1, c + 2); ++cc) {
         const std::size_t j = grid_.index(rr, cc);
         if (stale_mark_[j]) continue;
-        stale_mark_[j] = 1;
+        stale_mark_[j] = true;
         stale.push_back(j);
       }
   }
   for (const std::size_t i : stale) {
     look_up_data(static_cast<int>(i / cols), static_cast<int>(i % cols));
-    stale_mark_[i] = 0;
+    stale_mark_[i] = false;
   }
   if (more_garbage_ > 4096 && 2 * more_garbage_ > more_.size()) compact_more();
 
@@ -405,14 +433,14 @@ void DistanceField::col_outermost(int col) {
 double DistanceField::cell_distance(int row, int col) const {
   if (!grid_.in_bounds(row, col))
     throw Error("cell (" + std::to_string(row) + ", " + std::to_string(col) + ") is outside the grid");
-  const std::int32_t o = nearest_[grid_.index(row, col)];
-  if (o < 0) return kInf;
-  const double dr = row - o / grid_.cols(), dc = col - o % grid_.cols();
+  const std::uint32_t o = candidates_[grid_.index(row, col)].first;
+  if (o == kNoCell) return kInf;
+  const double dr = row - row_of(o), dc = col - col_of(o);
   return std::sqrt(dr * dr + dc * dc) * grid_.resolution();
 }
 
 std::vector<double> DistanceField::cell_distances() const {
-  std::vector<double> out(nearest_.size());
+  std::vector<double> out(candidates_.size());
   for (int r = 0; r < grid_.rows(); ++r)
     for (int c = 0; c < grid_.cols(); ++c) out[grid_.index(r, c)] = cell_distance(r, c);
   return out;
@@ -420,11 +448,13 @@ std::vector<double> DistanceField::cell_distances() const {
 
 double DistanceField::bytes_per_cell() const {
   const auto bytes = [](const auto& v) { return static_cast<double>(v.capacity() * sizeof(v[0])); };
-  const double total = sizeof(*this) + bytes(grid_.cells()) + bytes(column_nearest_) + bytes(nearest_) + bytes(candidates_) +
-                       bytes(more_) + bytes(piece_lower_bound_) + bytes(row_first_) + bytes(row_last_) + bytes(col_first_) +
-                       bytes(col_last_) + bytes(f_) + bytes(d_) + bytes(z_) + bytes(v_) + bytes(arg_) +
-                       bytes(piece_scratch_) + bytes(gap_x_) + bytes(gap_y_) + bytes(stale_mark_);
-  return total / static_cast<double>(nearest_.size());
+  const double total = sizeof(*this) + bytes(grid_.cells()) + bytes(column_nearest_) + bytes(candidates_) + bytes(more_) +
+                       bytes(centre_x_) + bytes(centre_y_) + bytes(piece_lower_bound_) + bytes(row_first_) +
+                       bytes(row_last_) + bytes(col_first_) + bytes(col_last_) + bytes(row_block_first_) +
+                       bytes(row_block_last_) + bytes(col_block_first_) + bytes(col_block_last_) + bytes(f_) +
+                       bytes(d_) + bytes(z_) + bytes(v_) + bytes(arg_) + bytes(piece_scratch_) + bytes(gap_x_) +
+                       bytes(gap_y_) + static_cast<double>(stale_mark_.capacity() / 8);
+  return total / static_cast<double>(candidates_.size());
 }
 
 namespace {
@@ -473,9 +503,10 @@ double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
   for (int r = static_cast<int>(y0); r <= static_cast<int>(y1); ++r)
     for (int c = static_cast<int>(x0); c <= static_cast<int>(x1); ++c) {
       const CellCandidates& near = candidates_[grid_.index(r, c)];
-      consider(Vec2(near.x0, near.y0));
-      if (near.x1 != near.x0 || near.y1 != near.y0) consider(Vec2(near.x1, near.y1));
-      for (std::uint32_t k = 0; k < near.more_count; ++k) consider(more_[near.more + k]);
+      consider(centre_of(near.first));
+      if (near.second != near.first) consider(centre_of(near.second));
+      if (near.more)
+        for (std::uint32_t k = 1; k <= more_[near.more]; ++k) consider(centre_of(more_[near.more + k]));
     }
   return std::sqrt(best);
 }
@@ -500,8 +531,9 @@ double DistanceField::distance(const Vec2& p) const {
   // The squared distance from a, in or on the edge of the cell, to the nearest obstacle: from the cell's candidates.
   const auto cell_best = [&](std::size_t cell, const Vec2& a) {
     const CellCandidates& near = candidates_[cell];
-    double b = std::min(square_distance_from(a, Vec2(near.x0, near.y0)), square_distance_from(a, Vec2(near.x1, near.y1)));
-    for (std::uint32_t k = 0; k < near.more_count; ++k) b = std::min(b, square_distance_from(a, more_[near.more + k]));
+    double b = std::min(square_distance_from(a, centre_of(near.first)), square_distance_from(a, centre_of(near.second)));
+    if (near.more)
+      for (std::uint32_t k = 1; k <= more_[near.more]; ++k) b = std::min(b, square_distance_from(a, centre_of(more_[near.more + k])));
     return b;
   };
   double best = kInf;
@@ -559,16 +591,16 @@ double DistanceField::distance(const Vec2& p) const {
     // the row's outermost obstacle toward p is its nearest.
     const bool left = gx < 0.0;
     const std::vector<int>& outermost = left ? row_first_ : row_last_;
-    const auto along = [&](int col) { return std::max(std::abs(p.x() - grid_.cell_center(0, col).x()) - half, 0.0); };
+    const auto along = [&](int col) { return std::max(std::abs(p.x() - centre_x_[col]) - half, 0.0); };
     outward(rows, gy, outermost, left ? row_block_first_ : row_block_last_, along,
-            [&](int r) { best = std::min(best, square_distance(grid_.cell_center(r, outermost[r]))); });
+            [&](int r) { best = std::min(best, square_distance(Vec2(centre_x_[outermost[r]], centre_y_[r]))); });
   } else if (gy < 0.0 || gy > rows) {
     // Likewise per column in y.
     const bool below = gy < 0.0;
     const std::vector<int>& outermost = below ? col_first_ : col_last_;
-    const auto along = [&](int row) { return std::max(std::abs(p.y() - grid_.cell_center(row, 0).y()) - half, 0.0); };
+    const auto along = [&](int row) { return std::max(std::abs(p.y() - centre_y_[row]) - half, 0.0); };
     outward(cols, gx, outermost, below ? col_block_first_ : col_block_last_, along,
-            [&](int c) { best = std::min(best, square_distance(grid_.cell_center(outermost[c], c))); });
+            [&](int c) { best = std::min(best, square_distance(Vec2(centre_x_[c], centre_y_[outermost[c]]))); });
   } else {
     // Inside the grid (its far edges included): the candidates of p's cell.
     best = cell_best(inside_cell(gx, gy), p);

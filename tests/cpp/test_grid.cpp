@@ -165,6 +165,15 @@ TEST(DistanceField, SingleObstacleHandCase) {
   EXPECT_NEAR(field.distance(Vec2(-4.0, -4.0)), std::hypot(6.0, 6.0), 1.0);
 }
 
+// Issue 15's budget for a large map: 5 cm cells, 3 % occupied at random.
+TEST(DistanceField, HoldsAtMost32BytesPerCellAt5Centimetres) {
+  std::mt19937 rng(15);
+  const OccupancyGrid grid = test::random_cells(rng, 400, 500, 0.05, Vec2(-3.0, 1.0), 0.03);
+  const DistanceField field(grid);
+  EXPECT_EQ(field.bound_subdivisions(), 2);
+  EXPECT_LE(field.bytes_per_cell(), 32.0);
+}
+
 // A field updated from an earlier one answers exactly as one built afresh,
 // whether the map gained a few cells (a robot's scan map), many, or lost some.
 TEST(DistanceField, UpdatedFromAnEarlierFieldEqualsAFreshOne) {

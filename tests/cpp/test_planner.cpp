@@ -931,19 +931,40 @@ TEST(DistanceField, LowerBoundNeverExceedsTheDistance) {
   std::uniform_real_distribution<double> x(-2.0, 8.0), y(-0.5, 7.5);
   EXPECT_EQ(field.bound_subdivisions(), 4);  // 2.5 cm pieces of 0.1 m cells
   const double piece_diagonal = std::sqrt(2.0) * 0.1 / 4;
+  const double step = 0.1 / 4 / 64;  // the table holds bounds in 64ths of a piece
   for (int i = 0; i < 20000; ++i) {
     const Vec2 p(x(rng), y(rng));
     const double bound = field.lower_bound(p), d = field.distance(p);
     ASSERT_LE(bound, d + 1e-12);
     const bool inside = p.x() > -1.0 && p.x() < 7.0 && p.y() > 0.5 && p.y() < 6.5;
     if (inside) {
-      ASSERT_GE(bound, d - piece_diagonal - 1e-6);  // no looser than its piece
+      ASSERT_GE(bound, d - piece_diagonal - step - 1e-9);  // no looser than its piece and one step
     } else {
       // Outside, free space: at least as far as the grid's edge.
       const double edge = std::hypot(std::max({-1.0 - p.x(), 0.0, p.x() - 7.0}), std::max({0.5 - p.y(), 0.0, p.y() - 6.5}));
       ASSERT_GE(bound, edge * (1.0 - 1e-9));
     }
   }
+}
+
+// Farther than the table's 16 bits reach (1024 pieces, 25.6 m here) a bound
+// stays at the largest it holds: still below the distance, and not wrapped
+// round to a small one.
+TEST(DistanceField, LowerBoundFarFromEveryObstacleStaysAtTheTablesLargest) {
+  std::vector<std::uint8_t> cells(3000, 0);
+  cells[0] = 1;
+  const OccupancyGrid grid(1, 3000, 0.1, Vec2(0.0, 0.0), cells);  // one obstacle at x = 0, 300 m of row
+  const DistanceField field(grid);
+  ASSERT_EQ(field.bound_subdivisions(), 4);
+  const double piece_diagonal = std::sqrt(2.0) * 0.1 / 4, step = 0.1 / 4 / 64, largest = 65535 * step;
+  for (double x = 0.05; x < 300.0; x += 0.37) {
+    const Vec2 p(x, 0.05);
+    const double bound = field.lower_bound(p), d = field.distance(p);
+    ASSERT_LE(bound, d + 1e-12) << x;
+    ASSERT_GE(bound, std::min(d - piece_diagonal - step, largest) - 1e-9) << x;
+    ASSERT_LE(bound, largest) << x;
+  }
+  EXPECT_EQ(field.lower_bound(Vec2(250.0, 0.05)), largest);
 }
 
 // A segment's distance is exact: no sample along it is nearer, and the

@@ -90,7 +90,14 @@ class TerrainGrid {
 // each changed cell, the rows those runs cross, and the look-up data of the
 // cells whose nearest obstacle changed and of their neighbours: its cost
 // follows the change, and it gives the same field as a fresh build.
-// bytes_per_cell() says what a field holds.
+//
+// bytes_per_cell() says what a field holds: about 27 bytes per cell at 5 cm
+// (the grid's copy 1, each cell's nearest occupied row in its column 4, its
+// candidates 12 and the others of cells with more than two about 2, the bound
+// table 2 per piece, 8 at 2 x 2 pieces a cell), more at coarser cells, whose
+// table is cut finer (16 pieces a cell at 10 cm), up to 4 million pieces in
+// all. update() appends the candidates it redoes and compacts them once half
+// are stale: a field that keeps being updated holds a little more.
 //
 // Threads: const methods may run concurrently on one field; update() may not
 // run while anything else uses the field.
@@ -120,9 +127,11 @@ class DistanceField {
   // segments of about a cell); NaN when that box leaves the grid.
   double segment_distance(const Vec2& a, const Vec2& b) const;
   // A value never above distance(p), from one table look-up: the distance
-  // between the piece of p's cell that holds p and the nearest obstacle square.
-  // Cells are cut into bound_subdivisions() x bound_subdivisions() pieces of
-  // about 2.5 cm, at least 2 x 2. Outside the grid, from the point q of the
+  // between the piece of p's cell that holds p and the nearest obstacle square,
+  // rounded down to a 64th of a piece and held at 1024 pieces (25.6 m at
+  // 2.5 cm) beyond: still a bound there, if a loose one. Cells are cut into
+  // bound_subdivisions() x bound_subdivisions() pieces of about 2.5 cm, at
+  // least 2 x 2. Outside the grid, from the point q of the
   // grid's edge nearest p: every obstacle lies in the grid, beyond q as seen
   // from p, so hypot(|p - q|, the bound at q) holds.
   double lower_bound(const Vec2& p) const { return lower_bounds()(p.x(), p.y()); }
@@ -130,7 +139,8 @@ class DistanceField {
   // The table behind lower_bound(), copied out so that a loop over many points
   // keeps it in registers. Valid while the field lives and is not updated.
   struct LowerBounds {
-    const float* pieces;  // null: no obstacles
+    const std::uint16_t* pieces;  // in steps, rounded down; null: no obstacles
+    double step;                  // m per step
     double origin_x, origin_y, inverse_piece;
     double cols, rows;  // pieces across and down the grid
     std::ptrdiff_t stride;
@@ -138,15 +148,15 @@ class DistanceField {
       if (!pieces) return std::numeric_limits<double>::infinity();
       const double gx = (x - origin_x) * inverse_piece, gy = (y - origin_y) * inverse_piece;
       if (gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows)
-        return pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
+        return step * pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
       return outside(gx, gy);
     }
     // Not a number in, 0 out: never above the distance.
     double outside(double gx, double gy) const {
       if (std::isnan(gx) || std::isnan(gy)) return 0.0;
       const double qx = std::clamp(gx, 0.0, cols), qy = std::clamp(gy, 0.0, rows);
-      const double at_q = pieces[static_cast<std::ptrdiff_t>(std::min(qy, rows - 1.0)) * stride +
-                                 static_cast<std::ptrdiff_t>(std::min(qx, cols - 1.0))];
+      const double at_q = step * pieces[static_cast<std::ptrdiff_t>(std::min(qy, rows - 1.0)) * stride +
+                                        static_cast<std::ptrdiff_t>(std::min(qx, cols - 1.0))];
       const double dx = (gx - qx) / inverse_piece, dy = (gy - qy) / inverse_piece;
       // Lowered a little below the rounding of the sum.
       return std::sqrt(dx * dx + dy * dy + at_q * at_q) * (1.0 - 1e-12);
@@ -154,6 +164,7 @@ class DistanceField {
   };
   LowerBounds lower_bounds() const {
     return LowerBounds{has_obstacles() ? piece_lower_bound_.data() : nullptr,
+                       bound_step_,
                        grid_.origin().x(),
                        grid_.origin().y(),
                        inverse_piece_,
@@ -166,6 +177,19 @@ class DistanceField {
   double bytes_per_cell() const;
 
  private:
+  // A cell in one word, its row above its column's bits (rows x 2^col_bits_
+  // stays below 2 x kMaxGridCells): a candidate takes 4 bytes, and reads back
+  // with a shift and a mask. kNoCell: none.
+  static constexpr std::uint32_t kNoCell = std::numeric_limits<std::uint32_t>::max();
+  std::uint32_t pack(int row, int col) const {
+    return static_cast<std::uint32_t>(row) << col_bits_ | static_cast<std::uint32_t>(col);
+  }
+  int row_of(std::uint32_t cell) const { return static_cast<int>(cell >> col_bits_); }
+  int col_of(std::uint32_t cell) const { return static_cast<int>(cell & col_mask_); }
+  // The same double as grid_.cell_center(), from two small tables (indexed
+  // unsigned: no sign extension in distance()'s inner loop).
+  Vec2 centre_of(std::uint32_t cell) const { return Vec2(centre_x_[cell & col_mask_], centre_y_[cell >> col_bits_]); }
+
   // The nearest occupied row of column `col` for rows [from, to].
   void column_pass(int col, int from, int to);
   // The nearest obstacles of row `row` from the column runs; appends the cells whose nearest changed.
@@ -178,20 +202,23 @@ class DistanceField {
 
   OccupancyGrid grid_;
   std::size_t occupied_ = 0;
-  // Per cell: the row of the nearest occupied cell in its column (-1: none),
-  // and its nearest occupied cell (a grid index, -1: none).
+  // Per cell: the row of the nearest occupied cell in its column (-1: none).
   std::vector<std::int32_t> column_nearest_;
-  std::vector<std::int32_t> nearest_;
-  // Per cell, the centres of the obstacles that can be nearest to a point in
-  // it (usually one to three): the first two inline (the first twice if it has
-  // one; +inf if none), any others more_[more, more + more_count).
+  // Per cell, the obstacles whose squares can be nearest to a point in it
+  // (usually one to three), packed: `first` is the cell's own nearest
+  // obstacle (kNoCell: the grid has none), which cell_distance() and the
+  // neighbours' look-up data read; `second` another, or `first` again; when
+  // there are more, more_[more] says how many follow it in more_ (more = 0:
+  // none; more_[0] is unused).
   struct CellCandidates {
-    double x0, y0, x1, y1;
-    std::uint32_t more, more_count;
+    std::uint32_t first, second, more;
   };
   std::vector<CellCandidates> candidates_;
-  std::vector<Vec2> more_;
+  std::vector<std::uint32_t> more_;
   std::size_t more_garbage_ = 0;
+  int col_bits_ = 0;
+  std::uint32_t col_mask_ = 0;
+  std::vector<double> centre_x_, centre_y_;  // per column and per row
   // Outermost occupied column of each row and row of each column, -1 for none;
   // per block of kOutermostBlock rows (columns), the outermost of its rows
   // (columns) on each side.
@@ -199,8 +226,11 @@ class DistanceField {
   std::vector<int> row_first_, row_last_, col_first_, col_last_;
   std::vector<int> row_block_first_, row_block_last_, col_block_first_, col_block_last_;
   // Per piece of a cell (subdivisions_ x subdivisions_ per cell): its distance
-  // to the nearest obstacle square, rounded down to a float, row-major.
-  std::vector<float> piece_lower_bound_;
+  // to the nearest obstacle square in whole steps of bound_step_ (a 64th of a
+  // piece), rounded down and held at 65535 beyond, row-major: two bytes a
+  // piece, and a step is far below the slack of the piece itself.
+  std::vector<std::uint16_t> piece_lower_bound_;
+  double bound_step_ = 1.0;  // m
   int subdivisions_ = 2;
   double inverse_resolution_ = 1.0;      // cells per metre
   double inverse_piece_ = 1.0;           // pieces per metre
@@ -210,7 +240,7 @@ class DistanceField {
   std::vector<double> f_, d_, z_;
   std::vector<int> v_, arg_;
   std::vector<double> piece_scratch_, gap_x_, gap_y_;
-  std::vector<std::uint8_t> stale_mark_;  // per cell, while update() runs; all 0 between calls
+  std::vector<bool> stale_mark_;  // per cell, while update() runs; all false between calls
 };
 
 }  // namespace fgdwa
