@@ -4,7 +4,8 @@
 // at 0.6 m/s from 32 seeded starts in free space. LocalPlanner::plan is timed
 // with each clearance source: the distance field (FieldClearance) and the exact
 // FCL world (CollisionWorld); and with the field for the Jackal's rectangle,
-// also from starts near the map's edge whose rollouts leave the grid.
+// also from starts near the map's edge whose rollouts leave the grid, and
+// from the same starts with the map padded so that they stay on it.
 // Then PythonRobotics' DWA example with point obstacles (PeerScene below).
 // Also what building the field of that map costs, updating it for one cell
 // (with the field's bytes per cell), and building the FCL world.
@@ -107,6 +108,32 @@ void BM_PlanFieldClearanceAtEdge(benchmark::State& bench) {
 void BM_PlanFieldClearanceJackalAtEdge(benchmark::State& bench) {
   Scene scene(robot_preset("jackal").footprint, true);
   const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
+  plan_cycles(bench, scene, world);
+}
+
+// The same starts at the edge with the map padded by 4 m of free cells on
+// every side, so that the rollouts stay on the grid: against the two cases
+// above, what leaving the grid itself costs (the starts and the obstacles
+// they see are the same; only where the grid ends differs).
+DistanceField padded_field(const OccupancyGrid& grid, double margin) {
+  const int pad = static_cast<int>(std::round(margin / grid.resolution()));
+  const int rows = grid.rows() + 2 * pad, cols = grid.cols() + 2 * pad;
+  std::vector<std::uint8_t> cells(static_cast<std::size_t>(rows) * cols, 0);
+  for (int r = 0; r < grid.rows(); ++r)
+    for (int c = 0; c < grid.cols(); ++c) cells[static_cast<std::size_t>(r + pad) * cols + c + pad] = grid.occupied(r, c);
+  const Vec2 origin = grid.origin() - Vec2(pad * grid.resolution(), pad * grid.resolution());
+  return DistanceField(OccupancyGrid(rows, cols, grid.resolution(), origin, std::move(cells)));
+}
+
+void BM_PlanFieldClearanceAtEdgePadded(benchmark::State& bench) {
+  Scene scene(Footprint::circle(0.25), true);
+  const FieldClearance world(std::make_shared<const DistanceField>(padded_field(scene.grid, 4.0)));
+  plan_cycles(bench, scene, world);
+}
+
+void BM_PlanFieldClearanceJackalAtEdgePadded(benchmark::State& bench) {
+  Scene scene(robot_preset("jackal").footprint, true);
+  const FieldClearance world(std::make_shared<const DistanceField>(padded_field(scene.grid, 4.0)));
   plan_cycles(bench, scene, world);
 }
 
@@ -227,6 +254,8 @@ BENCHMARK(BM_PlanFieldClearance)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)
 BENCHMARK(BM_PlanFieldClearanceJackal)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanFieldClearanceAtEdge)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanFieldClearanceJackalAtEdge)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PlanFieldClearanceAtEdgePadded)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
+BENCHMARK(BM_PlanFieldClearanceJackalAtEdgePadded)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PlanCollisionWorld)->Arg(1)->Arg(32)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PeerPointObstacles)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_PeerRasterised)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);

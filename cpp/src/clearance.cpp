@@ -77,29 +77,6 @@ void FieldClearance::split_moving() {
 }
 
 namespace {
-// m: how finely a polygon's outline is resolved where an obstacle is near it.
-constexpr double kOutlineTolerance = 0.005;
-
-// Lowers `best` to the smallest distance along the outline piece from a to b
-// (at distances da and db), within half of kOutlineTolerance below. The field
-// is 1-Lipschitz, so the piece of length L holds no point nearer than
-// (da + db - L) / 2: pieces whose bound could still lower `best` are halved
-// down to kOutlineTolerance, where the bound itself is taken.
-void refine_piece(const DistanceField& field, const Vec2& a, double da, const Vec2& b, double db, double& best) {
-  const double length = (b - a).norm();
-  const double bound = 0.5 * (da + db - length);
-  if (bound >= best) return;
-  if (length <= kOutlineTolerance) {
-    best = bound;
-    return;
-  }
-  const Vec2 mid = 0.5 * (a + b);
-  const double dm = field.distance(mid);
-  best = std::min(best, dm);
-  refine_piece(field, mid, dm, b, db, best);
-  refine_piece(field, a, da, mid, dm, best);
-}
-
 // The footprint's clearance from the field's obstacles where it is below
 // `cutoff`; elsewhere a value from cutoff up to it. Both give the same bits
 // below the cutoff: the result is the least of the distances and piece bounds
@@ -110,13 +87,13 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   if (!field || !field->has_obstacles()) return kInf;
   if (footprint.is_circle()) return field->distance(pose.position()) - footprint.radius();
 
-  // Polygon: the distance from its outline, never above the true one and at
-  // most half of kOutlineTolerance below it. The outline is sampled at
+  // Polygon: the distance from its outline. The outline is sampled at
   // half-cell spacing. Exact distances are asked where the table's lower
   // bounds leave it open: first at the sample of lowest bound, then at every
-  // sample whose bound is below the best so far, then at the ends of the pieces
-  // between samples whose bound could still be below it, which refine_piece
-  // halves as far as needed.
+  // sample whose bound is below the best so far; then the pieces between
+  // samples whose bound could still be below it (the field is 1-Lipschitz, so
+  // a piece of length L holds no point nearer than (da + db - L) / 2) are
+  // measured whole, inside the grid or out.
   const double res = field->grid().resolution();
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   const auto world = [&](const Vec2& q) { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); };
@@ -164,13 +141,7 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     const double length = (to.point - from.point).norm();
     const auto known = [](const Sample& sample) { return std::isnan(sample.exact) ? sample.low : sample.exact; };
     if (0.5 * (known(from) + known(to) - length) >= best) continue;
-    const double along = field->segment_distance(from.point, to.point);
-    if (!std::isnan(along)) {
-      best = std::min(best, along);
-      continue;
-    }
-    best = std::min({best, exact(from), exact(to)});
-    refine_piece(*field, from.point, from.exact, to.point, to.exact, best);
+    best = std::min(best, field->segment_distance(from.point, to.point));
   }
   if (best <= 0.0 || field->lower_bound(pose.position()) >= footprint.radius() ||
       field->distance(pose.position()) >= footprint.radius())
@@ -201,8 +172,7 @@ double point_lower_bound(const DistanceField* field, const DistanceField* sensed
   return best;
 }
 
-// A polygon's: every point of it lies in one of its cover discs, and its
-// clearance may sit up to half the outline tolerance under the truth.
+// A polygon's: every point of it lies in one of its cover discs.
 double polygon_lower_bound(const DistanceField* field, const DistanceField* sensed, const Footprint& footprint,
                            const Pose2& pose) {
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
@@ -211,7 +181,7 @@ double polygon_lower_bound(const DistanceField* field, const DistanceField* sens
     const Vec2 p(pose.x + c * d.centre.x() - s * d.centre.y(), pose.y + s * d.centre.x() + c * d.centre.y());
     best = std::min(best, point_lower_bound(field, sensed, p) - d.radius);
   }
-  return best - 0.5 * kOutlineTolerance;
+  return best;
 }
 
 }  // namespace

@@ -482,32 +482,175 @@ double segment_square_distance2(const Vec2& a, const Vec2& d, double h) {
 }
 }  // namespace
 
+inline double DistanceField::cell_square_distance(std::size_t cell, const Vec2& a) const {
+  const double half = 0.5 * grid_.resolution();
+  const auto from = [&](std::uint32_t o) {
+    const Vec2 centre = centre_of(o);
+    const double dx = std::max(std::abs(a.x() - centre.x()) - half, 0.0);
+    const double dy = std::max(std::abs(a.y() - centre.y()) - half, 0.0);
+    return dx * dx + dy * dy;
+  };
+  const CellCandidates& near = candidates_[cell];
+  double best = std::min(from(near.first), from(near.second));
+  if (near.more)
+    for (std::uint32_t k = 1; k <= more_[near.more]; ++k) best = std::min(best, from(more_[near.more + k]));
+  return best;
+}
+
+inline std::size_t DistanceField::cell_at(double gx, double gy) const {
+  const int rows = grid_.rows(), cols = grid_.cols();
+  return grid_.index(std::clamp(static_cast<int>(std::floor(gy)), 0, rows - 1),
+                     std::clamp(static_cast<int>(std::floor(gx)), 0, cols - 1));
+}
+
+inline double DistanceField::outside_start(const Vec2& p, double gx, double gy) const {
+  // The distance to the grid's nearest point q, plus q's own (from q's cell),
+  // a little raised so that the obstacle giving it is still visited. Started
+  // from infinity, a point beside an edge with no obstacle near it walked
+  // line after line before the gap alone beat the best.
+  const double qx = std::clamp(gx, 0.0, static_cast<double>(grid_.cols()));
+  const double qy = std::clamp(gy, 0.0, static_cast<double>(grid_.rows()));
+  const Vec2 q(grid_.origin().x() + qx * grid_.resolution(), grid_.origin().y() + qy * grid_.resolution());
+  const double bound = (p - q).norm() + std::sqrt(cell_square_distance(cell_at(qx, qy), q));
+  return bound * bound * (1.0 + 1e-9) + 1e-300;
+}
+
+// Lines (rows or columns) taken outward from those the span [lo, hi] covers
+// (in cells, across the lines; a point's span is one value), each through
+// `candidate(line)`, until a line's gap alone (its distance from the span
+// across the lines) is no nearer than `best` (squared, which the candidates
+// lower): the same minimum as over every line.
+//
+// Lines come in blocks of kOutermostBlock; a block is skipped whole when its
+// gap and the reach of its outermost obstacle along the lines (`along`, the
+// distance from the span to the block's extreme outermost square) together
+// are no nearer than the best: far from the grid the best is far, and without
+// the blocks every line would be visited.
+template <class Along, class Candidate>
+void DistanceField::walk_outward(int lines, double lo, double hi, const std::vector<int>& outermost,
+                                 const std::vector<int>& block_extreme, const Along& along, const Candidate& candidate,
+                                 const double& best) const {
+  const double res = grid_.resolution();
+  const int nearest = static_cast<int>(std::clamp(std::floor(lo), 0.0, lines - 1.0));
+  const auto gap = [&](int line) {
+    const double g = std::max({line - hi, lo - line - 1.0, 0.0}) * res;
+    return g * g;
+  };
+  // The gap is rounded unlike the candidates' distances: a line or block
+  // within a rounding error of the best is still taken.
+  const auto visit_block = [&](int block, int from, int to) {  // lines from..to, nearest first
+    if (block_extreme[static_cast<std::size_t>(block)] < 0) return;
+    const double reach = along(block_extreme[static_cast<std::size_t>(block)]);
+    if ((reach * reach + gap(from)) * (1.0 - 1e-9) >= best) return;
+    const int step = to >= from ? 1 : -1;
+    for (int line = from; line != to + step && gap(line) * (1.0 - 1e-9) < best; line += step)
+      if (outermost[static_cast<std::size_t>(line)] >= 0) candidate(line);
+  };
+  for (int line = nearest; line >= 0 && gap(line) * (1.0 - 1e-9) < best;) {
+    const int block = line / kOutermostBlock, first = block * kOutermostBlock;
+    visit_block(block, line, first);
+    line = first - 1;
+  }
+  for (int line = nearest + 1; line < lines && gap(line) * (1.0 - 1e-9) < best;) {
+    const int block = line / kOutermostBlock, last = std::min(lines - 1, (block + 1) * kOutermostBlock - 1);
+    visit_block(block, line, last);
+    line = last + 1;
+  }
+}
+
+// Lowers the squared `best` to the distance from the segment ab to the
+// obstacle square centred at `centre`; a square no nearer than `best` by its
+// centre's distance less its half diagonal is skipped.
+inline void DistanceField::segment_to_square(const Vec2& a, const Vec2& b, const Vec2& centre, double& best) const {
+  const double half = 0.5 * grid_.resolution();
+  const double reach = std::max(point_segment_distance(centre, a, b) - M_SQRT2 * half, 0.0);
+  if (reach * reach < best) best = std::min(best, segment_square_distance2(a - centre, b - a, half));
+}
+
+// ab inside the grid (ga, gb: its ends in cells): every point's nearest
+// obstacle is a candidate of its cell.
+inline void DistanceField::segment_inside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const {
+  const auto cell = [](double g, int count) { return std::clamp(static_cast<int>(std::floor(g)), 0, count - 1); };
+  const int r0 = cell(std::min(ga.y(), gb.y()), grid_.rows()), r1 = cell(std::max(ga.y(), gb.y()), grid_.rows());
+  const int c0 = cell(std::min(ga.x(), gb.x()), grid_.cols()), c1 = cell(std::max(ga.x(), gb.x()), grid_.cols());
+  double nearest = best;  // a local: the tables' doubles cannot alias it
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      const CellCandidates& near = candidates_[grid_.index(r, c)];
+      segment_to_square(a, b, centre_of(near.first), nearest);
+      if (near.second != near.first) segment_to_square(a, b, centre_of(near.second), nearest);
+      if (near.more)
+        for (std::uint32_t k = 1; k <= more_[near.more]; ++k) segment_to_square(a, b, centre_of(more_[near.more + k]), nearest);
+    }
+  best = nearest;
+}
+
+// ab wholly on one side outside the grid (ga, gb: its ends in cells), as
+// distance() does it for a point: each row (column) facing it offers its
+// outermost obstacle alone.
+void DistanceField::segment_outside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const {
+  const int rows = grid_.rows(), cols = grid_.cols();
+  const double half = 0.5 * grid_.resolution();
+  best = std::min(best, outside_start(a, ga.x(), ga.y()));
+  const double mid_x = 0.5 * (ga.x() + gb.x()), mid_y = 0.5 * (ga.y() + gb.y());
+  if (mid_x < 0.0 || mid_x > cols) {
+    const bool left = mid_x < 0.0;
+    const std::vector<int>& outermost = left ? row_first_ : row_last_;
+    const double x0 = std::min(a.x(), b.x()), x1 = std::max(a.x(), b.x());
+    const auto along = [&](int col) { return std::max({centre_x_[col] - half - x1, x0 - centre_x_[col] - half, 0.0}); };
+    walk_outward(rows, std::min(ga.y(), gb.y()), std::max(ga.y(), gb.y()), outermost,
+                 left ? row_block_first_ : row_block_last_, along,
+                 [&](int r) { segment_to_square(a, b, Vec2(centre_x_[outermost[r]], centre_y_[r]), best); }, best);
+  } else {
+    const bool below = mid_y < 0.0;
+    const std::vector<int>& outermost = below ? col_first_ : col_last_;
+    const double y0 = std::min(a.y(), b.y()), y1 = std::max(a.y(), b.y());
+    const auto along = [&](int row) { return std::max({centre_y_[row] - half - y1, y0 - centre_y_[row] - half, 0.0}); };
+    walk_outward(cols, std::min(ga.x(), gb.x()), std::max(ga.x(), gb.x()), outermost,
+                 below ? col_block_first_ : col_block_last_, along,
+                 [&](int c) { segment_to_square(a, b, Vec2(centre_x_[c], centre_y_[outermost[c]]), best); }, best);
+  }
+}
+
 double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
   detail::require_field_point("a", a);
   detail::require_field_point("b", b);
   if (!has_obstacles()) return kInf;
-  const double ax = (a.x() - grid_.origin().x()) * inverse_resolution_, ay = (a.y() - grid_.origin().y()) * inverse_resolution_;
-  const double bx = (b.x() - grid_.origin().x()) * inverse_resolution_, by = (b.y() - grid_.origin().y()) * inverse_resolution_;
-  const double x0 = std::min(ax, bx), x1 = std::max(ax, bx), y0 = std::min(ay, by), y1 = std::max(ay, by);
-  if (!(x0 >= 0.0 && y0 >= 0.0 && x1 < grid_.cols() && y1 < grid_.rows()))
-    return std::numeric_limits<double>::quiet_NaN();
-  const double half = 0.5 * grid_.resolution();
-  const Vec2 d = b - a;
-  double best = kInf;  // squared
-  // A square no nearer than `best` by its centre's distance less its half
-  // diagonal is skipped.
-  const auto consider = [&](const Vec2& centre) {
-    const double reach = std::max(point_segment_distance(centre, a, b) - M_SQRT2 * half, 0.0);
-    if (reach * reach < best) best = std::min(best, segment_square_distance2(a - centre, d, half));
+  const double rows = grid_.rows(), cols = grid_.cols();
+  const auto in_cells = [&](const Vec2& p) {
+    return Vec2((p.x() - grid_.origin().x()) * inverse_resolution_, (p.y() - grid_.origin().y()) * inverse_resolution_);
   };
-  for (int r = static_cast<int>(y0); r <= static_cast<int>(y1); ++r)
-    for (int c = static_cast<int>(x0); c <= static_cast<int>(x1); ++c) {
-      const CellCandidates& near = candidates_[grid_.index(r, c)];
-      consider(centre_of(near.first));
-      if (near.second != near.first) consider(centre_of(near.second));
-      if (near.more)
-        for (std::uint32_t k = 1; k <= more_[near.more]; ++k) consider(centre_of(more_[near.more + k]));
-    }
+  const Vec2 ga = in_cells(a), gb = in_cells(b);
+  const auto inside = [&](const Vec2& g) { return g.x() >= 0.0 && g.x() <= cols && g.y() >= 0.0 && g.y() <= rows; };
+  double best = kInf;  // squared
+  if (inside(ga) && inside(gb)) {
+    segment_inside(a, b, ga, gb, best);
+    return std::sqrt(best);
+  }
+  // Cut where the segment crosses the grid's edges: each piece lies inside the
+  // grid or wholly on one side of it.
+  double cuts[6] = {0.0, 1.0};
+  int n = 2;
+  const auto cut = [&](double from, double to, double edge) {
+    if (!((from < edge && edge < to) || (to < edge && edge < from))) return;
+    // Kept in order (at most four cuts).
+    const double t = (edge - from) / (to - from);
+    int at = n++;
+    for (; at > 0 && cuts[at - 1] > t; --at) cuts[at] = cuts[at - 1];
+    cuts[at] = t;
+  };
+  cut(ga.x(), gb.x(), 0.0);
+  cut(ga.x(), gb.x(), cols);
+  cut(ga.y(), gb.y(), 0.0);
+  cut(ga.y(), gb.y(), rows);
+  for (int i = 0; i + 1 < n; ++i) {
+    if (cuts[i + 1] <= cuts[i]) continue;  // a corner crossed: the same cut twice
+    const auto at = [&](const Vec2& from, const Vec2& to, double t) { return t == 1.0 ? to : from + t * (to - from); };
+    const Vec2 pa = at(a, b, cuts[i]), pb = at(a, b, cuts[i + 1]);
+    const Vec2 qa = at(ga, gb, cuts[i]), qb = at(ga, gb, cuts[i + 1]);
+    if (inside(0.5 * (qa + qb))) segment_inside(pa, pb, qa, qb, best);
+    else segment_outside(pa, pb, qa, qb, best);
+  }
   return std::sqrt(best);
 }
 
@@ -518,92 +661,29 @@ double DistanceField::distance(const Vec2& p) const {
   const int rows = grid_.rows(), cols = grid_.cols();
   const double gx = (p.x() - grid_.origin().x()) * inverse_resolution_;
   const double gy = (p.y() - grid_.origin().y()) * inverse_resolution_;
-  // Squared distance from a to the obstacle square centred at o.
-  const auto square_distance_from = [&](const Vec2& a, const Vec2& o) {
-    const double dx = std::max(std::abs(a.x() - o.x()) - half, 0.0);
-    const double dy = std::max(std::abs(a.y() - o.y()) - half, 0.0);
+  // Inside the grid (its far edges included): the candidates of p's cell.
+  if (!(gx < 0.0 || gx > cols || gy < 0.0 || gy > rows)) return std::sqrt(cell_square_distance(cell_at(gx, gy), p));
+  const auto square_distance = [&](const Vec2& o) {
+    const double dx = std::max(std::abs(p.x() - o.x()) - half, 0.0);
+    const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
     return dx * dx + dy * dy;
   };
-  const auto square_distance = [&](const Vec2& o) { return square_distance_from(p, o); };
-  const auto inside_cell = [&](double x, double y) {
-    return grid_.index(std::min(static_cast<int>(y), rows - 1), std::min(static_cast<int>(x), cols - 1));
-  };
-  // The squared distance from a, in or on the edge of the cell, to the nearest obstacle: from the cell's candidates.
-  const auto cell_best = [&](std::size_t cell, const Vec2& a) {
-    const CellCandidates& near = candidates_[cell];
-    double b = std::min(square_distance_from(a, centre_of(near.first)), square_distance_from(a, centre_of(near.second)));
-    if (near.more)
-      for (std::uint32_t k = 1; k <= more_[near.more]; ++k) b = std::min(b, square_distance_from(a, centre_of(more_[near.more + k])));
-    return b;
-  };
-  double best = kInf;
-  if (gx < 0.0 || gx > cols || gy < 0.0 || gy > rows) {
-    // Outside the grid, the walk below starts from an upper bound: the distance
-    // to the grid's nearest point q, plus q's own (from q's cell), a little
-    // raised so that the obstacle giving it is still visited. Started from
-    // infinity, a point beside an edge with no obstacle near it walked line
-    // after line before the gap alone beat the best.
-    const double qx = std::clamp(gx, 0.0, static_cast<double>(cols)), qy = std::clamp(gy, 0.0, static_cast<double>(rows));
-    const Vec2 q(grid_.origin().x() + qx * grid_.resolution(), grid_.origin().y() + qy * grid_.resolution());
-    const double bound = (p - q).norm() + std::sqrt(cell_best(inside_cell(qx, qy), q));
-    best = bound * bound * (1.0 + 1e-9) + 1e-300;
-  }
-  // Lines (rows or columns) taken outward from the one nearest p, each
-  // through `candidate(line)`, until a line's gap alone (its distance from p
-  // across the lines, `across` in cells) is no nearer than the best so far:
-  // the same minimum as over every line.
-  //
-  // Lines come in blocks of kOutermostBlock; a block is skipped whole when its
-  // gap and the reach of its outermost obstacle along the lines (`along`, the
-  // distance from p to the block's extreme outermost centre, less half a
-  // cell) together are no nearer than the best: far from the grid the best is
-  // far, and without the blocks every line would be visited.
-  const auto outward = [&](int lines, double across, const std::vector<int>& outermost,
-                           const std::vector<int>& block_extreme, const auto& along, const auto& candidate) {
-    const int nearest = static_cast<int>(std::clamp(std::floor(across), 0.0, lines - 1.0));
-    const auto gap = [&](int line) {
-      const double g = std::max(std::abs(line + 0.5 - across) - 0.5, 0.0) * grid_.resolution();
-      return g * g;
-    };
-    // The gap is rounded unlike the candidates' distances: a line or block
-    // within a rounding error of the best is still taken.
-    const auto visit_block = [&](int block, int from, int to) {  // lines from..to, nearest first
-      if (block_extreme[static_cast<std::size_t>(block)] < 0) return;
-      const double reach = along(block_extreme[static_cast<std::size_t>(block)]);
-      if ((reach * reach + gap(from)) * (1.0 - 1e-9) >= best) return;
-      const int step = to >= from ? 1 : -1;
-      for (int line = from; line != to + step && gap(line) * (1.0 - 1e-9) < best; line += step)
-        if (outermost[static_cast<std::size_t>(line)] >= 0) candidate(line);
-    };
-    for (int line = nearest; line >= 0 && gap(line) * (1.0 - 1e-9) < best;) {
-      const int block = line / kOutermostBlock, first = block * kOutermostBlock;
-      visit_block(block, line, first);
-      line = first - 1;
-    }
-    for (int line = nearest + 1; line < lines && gap(line) * (1.0 - 1e-9) < best;) {
-      const int block = line / kOutermostBlock, last = std::min(lines - 1, (block + 1) * kOutermostBlock - 1);
-      visit_block(block, line, last);
-      line = last + 1;
-    }
-  };
+  double best = outside_start(p, gx, gy);
   if (gx < 0.0 || gx > cols) {
     // Outside the grid every cell of a row lies on the same side of p in x, so
     // the row's outermost obstacle toward p is its nearest.
     const bool left = gx < 0.0;
     const std::vector<int>& outermost = left ? row_first_ : row_last_;
     const auto along = [&](int col) { return std::max(std::abs(p.x() - centre_x_[col]) - half, 0.0); };
-    outward(rows, gy, outermost, left ? row_block_first_ : row_block_last_, along,
-            [&](int r) { best = std::min(best, square_distance(Vec2(centre_x_[outermost[r]], centre_y_[r]))); });
-  } else if (gy < 0.0 || gy > rows) {
+    walk_outward(rows, gy, gy, outermost, left ? row_block_first_ : row_block_last_, along,
+                 [&](int r) { best = std::min(best, square_distance(Vec2(centre_x_[outermost[r]], centre_y_[r]))); }, best);
+  } else {
     // Likewise per column in y.
     const bool below = gy < 0.0;
     const std::vector<int>& outermost = below ? col_first_ : col_last_;
     const auto along = [&](int row) { return std::max(std::abs(p.y() - centre_y_[row]) - half, 0.0); };
-    outward(cols, gx, outermost, below ? col_block_first_ : col_block_last_, along,
-            [&](int c) { best = std::min(best, square_distance(Vec2(centre_x_[c], centre_y_[outermost[c]]))); });
-  } else {
-    // Inside the grid (its far edges included): the candidates of p's cell.
-    best = cell_best(inside_cell(gx, gy), p);
+    walk_outward(cols, gx, gx, outermost, below ? col_block_first_ : col_block_last_, along,
+                 [&](int c) { best = std::min(best, square_distance(Vec2(centre_x_[c], centre_y_[outermost[c]]))); }, best);
   }
   return std::sqrt(best);
 }

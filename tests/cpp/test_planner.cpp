@@ -967,16 +967,23 @@ TEST(DistanceField, LowerBoundFarFromEveryObstacleStaysAtTheTablesLargest) {
   EXPECT_EQ(field.lower_bound(Vec2(250.0, 0.05)), largest);
 }
 
-// A segment's distance is exact: no sample along it is nearer, and the
-// nearest of fine samples is within half their spacing of it.
+// A segment's distance is exact, inside the grid, outside it and across its
+// edges and corners: no sample along it is nearer, and the nearest of fine
+// samples is within half their spacing of it.
 TEST(DistanceField, SegmentDistanceIsTheNearestPointOfTheSegment) {
   std::mt19937 rng(9);
   const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.2);
   const DistanceField field(grid);
+  // The grid spans x in [-1, 7] and y in [0.5, 6.5].
   std::uniform_real_distribution<double> x(-0.8, 6.8), y(0.7, 6.3), step(-0.1, 0.1);
-  int touching = 0;
-  for (int i = 0; i < 3000; ++i) {
-    const Vec2 a(x(rng), y(rng)), b = a + Vec2(step(rng), step(rng));
+  std::uniform_real_distribution<double> out_x(-1.6, 7.6), out_y(-0.1, 7.1), long_step(-0.4, 0.4);
+  int touching = 0, across = 0;
+  for (int i = 0; i < 6000; ++i) {
+    const bool inside = i % 2 == 0;
+    const Vec2 a = inside ? Vec2(x(rng), y(rng)) : Vec2(out_x(rng), out_y(rng));
+    const Vec2 b = a + (inside ? Vec2(step(rng), step(rng)) : Vec2(long_step(rng), long_step(rng)));
+    const auto in_grid = [](const Vec2& p) { return p.x() >= -1.0 && p.x() <= 7.0 && p.y() >= 0.5 && p.y() <= 6.5; };
+    across += in_grid(a) != in_grid(b);
     const double d = field.segment_distance(a, b);
     double sampled = kInf;
     const int n = 200;
@@ -987,8 +994,12 @@ TEST(DistanceField, SegmentDistanceIsTheNearestPointOfTheSegment) {
     touching += d == 0.0;
   }
   EXPECT_GT(touching, 100);
-  // Leaving the grid: not answered; no obstacles: infinitely far.
-  EXPECT_TRUE(std::isnan(field.segment_distance(Vec2(-1.05, 1.0), Vec2(-0.95, 1.0))));
+  EXPECT_GT(across, 150);
+  // A segment of one point is that point's distance; one lying along the
+  // grid's edge is no farther than any of its points.
+  EXPECT_DOUBLE_EQ(field.segment_distance(Vec2(-1.05, 1.0), Vec2(-1.05, 1.0)), field.distance(Vec2(-1.05, 1.0)));
+  EXPECT_LE(field.segment_distance(Vec2(-1.0, 0.5), Vec2(7.0, 0.5)), field.distance(Vec2(3.0, 0.5)));
+  // No obstacles: infinitely far.
   const DistanceField empty(OccupancyGrid(10, 10, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(100, 0)));
   EXPECT_TRUE(std::isinf(empty.segment_distance(Vec2(0.2, 0.2), Vec2(0.3, 0.3))));
 }

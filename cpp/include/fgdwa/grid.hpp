@@ -122,9 +122,10 @@ class DistanceField {
   std::vector<double> cell_distances() const;
   bool has_obstacles() const { return occupied_ > 0; }
   double distance(const Vec2& p) const;
-  // The distance from the segment ab to the nearest obstacle square, exactly,
-  // from the candidates of the cells its bounding box covers (meant for
-  // segments of about a cell); NaN when that box leaves the grid.
+  // The distance from the segment ab to the nearest obstacle square, exactly
+  // (meant for segments of about a cell): inside the grid from the candidates
+  // of the cells its bounding box covers; outside, from the outermost obstacle
+  // of each row (column) facing it, as distance() measures a point there.
   double segment_distance(const Vec2& a, const Vec2& b) const;
   // A value never above distance(p), from one table look-up: the distance
   // between the piece of p's cell that holds p and the nearest obstacle square,
@@ -190,6 +191,24 @@ class DistanceField {
   // unsigned: no sign extension in distance()'s inner loop).
   Vec2 centre_of(std::uint32_t cell) const { return Vec2(centre_x_[cell & col_mask_], centre_y_[cell >> col_bits_]); }
 
+  // The squared distance from a, in or on the edge of cell `cell`, to the
+  // nearest obstacle square: from the cell's candidates.
+  double cell_square_distance(std::size_t cell, const Vec2& a) const;
+  // The cell holding the point at (gx, gy) in cells from the origin, clamped to the grid.
+  std::size_t cell_at(double gx, double gy) const;
+  // For p outside the grid (at gx, gy in cells): a squared distance a little
+  // above p's, from the grid's point nearest p; where the walks outward start.
+  double outside_start(const Vec2& p, double gx, double gy) const;
+  template <class Along, class Candidate>
+  void walk_outward(int lines, double lo, double hi, const std::vector<int>& outermost,
+                    const std::vector<int>& block_extreme, const Along& along, const Candidate& candidate,
+                    const double& best) const;
+  // segment_distance()'s parts, lowering the squared `best`: one square; a
+  // segment inside the grid; one wholly on one side outside it (ga, gb: the
+  // ends in cells from the origin).
+  void segment_to_square(const Vec2& a, const Vec2& b, const Vec2& centre, double& best) const;
+  void segment_inside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const;
+  void segment_outside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const;
   // The nearest occupied row of column `col` for rows [from, to].
   void column_pass(int col, int from, int to);
   // The nearest obstacles of row `row` from the column runs; appends the cells whose nearest changed.
