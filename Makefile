@@ -74,12 +74,13 @@ bench: setup
 # UndefinedBehaviorSanitizer in a tree of their own; ctest, then the fuzz and
 # bad-input modules against the sanitized extension (the venv's Python with the
 # sanitizers' runtimes preloaded; Python's own allocations are not leak-checked).
+# -O1 with line tables: what ASan advises, and half the build time of -O2 -g.
 SANITIZE_BUILD ?= build/sanitize
 SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 SANITIZE_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 sanitize: setup
-	$(BIN)/cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON \
+	$(BIN)/cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1 -DNDEBUG" -DBUILD_TESTING=ON \
 	  -DFGDWA_BUILD_PYTHON=ON -DFGDWA_BUILD_ROS=OFF -DPython_EXECUTABLE=$(abspath $(BIN))/python \
 	  -Dpybind11_DIR="$$($(BIN)/python -m pybind11 --cmakedir)" -DCMAKE_CXX_FLAGS="$(SANITIZE_FLAGS)" \
 	  -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZE_FLAGS)" -DCMAKE_SHARED_LINKER_FLAGS="$(SANITIZE_FLAGS)" \
