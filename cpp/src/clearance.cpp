@@ -128,6 +128,11 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
       if (samples[j].low < samples[lowest].low) lowest = j;
     }
   }
+  const OccupancyGrid& grid = field->grid();
+  const Vec2 grid_lo = grid.origin(), grid_hi = grid.origin() + res * Vec2(grid.cols(), grid.rows());
+  const auto on_grid = [&](const Vec2& p) {
+    return p.x() >= grid_lo.x() && p.y() >= grid_lo.y() && p.x() <= grid_hi.x() && p.y() <= grid_hi.y();
+  };
   const auto exact = [&](Sample& sample) {
     if (std::isnan(sample.exact)) sample.exact = field->distance(sample.point);
     return sample.exact;
@@ -141,13 +146,18 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     const double length = (to.point - from.point).norm();
     const auto known = [](const Sample& sample) { return std::isnan(sample.exact) ? sample.low : sample.exact; };
     if (0.5 * (known(from) + known(to) - length) >= best) continue;
+    if (!on_grid(from.point) || !on_grid(to.point)) {
+      // Off the grid (always so for a small field of sensed cells) a segment
+      // walks rows or columns; the exact distances at its ends often settle it.
+      best = std::min({best, exact(from), exact(to)});
+      if (0.5 * (from.exact + to.exact - length) >= best) continue;
+    }
     best = std::min(best, field->segment_distance(from.point, to.point));
   }
   if (best <= 0.0 || field->lower_bound(pose.position()) >= footprint.radius() ||
       field->distance(pose.position()) >= footprint.radius())
     return best;
   // An obstacle cell can sit wholly inside a footprint wider than a cell.
-  const OccupancyGrid& grid = field->grid();
   const double r = footprint.radius();
   const Vec2 lo = pose.position() - Vec2(r, r), hi = pose.position() + Vec2(r, r);
   // Clamped before the cast: a query far off the grid has no int index.
