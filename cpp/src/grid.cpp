@@ -585,31 +585,36 @@ inline void DistanceField::segment_inside(const Vec2& a, const Vec2& b, const Ve
   best = nearest;
 }
 
-// ab wholly on one side outside the grid (ga, gb: its ends in cells), as
-// distance() does it for a point: each row (column) facing it offers its
-// outermost obstacle alone.
-void DistanceField::segment_outside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const {
+// For the segment ab (a point when a == b) wholly on one side outside the
+// grid (ga, gb: its ends in cells): every cell of a row lies on the same side
+// of it in x (beside the grid) or of a column in y (beyond it), so the row's
+// (column's) outermost obstacle toward it is its nearest. Each is handed to
+// `measure(centre)`, which lowers the squared `best`.
+template <class Measure>
+void DistanceField::walk_outside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, const Measure& measure,
+                                 const double& best) const {
   const int rows = grid_.rows(), cols = grid_.cols();
   const double half = 0.5 * grid_.resolution();
-  best = std::min(best, outside_start(a, ga.x(), ga.y()));
   const double mid_x = 0.5 * (ga.x() + gb.x()), mid_y = 0.5 * (ga.y() + gb.y());
-  if (mid_x < 0.0 || mid_x > cols) {
-    const bool left = mid_x < 0.0;
-    const std::vector<int>& outermost = left ? row_first_ : row_last_;
-    const double x0 = std::min(a.x(), b.x()), x1 = std::max(a.x(), b.x());
-    const auto along = [&](int col) { return std::max({centre_x_[col] - half - x1, x0 - centre_x_[col] - half, 0.0}); };
-    walk_outward(rows, std::min(ga.y(), gb.y()), std::max(ga.y(), gb.y()), outermost,
-                 left ? row_block_first_ : row_block_last_, along,
-                 [&](int r) { segment_to_square(a, b, Vec2(centre_x_[outermost[r]], centre_y_[r]), best); }, best);
-  } else {
-    const bool below = mid_y < 0.0;
-    const std::vector<int>& outermost = below ? col_first_ : col_last_;
-    const double y0 = std::min(a.y(), b.y()), y1 = std::max(a.y(), b.y());
-    const auto along = [&](int row) { return std::max({centre_y_[row] - half - y1, y0 - centre_y_[row] - half, 0.0}); };
-    walk_outward(cols, std::min(ga.x(), gb.x()), std::max(ga.x(), gb.x()), outermost,
-                 below ? col_block_first_ : col_block_last_, along,
-                 [&](int c) { segment_to_square(a, b, Vec2(centre_x_[c], centre_y_[outermost[c]]), best); }, best);
-  }
+  const bool beside = mid_x < 0.0 || mid_x > cols;
+  // Across the lines: y beside the grid, x beyond it; along them the other.
+  const int axis = beside ? 0 : 1;
+  const bool low_side = beside ? mid_x < 0.0 : mid_y < 0.0;
+  const std::vector<int>& outermost = beside ? (low_side ? row_first_ : row_last_) : (low_side ? col_first_ : col_last_);
+  const std::vector<int>& blocks =
+      beside ? (low_side ? row_block_first_ : row_block_last_) : (low_side ? col_block_first_ : col_block_last_);
+  const std::vector<double>& along_centres = beside ? centre_x_ : centre_y_;
+  const std::vector<double>& across_centres = beside ? centre_y_ : centre_x_;
+  const double lo = std::min(a[axis], b[axis]), hi = std::max(a[axis], b[axis]);
+  const auto along = [&](int at) {
+    return std::max({along_centres[at] - half - hi, lo - along_centres[at] - half, 0.0});
+  };
+  const auto line = [&](int l) {
+    const double x = along_centres[outermost[l]], y = across_centres[l];
+    measure(beside ? Vec2(x, y) : Vec2(y, x));
+  };
+  walk_outward(beside ? rows : cols, std::min(ga[1 - axis], gb[1 - axis]), std::max(ga[1 - axis], gb[1 - axis]),
+               outermost, blocks, along, line, best);
 }
 
 double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
@@ -649,7 +654,10 @@ double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
     const Vec2 pa = at(a, b, cuts[i]), pb = at(a, b, cuts[i + 1]);
     const Vec2 qa = at(ga, gb, cuts[i]), qb = at(ga, gb, cuts[i + 1]);
     if (inside(0.5 * (qa + qb))) segment_inside(pa, pb, qa, qb, best);
-    else segment_outside(pa, pb, qa, qb, best);
+    else {
+      best = std::min(best, outside_start(pa, qa.x(), qa.y()));
+      walk_outside(pa, pb, qa, qb, [&](const Vec2& centre) { segment_to_square(pa, pb, centre, best); }, best);
+    }
   }
   return std::sqrt(best);
 }
@@ -669,22 +677,8 @@ double DistanceField::distance(const Vec2& p) const {
     return dx * dx + dy * dy;
   };
   double best = outside_start(p, gx, gy);
-  if (gx < 0.0 || gx > cols) {
-    // Outside the grid every cell of a row lies on the same side of p in x, so
-    // the row's outermost obstacle toward p is its nearest.
-    const bool left = gx < 0.0;
-    const std::vector<int>& outermost = left ? row_first_ : row_last_;
-    const auto along = [&](int col) { return std::max(std::abs(p.x() - centre_x_[col]) - half, 0.0); };
-    walk_outward(rows, gy, gy, outermost, left ? row_block_first_ : row_block_last_, along,
-                 [&](int r) { best = std::min(best, square_distance(Vec2(centre_x_[outermost[r]], centre_y_[r]))); }, best);
-  } else {
-    // Likewise per column in y.
-    const bool below = gy < 0.0;
-    const std::vector<int>& outermost = below ? col_first_ : col_last_;
-    const auto along = [&](int row) { return std::max(std::abs(p.y() - centre_y_[row]) - half, 0.0); };
-    walk_outward(cols, gx, gx, outermost, below ? col_block_first_ : col_block_last_, along,
-                 [&](int c) { best = std::min(best, square_distance(Vec2(centre_x_[c], centre_y_[outermost[c]]))); }, best);
-  }
+  const Vec2 g(gx, gy);
+  walk_outside(p, p, g, g, [&](const Vec2& o) { best = std::min(best, square_distance(o)); }, best);
   return std::sqrt(best);
 }
 

@@ -204,11 +204,13 @@ class DistanceField {
                     const std::vector<int>& block_extreme, const Along& along, const Candidate& candidate,
                     const double& best) const;
   // segment_distance()'s parts, lowering the squared `best`: one square; a
-  // segment inside the grid; one wholly on one side outside it (ga, gb: the
-  // ends in cells from the origin).
+  // segment inside the grid (ga, gb: the ends in cells from the origin).
   void segment_to_square(const Vec2& a, const Vec2& b, const Vec2& centre, double& best) const;
   void segment_inside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const;
-  void segment_outside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const;
+  // The obstacles that can be nearest to a point or segment outside the grid, walked outward.
+  template <class Measure>
+  void walk_outside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, const Measure& measure,
+                    const double& best) const;
   // The nearest occupied row of column `col` for rows [from, to].
   void column_pass(int col, int from, int to);
   // The nearest obstacles of row `row` from the column runs; appends the cells whose nearest changed.
