@@ -51,7 +51,8 @@ void init_navigator(py::module_& m) {
                        FloatArg wait_radius, IntArg max_recoveries, FloatArg progress_reset, IntArg record_top_k,
                        const OccupancyParams& occupancy, FloatArg unknown_cost, bool track_moving,
                        const SegmentParams& segment, const TrackerParams& tracker, bool learn_obstacles,
-                       FloatArg mover_margin) {
+                       FloatArg mover_margin, bool route_around_movers, FloatArg mover_route_horizon,
+                       FloatArg mover_route_lookahead) {
              NavigatorParams p;
              p.path_margin = to_float(path_margin, "path_margin");
              p.replan_period = to_float(replan_period, "replan_period");
@@ -78,6 +79,9 @@ void init_navigator(py::module_& m) {
              p.tracker = tracker;
              p.learn_obstacles = learn_obstacles;
              p.mover_margin = to_float(mover_margin, "mover_margin");
+             p.route_around_movers = route_around_movers;
+             p.mover_route_horizon = to_float(mover_route_horizon, "mover_route_horizon");
+             p.mover_route_lookahead = to_float(mover_route_lookahead, "mover_route_lookahead");
              p.validate();
              return p;
            }),
@@ -89,7 +93,8 @@ void init_navigator(py::module_& m) {
            py::arg("progress_reset") = 1.0, py::arg("record_top_k") = 5,
            py::arg("occupancy") = OccupancyParams(), py::arg("unknown_cost") = 0.0, py::arg("track_moving") = true,
            py::arg("segment") = SegmentParams(), py::arg("tracker") = TrackerParams(), py::arg("learn_obstacles") = true,
-           py::arg("mover_margin") = 0.0,
+           py::arg("mover_margin") = 0.0, py::arg("route_around_movers") = true, py::arg("mover_route_horizon") = 1.0,
+           py::arg("mover_route_lookahead") = 3.0,
            "path_margin: m kept beyond the footprint's radius by the global path where the map allows; "
            "replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance "
            "(m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after "
@@ -103,7 +108,10 @@ void init_navigator(py::module_& m) {
            "predict them in the planner and keep their hits out of the map (False: every hit is static where it is, "
            "the ablation); segment, tracker: their settings; learn_obstacles: with a known map, obstacles the scans find "
            "that it lacks join it (False: they reach only the local planner, and the global one at a stall); mover_margin "
-           "(m): added to a tracked mover's radius.")
+           "(m): added to a tracked mover's radius; route_around_movers: the global path keeps off the floor each "
+           "moving obstacle sweeps over the next mover_route_horizon (s) at its predicted velocity, and a sweep within "
+           "the footprint's inscribed radius of the path's next mover_route_lookahead (m) asks for a new path (False: "
+           "movers reach only the local planner).")
       .def_readonly("path_margin", &NavigatorParams::path_margin)
       .def_readonly("replan_period", &NavigatorParams::replan_period)
       .def_readonly("stall_time", &NavigatorParams::stall_time)
@@ -126,6 +134,9 @@ void init_navigator(py::module_& m) {
       .def_readonly("tracker", &NavigatorParams::tracker)
       .def_readonly("learn_obstacles", &NavigatorParams::learn_obstacles)
       .def_readonly("mover_margin", &NavigatorParams::mover_margin)
+      .def_readonly("route_around_movers", &NavigatorParams::route_around_movers)
+      .def_readonly("mover_route_horizon", &NavigatorParams::mover_route_horizon)
+      .def_readonly("mover_route_lookahead", &NavigatorParams::mover_route_lookahead)
       .def("__repr__", [](const NavigatorParams& p) {
         std::ostringstream s;
         s << "NavigatorParams(stall_time=" << p.stall_time << ", backup_distance=" << p.backup_distance

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "mover_sweeps.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -68,6 +69,8 @@ void NavigatorParams::validate() const {
   detail::require_non_negative("unknown_cost", unknown_cost);
   detail::require_at_most("unknown_cost", unknown_cost, 1e6);
   detail::require_distance("mover_margin", mover_margin);
+  time("mover_route_horizon", mover_route_horizon);
+  detail::require_distance("mover_route_lookahead", mover_route_lookahead);
 }
 
 namespace {
@@ -78,6 +81,15 @@ double seconds_since(Clock::time_point start) {
 }
 
 int cycles_of(double seconds, double dt) { return static_cast<int>(std::lround(seconds / dt)); }
+
+// The sweeps of this cycle's moving obstacles that the global path keeps off.
+std::vector<detail::SweptDisc> mover_sweeps(const std::vector<Disc>& discs, const NavigatorParams& params) {
+  std::vector<detail::SweptDisc> sweeps;
+  if (!params.route_around_movers) return sweeps;
+  for (const Disc& d : discs)
+    if (d.moves()) sweeps.push_back(detail::sweep_of(d, params.mover_route_horizon));
+  return sweeps;
+}
 
 // Moves `current` toward `target` by at most `step`.
 double approach(double current, double target, double step) {
@@ -166,10 +178,16 @@ bool Navigator::plan_path(const Vec2& from) {
   replan_now_ = false;
   const OccupancyGrid& base = map();
   const bool any_closed = std::any_of(closed_.begin(), closed_.end(), [](std::uint8_t c) { return c != 0; });
+  const std::vector<detail::SweptDisc> sweeps = mover_sweeps(discs_now_, params_);
   std::optional<OccupancyGrid> with_closed;
-  if (any_closed) {
+  if (any_closed || !sweeps.empty()) {
     std::vector<std::uint8_t> cells = base.cells();
-    for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = cells[i] || closed_[i];
+    if (any_closed)
+      for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = cells[i] || closed_[i];
+    // Left open near the robot and the goal, beyond the widest inflation: the
+    // path must leave the one and reach the other whatever moves beside them.
+    const double keep = radii_.front() + base.resolution();
+    for (const detail::SweptDisc& sweep : sweeps) detail::close_swept_cells(base, sweep, from, goal_, keep, cells);
     with_closed.emplace(base.rows(), base.cols(), base.resolution(), base.origin(), std::move(cells));
   }
   const OccupancyGrid& grid = with_closed ? *with_closed : base;
@@ -201,6 +219,9 @@ bool Navigator::plan_path(const Vec2& from) {
 
 bool Navigator::path_ahead_blocked(const Vec2& position) {
   if (!path_) return true;
+  if (detail::path_meets_sweeps(*path_, position, mover_sweeps(discs_now_, params_), params_.mover_route_lookahead,
+                                footprint_.inscribed_radius(), params_.keep_clear))
+    return true;
   const std::shared_ptr<const DistanceField>& field = controller_.map();
   if (!field) return false;
   // The same path on the same map, found clear from here or from farther back: still clear.

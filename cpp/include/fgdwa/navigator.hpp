@@ -85,6 +85,18 @@ struct NavigatorParams {
   // false: every hit is a static obstacle where it is now (the ablation).
   bool track_moving = true;
   double mover_margin = 0.0;   // m added to a tracked mover's radius: room for a mover to change its mind
+  // The global path keeps off the moving obstacles (known discs and tracked
+  // movers): the floor each one's disc sweeps over the next
+  // mover_route_horizon seconds at its predicted velocity is closed to A*
+  // (except near the robot and the goal), and a sweep that comes within the
+  // footprint's inscribed radius of the path's next mover_route_lookahead
+  // metres asks for a new path, at most once every replan_period. The local
+  // planner alone cannot lead the robot round a crossing mover: it scores
+  // arcs of a second or two against a path that runs through the mover.
+  // false: movers reach only the local planner (the ablation).
+  bool route_around_movers = true;
+  double mover_route_horizon = 1.0;    // s
+  double mover_route_lookahead = 3.0;  // m
   SegmentParams segment;
   TrackerParams tracker;
   // MapMode::Known: obstacles the scans find that the map lacks join it (a
@@ -190,7 +202,7 @@ class Navigator {
 
  private:
   bool needs_path() const;
-  // A* on the map (given-up cells closed) over the radius ladder; true if found.
+  // A* on the map (given-up cells and the movers' sweeps closed) over the radius ladder; true if found.
   bool plan_path(const Vec2& from);
   void adopt_path(GlobalPath path);
   bool path_ahead_blocked(const Vec2& position);
