@@ -1740,9 +1740,9 @@ class NavigatorParams:
     """
     Replanning and recovery settings of a Navigator (SPEC 13).
     """
-    def __init__(self, path_margin: typing.SupportsFloat | typing.SupportsIndex = 0.3, replan_period: typing.SupportsFloat | typing.SupportsIndex = 0.5, stall_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, stall_distance: typing.SupportsFloat | typing.SupportsIndex = 0.1, give_up_length: typing.SupportsFloat | typing.SupportsIndex = 0.6, keep_clear: typing.SupportsFloat | typing.SupportsIndex = 0.3, sensed_close_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, backup_distance: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, rotate_limit_deg: typing.SupportsFloat | typing.SupportsIndex = 360.0, wait_time: typing.SupportsFloat | typing.SupportsIndex = 2.0, wait_radius: typing.SupportsFloat | typing.SupportsIndex = 1.5, max_recoveries: typing.SupportsInt | typing.SupportsIndex = 6, progress_reset: typing.SupportsFloat | typing.SupportsIndex = 1.0, record_top_k: typing.SupportsInt | typing.SupportsIndex = 5, occupancy: OccupancyParams = ..., unknown_cost: typing.SupportsFloat | typing.SupportsIndex = 0.0, track_moving: bool = True, segment: SegmentParams = ..., tracker: TrackerParams = ..., learn_obstacles: bool = True, mover_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, path_margin: typing.SupportsFloat | typing.SupportsIndex = 0.3, replan_period: typing.SupportsFloat | typing.SupportsIndex = 0.5, stall_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, stall_distance: typing.SupportsFloat | typing.SupportsIndex = 0.1, give_up_length: typing.SupportsFloat | typing.SupportsIndex = 0.6, keep_clear: typing.SupportsFloat | typing.SupportsIndex = 0.3, sensed_close_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, backup_distance: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, rotate_limit_deg: typing.SupportsFloat | typing.SupportsIndex = 360.0, wait_time: typing.SupportsFloat | typing.SupportsIndex = 2.0, wait_radius: typing.SupportsFloat | typing.SupportsIndex = 1.5, max_recoveries: typing.SupportsInt | typing.SupportsIndex = 6, progress_reset: typing.SupportsFloat | typing.SupportsIndex = 1.0, record_top_k: typing.SupportsInt | typing.SupportsIndex = 5, occupancy: OccupancyParams = ..., unknown_cost: typing.SupportsFloat | typing.SupportsIndex = 0.0, track_moving: bool = True, segment: SegmentParams = ..., tracker: TrackerParams = ..., learn_obstacles: bool = True, mover_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0, route_around_movers: bool = True, mover_route_horizon: typing.SupportsFloat | typing.SupportsIndex = 1.0, mover_route_lookahead: typing.SupportsFloat | typing.SupportsIndex = 3.0) -> None:
         """
-        path_margin: m kept beyond the footprint's radius by the global path where the map allows; replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance (m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed (m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std is at least the lidar's noise_std); unknown_cost: extra cost per metre of the global path through cells the scans have not observed (0: unknown is free); track_moving: segment and track moving obstacles in the scans, predict them in the planner and keep their hits out of the map (False: every hit is static where it is, the ablation); segment, tracker: their settings; learn_obstacles: with a known map, obstacles the scans find that it lacks join it (False: they reach only the local planner, and the global one at a stall); mover_margin (m): added to a tracked mover's radius.
+        path_margin: m kept beyond the footprint's radius by the global path where the map allows; replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance (m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed (m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std is at least the lidar's noise_std); unknown_cost: extra cost per metre of the global path through cells the scans have not observed (0: unknown is free); track_moving: segment and track moving obstacles in the scans, predict them in the planner and keep their hits out of the map (False: every hit is static where it is, the ablation); segment, tracker: their settings; learn_obstacles: with a known map, obstacles the scans find that it lacks join it (False: they reach only the local planner, and the global one at a stall); mover_margin (m): added to a tracked mover's radius; route_around_movers: the global path keeps off the floor each moving obstacle sweeps over the next mover_route_horizon (s) at its predicted velocity, and a sweep within the footprint's inscribed radius of the path's next mover_route_lookahead (m) asks for a new path (False: movers reach only the local planner).
         """
     def __repr__(self) -> str:
         ...
@@ -1768,6 +1768,12 @@ class NavigatorParams:
     def mover_margin(self) -> float:
         ...
     @property
+    def mover_route_horizon(self) -> float:
+        ...
+    @property
+    def mover_route_lookahead(self) -> float:
+        ...
+    @property
     def occupancy(self) -> OccupancyParams:
         ...
     @property
@@ -1784,6 +1790,9 @@ class NavigatorParams:
         ...
     @property
     def rotate_limit_deg(self) -> float:
+        ...
+    @property
+    def route_around_movers(self) -> bool:
         ...
     @property
     def segment(self) -> SegmentParams:

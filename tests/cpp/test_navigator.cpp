@@ -2,6 +2,7 @@
 // terrain in the local planner, and its checks of bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -259,6 +260,83 @@ TEST(Navigator, AMoverComingAtAStalledRobotEndsTheWaitAtOnce) {
   }
 }
 
+namespace {
+
+// Distance from p to the disc `d` swept over `horizon` seconds (a capsule).
+double distance_to_sweep(const Disc& d, double horizon, const Vec2& p) {
+  const Vec2 a = d.center, b = d.center_at(horizon);
+  const Vec2 ab = b - a;
+  const double f = ab.squaredNorm() > 0.0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (p - (a + f * ab)).norm() - d.radius;
+}
+
+// Nearest approach (m) of a path, sampled every 5 mm, to the sweep of `d`.
+double path_distance_to_sweep(const GlobalPath& path, const Disc& d, double horizon) {
+  double nearest = kInf;
+  for (double s = 0.0; s <= path.length(); s += 0.005)
+    nearest = std::min(nearest, distance_to_sweep(d, horizon, path.point_at(s)));
+  return nearest;
+}
+
+}  // namespace
+
+TEST(Navigator, GlobalPathGoesRoundAMoverCrossingIt) {
+  const OccupancyGrid map = room(30, 60);
+  const Disc crossing{Vec2(3.0, 2.2), 0.3, Vec2(0.0, -0.5)};  // its next second covers the straight path
+  for (const bool route : {true, false}) {
+    NavigatorParams params;
+    params.route_around_movers = route;
+    params.stall_time = 0.0;
+    Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+    nav.set_goal(Vec2(5.5, 1.5));
+    const RobotState held = at(0.8, 1.5);
+    const CycleRecord& first = nav.step(held, nullptr, 0.0);
+    ASSERT_TRUE(first.path);
+    for (const Vec2& p : first.path->points()) EXPECT_NEAR(p.y(), 1.5, 1e-9);  // straight: nothing in the way yet
+    double t = 0.15;
+    int replanned_at = -1;
+    for (int i = 1; i <= 6; ++i, t += 0.15) {
+      const CycleRecord& r = nav.step(held, nullptr, t, {crossing});
+      if (r.path_version == 2 && replanned_at < 0) {
+        replanned_at = i;
+        ASSERT_TRUE(r.path);
+        // Round the sweep by at least the footprint's inscribed radius, and still to the goal.
+        EXPECT_GE(path_distance_to_sweep(*r.path, crossing, params.mover_route_horizon), 0.2);
+        EXPECT_LT((r.path->points().back() - Vec2(5.5, 1.5)).norm(), 1e-9);
+      }
+    }
+    if (route) {
+      EXPECT_EQ(replanned_at, 3);  // at the first replan_period (0.5 s: 3 cycles of 0.15 s)
+    } else {
+      EXPECT_EQ(replanned_at, -1);  // the ablation: movers reach only the local planner
+      EXPECT_EQ(nav.path_version(), 1);
+    }
+  }
+}
+
+TEST(Navigator, MoversAtTheGoalOrOffTheMapLeaveTheWayOpen) {
+  const OccupancyGrid map = room(30, 60);
+  NavigatorParams params;
+  params.stall_time = 0.0;
+  params.replan_period = 0.15;
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  nav.set_goal(Vec2(5.5, 1.5));
+  // One sweeps over the goal, one over the robot, one lies far off the map, one crosses its edge.
+  const std::vector<Disc> movers = {Disc{Vec2(5.5, 2.0), 0.4, Vec2(0.0, -0.5)},
+                                    Disc{Vec2(0.8, 1.0), 0.3, Vec2(0.0, 0.5)},
+                                    Disc{Vec2(-40.0, 1e3), 0.5, Vec2(3.0, 0.0)},
+                                    Disc{Vec2(3.0, -0.2), 0.5, Vec2(0.0, 1.2)}};
+  double t = 0.0;
+  for (int i = 0; i < 4; ++i, t += 0.15) {
+    const CycleRecord& r = nav.step(at(0.8, 1.5), nullptr, t, movers);
+    EXPECT_NE(r.mode, NavigatorMode::Failed) << "cycle " << i;
+    ASSERT_TRUE(r.path);
+    EXPECT_LT((r.path->points().back() - Vec2(5.5, 1.5)).norm(), 1e-9);
+    // Round the mover crossing the map's edge, which the path would otherwise cross.
+    EXPECT_GE(path_distance_to_sweep(*r.path, movers[3], params.mover_route_horizon), 0.2) << "cycle " << i;
+  }
+}
+
 TEST(Navigator, FailsAfterMaxRecoveriesWithoutProgressAndWhenNoPathExists) {
   const OccupancyGrid map = room(30, 60);
   NavigatorParams params;
@@ -339,6 +417,8 @@ TEST(Navigator, RejectsBadInputNamingIt) {
   bad([&](NavigatorParams& p) { p.max_recoveries = -1; }, "max_recoveries");
   bad([&](NavigatorParams& p) { p.progress_reset = nan; }, "progress_reset");
   bad([&](NavigatorParams& p) { p.record_top_k = -2; }, "record_top_k");
+  bad([&](NavigatorParams& p) { p.mover_route_horizon = -1.0; }, "mover_route_horizon");
+  bad([&](NavigatorParams& p) { p.mover_route_lookahead = nan; }, "mover_route_lookahead");
 
   Navigator nav = make(NavigatorParams{});
   expect_error_naming([&] { nav.step(at(1.0, 1.0), nullptr, 0.0); }, "set_goal");

@@ -86,6 +86,8 @@ def test_discs():
 @pytest.mark.parametrize("make,match", [
     (lambda: fgdwa.NavigatorParams(unknown_cost=-1.0), "unknown_cost"),
     (lambda: fgdwa.NavigatorParams(mover_margin=NAN), "mover_margin"),
+    (lambda: fgdwa.NavigatorParams(mover_route_horizon=-0.5), "mover_route_horizon"),
+    (lambda: fgdwa.NavigatorParams(mover_route_lookahead=INF), "mover_route_lookahead"),
     (lambda: fgdwa.NavigatorParams(occupancy=fgdwa.OccupancyParams(hit_share=0.0)), "hit_share"),
     (lambda: fgdwa.TrackerParams(max_uncertainty=-0.1), "max_uncertainty"),
     (lambda: fgdwa.OccupancyParams(clear_range=NAN), "clear_range"),

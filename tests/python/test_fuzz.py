@@ -1616,15 +1616,17 @@ NAV_PARAMS = fgdwa.PlannerParams(dt=0.2, sim_time=1.0, n_v=5, n_omega=5, heading
 NAV_DEFAULTS = dict(path_margin=0.3, replan_period=0.5, stall_time=3.0, stall_distance=0.1, give_up_length=0.6,
                     keep_clear=0.3, sensed_close_radius=2.0, backup_distance=0.3, backup_speed=0.2,
                     rotate_limit_deg=360.0, wait_time=2.0, wait_radius=1.5, max_recoveries=6, progress_reset=1.0,
-                    record_top_k=5, unknown_cost=0.0, mover_margin=0.0)
+                    record_top_k=5, unknown_cost=0.0, mover_margin=0.0, mover_route_horizon=1.0,
+                    mover_route_lookahead=3.0)
 
 
 def nav_valid(k):
     dist = lambda v: within(v, 0.0, MAX_LENGTH)  # noqa: E731
-    times = all(within(k[n], 0.0, MAX_HORIZON) for n in ("stall_time", "wait_time"))
+    times = all(within(k[n], 0.0, MAX_HORIZON) for n in ("stall_time", "wait_time", "mover_route_horizon"))
     return (times and dist(k["path_margin"]) and within(k["replan_period"], 0.0, MAX_HORIZON) and k["replan_period"] > 0
             and all(dist(k[n]) for n in ("stall_distance", "give_up_length", "keep_clear", "sensed_close_radius",
-                                          "backup_distance", "wait_radius", "progress_reset", "mover_margin"))
+                                          "backup_distance", "wait_radius", "progress_reset", "mover_margin",
+                                          "mover_route_lookahead"))
             and within(k["backup_speed"], 0.0, MAX_SPEED) and k["backup_speed"] > 0
             and within(k["rotate_limit_deg"], 0.0, MAX_ANGLE_REFUSED * 180 / math.pi)
             and 0 <= k["max_recoveries"] <= 10**6 and 0 <= k["record_top_k"] <= MAX_SAMPLES
