@@ -40,6 +40,8 @@ PLANNER_VARIANTS = MappingProxyType({
     "fgdwa": ("fgdwa", {}),
     # The ablation: every hit a static obstacle where it is now, nothing tracked or predicted.
     "fgdwa-notrack": ("fgdwa", {"track_moving": False}),
+    # Movers tracked and predicted by the local planner, but the global path runs through them.
+    "fgdwa-noroute": ("fgdwa", {"route_around_movers": False}),
     "dwb": ("dwb", {}),
 })
 OUTCOMES = ("success", "collision", "timeout", "failed")
