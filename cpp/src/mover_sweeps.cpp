@@ -11,10 +11,7 @@ SweptDisc sweep_of(const Disc& disc, double horizon) {
 }
 
 double distance_to(const SweptDisc& sweep, const Vec2& p) {
-  const Vec2 along = sweep.to - sweep.from;
-  const double length_sq = along.squaredNorm();
-  const double f = length_sq > 0.0 ? std::clamp((p - sweep.from).dot(along) / length_sq, 0.0, 1.0) : 0.0;
-  return (p - (sweep.from + f * along)).norm() - sweep.radius;
+  return point_segment_distance(p, sweep.from, sweep.to) - sweep.radius;
 }
 
 void close_swept_cells(const OccupancyGrid& grid, const SweptDisc& sweep, const Vec2& a, const Vec2& b, double keep,
