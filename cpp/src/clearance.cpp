@@ -77,15 +77,40 @@ void FieldClearance::split_moving() {
 }
 
 namespace {
+// A pose with its heading's cosine and sine, worked out once for every field
+// and bound that places a polygon there (a circle needs neither).
+struct Placed {
+  const Pose2& pose;
+  double c = 1.0, s = 0.0;
+  Placed(const Pose2& p, const Footprint& footprint) : pose(p) {
+    if (!footprint.is_circle()) c = std::cos(p.theta), s = std::sin(p.theta);
+  }
+  Vec2 world(const Vec2& q) const { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); }
+};
+
+// A polygon's bound from one field: every point of it lies in one of its cover discs.
+double cover_lower_bound(const DistanceField::LowerBounds& bound, const Footprint& footprint, const Placed& at) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Footprint::CoverDisc& d : footprint.cover()) {
+    const Vec2 p = at.world(d.centre);
+    best = std::min(best, bound(p.x(), p.y()) - d.radius);
+  }
+  return best;
+}
+
 // The footprint's clearance from the field's obstacles where it is below
 // `cutoff`; elsewhere a value from cutoff up to it. Both give the same bits
 // below the cutoff: the result is the least of the distances and piece bounds
 // the search reaches, and what a lower starting point prunes lies above it.
-double field_clearance(const DistanceField* field, const Footprint& footprint, const Pose2& pose,
+double field_clearance(const DistanceField* field, const Footprint& footprint, const Placed& at,
                        double cutoff = std::numeric_limits<double>::infinity()) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!field || !field->has_obstacles()) return kInf;
+  const Pose2& pose = at.pose;
   if (footprint.is_circle()) return field->distance(pose.position()) - footprint.radius();
+  // The cover discs often settle a cutoff at a fifth of the outline's look-ups
+  // (a field of sensed points far from the robot nearly always does).
+  if (cover_lower_bound(field->lower_bounds(), footprint, at) >= cutoff) return cutoff;
 
   // Polygon: the distance from its outline. The outline is sampled at
   // half-cell spacing. Exact distances are asked where the table's lower
@@ -95,13 +120,13 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   // a piece of length L holds no point nearer than (da + db - L) / 2) are
   // measured whole, inside the grid or out.
   const double res = field->grid().resolution();
-  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  const auto world = [&](const Vec2& q) { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); };
+  const auto world = [&](const Vec2& q) { return at.world(q); };
   const auto& vertices = footprint.vertices();
   struct Sample {
     Vec2 point;
-    double low;    // the table's lower bound
-    double exact;  // NaN until asked
+    double low;     // the table's lower bound
+    double exact;   // NaN until asked
+    double length;  // of the piece to the next sample, a little over
   };
   const auto edge_pieces = [&](std::size_t i) {
     const double length = (vertices[(i + 1) % vertices.size()] - vertices[i]).norm();
@@ -122,17 +147,16 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   for (std::size_t i = 0, j = 0; i < vertices.size(); ++i) {
     const Vec2 a = world(vertices[i]), b = world(vertices[(i + 1) % vertices.size()]);
     const int pieces = edge_pieces(i);
+    // Rounding aside the pieces of an edge are equally long; the margin keeps
+    // the bound below from cutting a piece that holds the minimum.
+    const double length = (b - a).norm() / pieces * (1.0 + 1e-12) + 1e-15;
     for (int k = 0; k < pieces; ++k, ++j) {
       const Vec2 q = a + (b - a) * (double(k) / pieces);
-      samples[j] = Sample{q, field->lower_bound(q), std::numeric_limits<double>::quiet_NaN()};
+      samples[j] = Sample{q, field->lower_bound(q), std::numeric_limits<double>::quiet_NaN(), length};
       if (samples[j].low < samples[lowest].low) lowest = j;
     }
   }
   const OccupancyGrid& grid = field->grid();
-  const Vec2 grid_lo = grid.origin(), grid_hi = grid.origin() + res * Vec2(grid.cols(), grid.rows());
-  const auto on_grid = [&](const Vec2& p) {
-    return p.x() >= grid_lo.x() && p.y() >= grid_lo.y() && p.x() <= grid_hi.x() && p.y() <= grid_hi.y();
-  };
   const auto exact = [&](Sample& sample) {
     if (std::isnan(sample.exact)) sample.exact = field->distance(sample.point);
     return sample.exact;
@@ -143,21 +167,22 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   for (std::size_t j = 0; j < n; ++j) {
     Sample& from = samples[j];
     Sample& to = samples[(j + 1) % n];
-    const double length = (to.point - from.point).norm();
+    const double length = from.length;
     const auto known = [](const Sample& sample) { return std::isnan(sample.exact) ? sample.low : sample.exact; };
     if (0.5 * (known(from) + known(to) - length) >= best) continue;
-    if (!on_grid(from.point) || !on_grid(to.point)) {
-      // Off the grid (always so for a small field of sensed cells) a segment
-      // walks rows or columns; the exact distances at its ends often settle it.
-      best = std::min({best, exact(from), exact(to)});
-      if (0.5 * (from.exact + to.exact - length) >= best) continue;
-    }
+    // A piece's exact distance costs several of a point's: the exact
+    // distances at its ends often settle it.
+    best = std::min({best, exact(from), exact(to)});
+    if (0.5 * (from.exact + to.exact - length) >= best) continue;
     best = std::min(best, field->segment_distance(from.point, to.point));
   }
-  if (best <= 0.0 || field->lower_bound(pose.position()) >= footprint.radius() ||
+  // An obstacle cell can sit wholly inside a footprint wider than a cell; its
+  // centre then lies at least `best` and half a cell inside the outline, which
+  // no point farther in than half the footprint's width can.
+  if (best <= 0.0 || best + 0.5 * res > footprint.half_width() ||
+      field->lower_bound(pose.position()) >= footprint.radius() ||
       field->distance(pose.position()) >= footprint.radius())
     return best;
-  // An obstacle cell can sit wholly inside a footprint wider than a cell.
   const double r = footprint.radius();
   const Vec2 lo = pose.position() - Vec2(r, r), hi = pose.position() + Vec2(r, r);
   // Clamped before the cast: a query far off the grid has no int index.
@@ -185,12 +210,10 @@ double point_lower_bound(const DistanceField* field, const DistanceField* sensed
 // A polygon's: every point of it lies in one of its cover discs.
 double polygon_lower_bound(const DistanceField* field, const DistanceField* sensed, const Footprint& footprint,
                            const Pose2& pose) {
-  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  const Placed at(pose, footprint);
   double best = std::numeric_limits<double>::infinity();
-  for (const Footprint::CoverDisc& d : footprint.cover()) {
-    const Vec2 p(pose.x + c * d.centre.x() - s * d.centre.y(), pose.y + s * d.centre.x() + c * d.centre.y());
-    best = std::min(best, point_lower_bound(field, sensed, p) - d.radius);
-  }
+  for (const Footprint::CoverDisc& d : footprint.cover())
+    best = std::min(best, point_lower_bound(field, sensed, at.world(d.centre)) - d.radius);
   return best;
 }
 
@@ -272,8 +295,9 @@ double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, 
 }
 
 double FieldClearance::clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const {
-  double best = field_clearance(field_.get(), footprint, pose, cutoff);
-  if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, pose, std::min(best, cutoff)));
+  const Placed at(pose, footprint);
+  double best = field_clearance(field_.get(), footprint, at, cutoff);
+  if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, at, std::min(best, cutoff)));
   if (footprint.is_circle()) {
     if (!static_discs_.x.empty()) best = std::min(best, static_discs_.distance(pose.x, pose.y, footprint.radius()));
   } else {

@@ -34,6 +34,7 @@ Footprint Footprint::circle(double radius) {
   Footprint fp;
   fp.radius_ = radius;
   fp.inscribed_radius_ = radius;
+  fp.half_width_ = radius;
   fp.cover_.push_back({Vec2::Zero(), radius});
   return fp;
 }
@@ -84,6 +85,15 @@ Footprint Footprint::polygon(std::vector<Vec2> vertices) {
   for (size_t i = 0; i < n; ++i)
     fp.inscribed_radius_ = std::min(
         fp.inscribed_radius_, point_segment_distance(Vec2::Zero(), fp.vertices_[i], fp.vertices_[(i + 1) % n]));
+  // The width across each edge is the farthest vertex from its line; a disc
+  // inside fits between that line and the parallel one through the vertex.
+  fp.half_width_ = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 a = fp.vertices_[i], edge = fp.vertices_[(i + 1) % n] - a;
+    double width = 0.0;
+    for (const Vec2& v : fp.vertices_) width = std::max(width, cross(edge, v - a) / edge.norm());
+    fp.half_width_ = std::min(fp.half_width_, 0.5 * width);
+  }
   Vec2 lo = fp.vertices_[0], hi = fp.vertices_[0];
   for (const Vec2& v : fp.vertices_) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   const Vec2 size = hi - lo;
@@ -120,7 +130,10 @@ bool Footprint::contains(const Pose2& pose, const Vec2& p) const {
   detail::require_query_pose("pose", pose);
   detail::require_query_point("point", p);
   if (is_circle()) return (p - pose.position()).norm() <= radius_;
-  const Vec2 q = to_robot_frame(pose, p);
+  return polygon_contains(to_robot_frame(pose, p));
+}
+
+bool Footprint::polygon_contains(const Vec2& q) const {
   const size_t n = vertices_.size();
   for (size_t i = 0; i < n; ++i)
     if (cross(vertices_[(i + 1) % n] - vertices_[i], q - vertices_[i]) < 0.0) return false;
@@ -135,7 +148,7 @@ double Footprint::signed_distance(const Pose2& pose, const Vec2& p) const {
   double d = std::numeric_limits<double>::infinity();
   const size_t n = vertices_.size();
   for (size_t i = 0; i < n; ++i) d = std::min(d, point_segment_distance(q, vertices_[i], vertices_[(i + 1) % n]));
-  return contains(pose, p) ? -d : d;
+  return polygon_contains(q) ? -d : d;
 }
 
 Pose2 step(const Pose2& pose, const Twist& twist, double dt) {

@@ -97,6 +97,22 @@ TEST(Footprint, PolygonAcceptsEitherWindingAndStoresCounterClockwise) {
   EXPECT_NEAR(area2, 2 * 0.4 * 0.4, 1e-12);  // positive: counter-clockwise
   EXPECT_NEAR(cw.radius(), std::hypot(0.3, 0.2), 1e-15);
   EXPECT_NEAR(cw.inscribed_radius(), 0.1, 1e-15);
+  // Off-centre, the footprint is still 0.4 m wide: a point inside can lie 0.2 m in.
+  EXPECT_NEAR(cw.half_width(), 0.2, 1e-15);
+  EXPECT_NEAR(cw.signed_distance(Pose2{}, {0.1, 0.0}), -0.2, 1e-15);
+}
+
+TEST(Footprint, HalfWidthBoundsHowDeepAPointLiesInside) {
+  EXPECT_EQ(Footprint::circle(0.3).half_width(), 0.3);
+  // A right triangle with legs 1 and 2: its least width is its height over the hypotenuse.
+  const Footprint triangle = Footprint::polygon({{-0.3, -0.3}, {0.7, -0.3}, {-0.3, 1.7}});
+  EXPECT_NEAR(triangle.half_width(), 0.5 * 2.0 / std::sqrt(5.0), 1e-15);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.3, 1.7);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 p(u(rng), u(rng));
+    EXPECT_GE(triangle.signed_distance(Pose2{}, p), -triangle.half_width() - 1e-15);
+  }
 }
 
 TEST(Footprint, SignedDistanceOfCircleAndPolygon) {

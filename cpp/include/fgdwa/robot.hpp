@@ -40,6 +40,9 @@ class Footprint {
   double radius() const { return radius_; }
   // Largest circle about the robot origin inside the footprint.
   double inscribed_radius() const { return inscribed_radius_; }
+  // Half the footprint's least width (the radius for a circle): no point
+  // inside lies farther than this from the outline.
+  double half_width() const { return half_width_; }
   // Counter-clockwise vertices in the robot frame; empty for a circle.
   const std::vector<Vec2>& vertices() const { return vertices_; }
 
@@ -67,8 +70,11 @@ class Footprint {
 
  private:
   Footprint() = default;
+  // Whether the polygon holds `q`, given in the robot's frame.
+  bool polygon_contains(const Vec2& q) const;
   double radius_ = 0.0;
   double inscribed_radius_ = 0.0;
+  double half_width_ = 0.0;
   double heading_chord_ = 0.0;
   std::vector<Vec2> vertices_;
   std::vector<CoverDisc> cover_;
