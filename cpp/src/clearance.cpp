@@ -271,13 +271,20 @@ double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& fo
   detail::require_query_pose("pose", pose);
   detail::require_magnitude("t", t, limits::kMaxHorizon);
   double best = std::numeric_limits<double>::infinity();
+  double c = std::numeric_limits<double>::quiet_NaN(), s = 0.0;  // the heading's, once a disc needs them
   for (const Disc& disc : discs) {
     if (!disc.moves()) continue;
     const Vec2 centre = disc.center_at(t);
     const double radius = disc.radius_at(t);
     // The circumscribed circle settles the far ones.
     if ((centre - pose.position()).norm() - radius - footprint.radius() >= best) continue;
-    best = std::min(best, footprint.signed_distance(pose, centre) - radius);
+    const Vec2 d = centre - pose.position();
+    if (footprint.is_circle()) {
+      best = std::min(best, (d.norm() - footprint.radius()) - radius);
+      continue;
+    }
+    if (std::isnan(c)) c = std::cos(pose.theta), s = std::sin(pose.theta);
+    best = std::min(best, footprint.signed_distance_in_frame(Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y())) - radius);
   }
   return best;
 }

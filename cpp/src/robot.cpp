@@ -144,7 +144,11 @@ double Footprint::signed_distance(const Pose2& pose, const Vec2& p) const {
   detail::require_query_pose("pose", pose);
   detail::require_query_point("point", p);
   if (is_circle()) return (p - pose.position()).norm() - radius_;
-  const Vec2 q = to_robot_frame(pose, p);
+  return signed_distance_in_frame(to_robot_frame(pose, p));
+}
+
+double Footprint::signed_distance_in_frame(const Vec2& q) const {
+  if (is_circle()) return q.norm() - radius_;
   double d = std::numeric_limits<double>::infinity();
   const size_t n = vertices_.size();
   for (size_t i = 0; i < n; ++i) d = std::min(d, point_segment_distance(q, vertices_[i], vertices_[(i + 1) % n]));
