@@ -112,8 +112,9 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   // (a field of sensed points far from the robot nearly always does).
   if (cover_lower_bound(field->lower_bounds(), footprint, at) >= cutoff) return cutoff;
 
-  // Polygon: the distance from its outline. The outline is sampled at
-  // half-cell spacing. Exact distances are asked where the table's lower
+  // Polygon: the distance from its outline. The outline is sampled a cell
+  // apart (half a cell apart, the pieces' bounds settled more of them but
+  // twice as many were looked up: 8 % slower). Exact distances are asked where the table's lower
   // bounds leave it open: first at the sample of lowest bound, then at every
   // sample whose bound is below the best so far; then the pieces between
   // samples whose bound could still be below it (the field is 1-Lipschitz, so
@@ -130,7 +131,7 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   };
   const auto edge_pieces = [&](std::size_t i) {
     const double length = (vertices[(i + 1) % vertices.size()] - vertices[i]).norm();
-    return std::max(1, static_cast<int>(std::ceil(length / (0.5 * res))));
+    return std::max(1, static_cast<int>(std::ceil(length / res)));
   };
   std::size_t n = 0;
   for (std::size_t i = 0; i < vertices.size(); ++i) n += static_cast<std::size_t>(edge_pieces(i));
