@@ -68,7 +68,11 @@ void init_robot(py::module_& m) {
           py::arg("vertices"), "A convex polygon, (n, 2) vertices in metres, robot frame (x forward, y left).")
       .def_property_readonly("is_circle", &Footprint::is_circle)
       .def_property_readonly("radius", &Footprint::radius, "Circle radius or circumscribed radius, m.")
-      .def_property_readonly("inscribed_radius", &Footprint::inscribed_radius)
+      .def_property_readonly("inscribed_radius", &Footprint::inscribed_radius,
+                             "Largest circle about the robot origin inside the footprint, m.")
+      .def_property_readonly("half_width", &Footprint::half_width,
+                             "Half the footprint's least width (the radius for a circle): no point inside lies "
+                             "farther than this from the outline, m.")
       .def_property_readonly("vertices",
                              [](const Footprint& f) {
                                py::array_t<double> out({static_cast<py::ssize_t>(f.vertices().size()), py::ssize_t{2}});

@@ -146,8 +146,15 @@ class Footprint:
     def signed_distance(self, pose: typing.Any, point: typing.Any) -> float:
         ...
     @property
+    def half_width(self) -> float:
+        """
+        Half the footprint's least width (the radius for a circle): no point inside lies farther than this from the outline, m.
+        """
+    @property
     def inscribed_radius(self) -> float:
-        ...
+        """
+        Largest circle about the robot origin inside the footprint, m.
+        """
     @property
     def is_circle(self) -> bool:
         ...

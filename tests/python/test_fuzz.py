@@ -594,7 +594,7 @@ def test_footprint_circle_and_signed_distance(r, pose, point):
     if not expect(out, within(r, 0.0, MAX_FOOTPRINT) and r > 0, "radius"):
         return
     fp = out.value
-    assert fp.is_circle and fp.radius == r and fp.inscribed_radius == r, out.call
+    assert fp.is_circle and fp.radius == r and fp.inscribed_radius == r and fp.half_width == r, out.call
     assert attempt(fp.signed_distance, (0.0, 0.0, 0.0), (0.0, 0.0)).value == -r
     (p, p_arg), (q, q_arg) = pose, point
     out = attempt(fp.signed_distance, p_arg, q_arg)
@@ -636,6 +636,10 @@ def test_footprint_polygon(v, pose, point):
         eps = 1e-9 * (1 + centre)
         assert centre - fp.radius - eps <= out.value <= centre - fp.inscribed_radius + eps, \
             f"{out.call}: {out.value} outside [|p| - radius, |p| - inscribed]"
+        # No point lies deeper inside than half the least width (the polygon
+        # clearance skips its inner-cell scan on this).
+        assert out.value >= -fp.half_width - eps, f"{out.call}: {out.value} deeper than half width {fp.half_width}"
+    assert fp.inscribed_radius <= fp.half_width * (1 + 1e-12) <= fp.radius * (1 + 1e-9), out.call
 
 
 # =============================================================================================
