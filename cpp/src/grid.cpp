@@ -574,11 +574,16 @@ inline void DistanceField::segment_inside(const Vec2& a, const Vec2& b, const Ve
   const int r0 = cell(std::min(ga.y(), gb.y()), grid_.rows()), r1 = cell(std::max(ga.y(), gb.y()), grid_.rows());
   const int c0 = cell(std::min(ga.x(), gb.x()), grid_.cols()), c1 = cell(std::max(ga.x(), gb.x()), grid_.cols());
   double nearest = best;  // a local: the tables' doubles cannot alias it
+  // Neighbouring cells mostly share their nearest obstacles: those the cell
+  // before gave are not measured again.
+  std::uint32_t last_first = std::numeric_limits<std::uint32_t>::max(), last_second = last_first;
   for (int r = r0; r <= r1; ++r)
     for (int c = c0; c <= c1; ++c) {
       const CellCandidates& near = candidates_[grid_.index(r, c)];
-      segment_to_square(a, b, centre_of(near.first), nearest);
-      if (near.second != near.first) segment_to_square(a, b, centre_of(near.second), nearest);
+      const auto seen = [&](std::uint32_t o) { return o == last_first || o == last_second; };
+      if (!seen(near.first)) segment_to_square(a, b, centre_of(near.first), nearest);
+      if (near.second != near.first && !seen(near.second)) segment_to_square(a, b, centre_of(near.second), nearest);
+      last_first = near.first, last_second = near.second;
       if (near.more)
         for (std::uint32_t k = 1; k <= more_[near.more]; ++k) segment_to_square(a, b, centre_of(more_[near.more + k]), nearest);
     }
