@@ -158,6 +158,10 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     }
   }
   const OccupancyGrid& grid = field->grid();
+  const Vec2 grid_lo = grid.origin(), grid_hi = grid.origin() + res * Vec2(grid.cols(), grid.rows());
+  const auto on_grid = [&](const Vec2& p) {
+    return p.x() >= grid_lo.x() && p.y() >= grid_lo.y() && p.x() <= grid_hi.x() && p.y() <= grid_hi.y();
+  };
   const auto exact = [&](Sample& sample) {
     if (std::isnan(sample.exact)) sample.exact = field->distance(sample.point);
     return sample.exact;
@@ -171,10 +175,12 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     const double length = from.length;
     const auto known = [](const Sample& sample) { return std::isnan(sample.exact) ? sample.low : sample.exact; };
     if (0.5 * (known(from) + known(to) - length) >= best) continue;
-    // A piece's exact distance costs several of a point's: the exact
-    // distances at its ends often settle it.
-    best = std::min({best, exact(from), exact(to)});
-    if (0.5 * (from.exact + to.exact - length) >= best) continue;
+    if (!on_grid(from.point) || !on_grid(to.point)) {
+      // Off the grid (always so for a small field of sensed cells) a segment
+      // walks rows or columns; the exact distances at its ends often settle it.
+      best = std::min({best, exact(from), exact(to)});
+      if (0.5 * (from.exact + to.exact - length) >= best) continue;
+    }
     best = std::min(best, field->segment_distance(from.point, to.point));
   }
   // An obstacle cell can sit wholly inside a footprint wider than a cell; its
