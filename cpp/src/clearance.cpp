@@ -114,14 +114,14 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
 
   // Polygon: the distance from its outline. The outline is sampled a cell
   // apart (half a cell apart, the pieces' bounds settled more of them but
-  // twice as many were looked up: 8 % slower). Exact distances are asked where the table's lower
-  // bounds leave it open: first at the sample of lowest bound, then at every
+  // twice as many were looked up: 8 % slower). Exact distances are asked
+  // where the table's lower bounds leave it open: first at the sample of
+  // lowest bound, then at every
   // sample whose bound is below the best so far; then the pieces between
   // samples whose bound could still be below it (the field is 1-Lipschitz, so
   // a piece of length L holds no point nearer than (da + db - L) / 2) are
   // measured whole, inside the grid or out.
   const double res = field->grid().resolution();
-  const auto world = [&](const Vec2& q) { return at.world(q); };
   const auto& vertices = footprint.vertices();
   struct Sample {
     Vec2 point;
@@ -146,7 +146,7 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   }
   std::size_t lowest = 0;
   for (std::size_t i = 0, j = 0; i < vertices.size(); ++i) {
-    const Vec2 a = world(vertices[i]), b = world(vertices[(i + 1) % vertices.size()]);
+    const Vec2 a = at.world(vertices[i]), b = at.world(vertices[(i + 1) % vertices.size()]);
     const int pieces = edge_pieces(i);
     // Rounding aside the pieces of an edge are equally long; the margin keeps
     // the bound below from cutting a piece that holds the minimum.
@@ -206,21 +206,12 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   return best;
 }
 
-// The static obstacles' distance bound at a point; +inf without either field.
-double point_lower_bound(const DistanceField* field, const DistanceField* sensed, const Vec2& p) {
-  double best = std::numeric_limits<double>::infinity();
-  if (field) best = field->lower_bound(p);
-  if (sensed) best = std::min(best, sensed->lower_bound(p));
-  return best;
-}
-
-// A polygon's: every point of it lies in one of its cover discs.
+// A polygon's bound from both fields; +inf without either.
 double polygon_lower_bound(const DistanceField* field, const DistanceField* sensed, const Footprint& footprint,
                            const Pose2& pose) {
   const Placed at(pose, footprint);
-  double best = std::numeric_limits<double>::infinity();
-  for (const Footprint::CoverDisc& d : footprint.cover())
-    best = std::min(best, point_lower_bound(field, sensed, at.world(d.centre)) - d.radius);
+  double best = field ? cover_lower_bound(field->lower_bounds(), footprint, at) : std::numeric_limits<double>::infinity();
+  if (sensed) best = std::min(best, cover_lower_bound(sensed->lower_bounds(), footprint, at));
   return best;
 }
 
@@ -285,13 +276,13 @@ double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& fo
     const double radius = disc.radius_at(t);
     // The circumscribed circle settles the far ones.
     if ((centre - pose.position()).norm() - radius - footprint.radius() >= best) continue;
-    const Vec2 d = centre - pose.position();
-    if (footprint.is_circle()) {
-      best = std::min(best, (d.norm() - footprint.radius()) - radius);
-      continue;
+    // In the robot's frame; a circle needs no turning.
+    Vec2 q = centre - pose.position();
+    if (!footprint.is_circle()) {
+      if (std::isnan(c)) c = std::cos(pose.theta), s = std::sin(pose.theta);
+      q = Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
     }
-    if (std::isnan(c)) c = std::cos(pose.theta), s = std::sin(pose.theta);
-    best = std::min(best, footprint.signed_distance_in_frame(Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y())) - radius);
+    best = std::min(best, footprint.signed_distance_in_frame(q) - radius);
   }
   return best;
 }

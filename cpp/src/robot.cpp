@@ -91,7 +91,8 @@ Footprint Footprint::polygon(std::vector<Vec2> vertices) {
   for (size_t i = 0; i < n; ++i) {
     const Vec2 a = fp.vertices_[i], edge = fp.vertices_[(i + 1) % n] - a;
     double width = 0.0;
-    for (const Vec2& v : fp.vertices_) width = std::max(width, cross(edge, v - a) / edge.norm());
+    for (const Vec2& v : fp.vertices_) width = std::max(width, cross(edge, v - a));
+    width /= edge.norm();
     fp.half_width_ = std::min(fp.half_width_, 0.5 * width);
   }
   Vec2 lo = fp.vertices_[0], hi = fp.vertices_[0];
