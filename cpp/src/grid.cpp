@@ -155,11 +155,11 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   gap_x_.resize(sub);
   gap_y_.resize(sub);
   piece_lower_bound_.assign(n_cells * sub * sub, kMostSteps);
-  for (int c = 0; c < cols; ++c) column_pass(c, 0, rows - 1);
+  for (int c = 0; c < cols; ++c) column_pass(c, 0, rows - 1, nullptr);
   for (int r = 0; r < rows; ++r) row_pass(r, nullptr);
   if (occupied_ > 0)
     for (int r = 0; r < rows; ++r)
-      for (int c = 0; c < cols; ++c) look_up_data(r, c);
+      for (int c = 0; c < cols; ++c) look_up_data(r, c, false);
   row_first_.resize(rows);
   row_last_.resize(rows);
   col_first_.resize(cols);
@@ -176,7 +176,7 @@ DistanceField::DistanceField(const OccupancyGrid& grid, const DistanceField& pre
   update(grid);
 }
 
-void DistanceField::column_pass(int col, int from, int to) {
+void DistanceField::column_pass(int col, int from, int to, std::vector<int>* changed_rows) {
   const auto occupied = [&](int r) { return grid_.occupied(r, col); };
   int lower = -1;  // the nearest occupied row at or below r
   for (int r = from; r >= 0; --r)
@@ -184,6 +184,12 @@ void DistanceField::column_pass(int col, int from, int to) {
       lower = r;
       break;
     }
+  // The rows whose nearest changes are the ones a row pass must see again;
+  // the old values are kept until the second sweep compares them.
+  if (changed_rows) {
+    column_before_.clear();
+    for (int r = from; r <= to; ++r) column_before_.push_back(column_nearest_[grid_.index(r, col)]);
+  }
   for (int r = from; r <= to; ++r) {
     if (occupied(r)) lower = r;
     column_nearest_[grid_.index(r, col)] = lower;
@@ -198,6 +204,7 @@ void DistanceField::column_pass(int col, int from, int to) {
     if (occupied(r)) upper = r;
     std::int32_t& best = column_nearest_[grid_.index(r, col)];
     if (upper >= 0 && (best < 0 || upper - r < r - best)) best = upper;  // a tie keeps the lower row
+    if (changed_rows && best != column_before_[static_cast<std::size_t>(r - from)]) changed_rows->push_back(r);
   }
 }
 
@@ -218,15 +225,17 @@ void DistanceField::row_pass(int row, std::vector<std::size_t>* changed) {
   }
 }
 
-void DistanceField::look_up_data(int r, int c) {
+void DistanceField::look_up_data(int r, int c, bool first_unchanged) {
   const int rows = grid_.rows(), cols = grid_.cols();
   const double res = grid_.resolution();
   const int sub = subdivisions_;
   CellCandidates& cell = candidates_[grid_.index(r, c)];
-  more_garbage_ += cell.more ? more_[cell.more] + 1 : 0;
-  cell.second = cell.first;
-  cell.more = 0;
-  if (cell.first == kNoCell) return;  // no obstacles: nothing to bound
+  if (cell.first == kNoCell) {  // no obstacles: nothing to bound
+    more_garbage_ += cell.more ? more_[cell.more] + 1 : 0;
+    cell.second = cell.first;
+    cell.more = 0;
+    return;
+  }
   // The obstacle square nearest to a point is the one nearest to a cell centre
   // close to it: each cell keeps the distinct nearest obstacles of the cells
   // within two of it, its own first. An occupied cell is the nearest square of
@@ -264,6 +273,18 @@ void DistanceField::look_up_data(int r, int c) {
       centres[kept++] = centres[k];
     }
   count = kept;
+
+  // The same candidates in the same order give the same bounds: a cell near a
+  // change whose own nearest stayed often keeps them all.
+  if (first_unchanged) {
+    const std::uint32_t old_count = cell.more ? more_[cell.more] + 2 : (cell.second != cell.first ? 2 : 1);
+    bool same = old_count == static_cast<std::uint32_t>(count) && (count < 2 || found[1] == cell.second);
+    for (int k = 2; same && k < count; ++k) same = found[k] == more_[cell.more + static_cast<std::uint32_t>(k - 1)];
+    if (same) return;
+  }
+  more_garbage_ += cell.more ? more_[cell.more] + 1 : 0;
+  cell.second = cell.first;
+  cell.more = 0;
 
   // The candidates hold the nearest obstacle of every point of the cell, so
   // the nearest of them to a piece of the cell bounds that piece: an
@@ -351,8 +372,7 @@ std::size_t DistanceField::update(const OccupancyGrid& grid, const std::vector<s
     int below = r0 - 1, above = r0 + 1;
     while (below >= 0 && !grid_.occupied(below, c0)) --below;
     while (above < rows && !grid_.occupied(above, c0)) ++above;
-    column_pass(c0, below + 1, above - 1);
-    for (int r = below + 1; r < above; ++r) dirty_rows.push_back(r);
+    column_pass(c0, below + 1, above - 1, &dirty_rows);
   }
   std::sort(dirty_rows.begin(), dirty_rows.end());
   dirty_rows.erase(std::unique(dirty_rows.begin(), dirty_rows.end()), dirty_rows.end());
@@ -368,13 +388,14 @@ std::size_t DistanceField::update(const OccupancyGrid& grid, const std::vector<s
       for (int cc = std::max(0, c - 2); cc <= std::min(cols - 1, c + 2); ++cc) {
         const std::size_t j = grid_.index(rr, cc);
         if (stale_mark_[j]) continue;
-        stale_mark_[j] = true;
+        stale_mark_[j] = 1;
         stale.push_back(j);
       }
   }
+  for (const std::size_t i : changed) stale_mark_[i] = 2;
   for (const std::size_t i : stale) {
-    look_up_data(static_cast<int>(i / cols), static_cast<int>(i % cols));
-    stale_mark_[i] = false;
+    look_up_data(static_cast<int>(i / cols), static_cast<int>(i % cols), stale_mark_[i] == 1);
+    stale_mark_[i] = 0;
   }
   if (more_garbage_ > 4096 && 2 * more_garbage_ > more_.size()) compact_more();
 
@@ -453,7 +474,7 @@ double DistanceField::bytes_per_cell() const {
                        bytes(row_last_) + bytes(col_first_) + bytes(col_last_) + bytes(row_block_first_) +
                        bytes(row_block_last_) + bytes(col_block_first_) + bytes(col_block_last_) + bytes(f_) +
                        bytes(d_) + bytes(z_) + bytes(v_) + bytes(arg_) + bytes(piece_scratch_) + bytes(gap_x_) +
-                       bytes(gap_y_) + static_cast<double>(stale_mark_.capacity() / 8);
+                       bytes(gap_y_) + bytes(stale_mark_) + bytes(column_before_);
   return total / static_cast<double>(candidates_.size());
 }
 

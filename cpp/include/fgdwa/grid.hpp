@@ -211,12 +211,15 @@ class DistanceField {
   template <class Measure>
   void walk_outside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, const Measure& measure,
                     const double& best) const;
-  // The nearest occupied row of column `col` for rows [from, to].
-  void column_pass(int col, int from, int to);
+  // Nearest occupied rows of column `col` over rows from..to; the rows whose
+  // value changed are appended to changed_rows when given.
+  void column_pass(int col, int from, int to, std::vector<int>* changed_rows);
   // The nearest obstacles of row `row` from the column runs; appends the cells whose nearest changed.
   void row_pass(int row, std::vector<std::size_t>* changed);
-  // Candidates and piece bounds of one cell, from the nearest obstacles around it.
-  void look_up_data(int row, int col);
+  // Candidates and piece bounds of one cell, from the nearest obstacles around
+  // it; with first_unchanged (its own nearest is the one they were built
+  // with), they are rebuilt only if the candidates differ.
+  void look_up_data(int row, int col, bool first_unchanged);
   void row_outermost(int row);
   void col_outermost(int col);
   void compact_more();
@@ -225,6 +228,7 @@ class DistanceField {
   std::size_t occupied_ = 0;
   // Per cell: the row of the nearest occupied cell in its column (-1: none).
   std::vector<std::int32_t> column_nearest_;
+  std::vector<std::int32_t> column_before_;  // column_pass's scratch
   // Per cell, the obstacles whose squares can be nearest to a point in it
   // (usually one to three), packed: `first` is the cell's own nearest
   // obstacle (kNoCell: the grid has none), which cell_distance() and the
@@ -261,7 +265,9 @@ class DistanceField {
   std::vector<double> f_, d_, z_;
   std::vector<int> v_, arg_;
   std::vector<double> piece_scratch_, gap_x_, gap_y_;
-  std::vector<bool> stale_mark_;  // per cell, while update() runs; all false between calls
+  // Per cell, while update() runs (all 0 between calls): 1 when its look-up
+  // data must be checked, 2 when its own nearest obstacle changed too.
+  std::vector<std::uint8_t> stale_mark_;
 };
 
 }  // namespace fgdwa
