@@ -1,7 +1,10 @@
 #include "fgdwa/clearance.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -77,13 +80,35 @@ void FieldClearance::split_moving() {
 }
 
 namespace {
+// cos and sin of a heading, remembered: a control cycle places the footprint
+// at thousands of poses but only at n_omega x n_steps headings, since every
+// speed of the window turns alike. Keyed by the heading's bits, so a hit gives
+// exactly what std::cos and std::sin would.
+void heading_cos_sin(double theta, double& c, double& s) {
+  struct Entry {
+    std::uint64_t bits = ~std::uint64_t{0};  // a NaN no heading has
+    double c = std::numeric_limits<double>::quiet_NaN(), s = std::numeric_limits<double>::quiet_NaN();
+  };
+  thread_local std::array<Entry, 1024> remembered;
+  std::uint64_t bits;
+  std::memcpy(&bits, &theta, sizeof bits);
+  Entry& e = remembered[((bits ^ (bits >> 31)) * 0x9E3779B97F4A7C15ull) >> 54];
+  if (e.bits != bits) {
+    e.bits = bits;
+    e.c = std::cos(theta);
+    e.s = std::sin(theta);
+  }
+  c = e.c;
+  s = e.s;
+}
+
 // A pose with its heading's cosine and sine, worked out once for every field
 // and bound that places a polygon there (a circle needs neither).
 struct Placed {
   const Pose2& pose;
   double c = 1.0, s = 0.0;
   Placed(const Pose2& p, const Footprint& footprint) : pose(p) {
-    if (!footprint.is_circle()) c = std::cos(p.theta), s = std::sin(p.theta);
+    if (!footprint.is_circle()) heading_cos_sin(p.theta, c, s);
   }
   Vec2 world(const Vec2& q) const { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); }
 };
@@ -279,7 +304,7 @@ double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& fo
     // In the robot's frame; a circle needs no turning.
     Vec2 q = centre - pose.position();
     if (!footprint.is_circle()) {
-      if (std::isnan(c)) c = std::cos(pose.theta), s = std::sin(pose.theta);
+      if (std::isnan(c)) heading_cos_sin(pose.theta, c, s);
       q = Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
     }
     best = std::min(best, footprint.signed_distance_in_frame(q) - radius);
