@@ -133,9 +133,13 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   if (!field || !field->has_obstacles()) return kInf;
   const Pose2& pose = at.pose;
   if (footprint.is_circle()) return field->distance(pose.position()) - footprint.radius();
-  // The cover discs often settle a cutoff at a fifth of the outline's look-ups
-  // (a field of sensed points far from the robot nearly always does).
-  if (cover_lower_bound(field->lower_bounds(), footprint, at) >= cutoff) return cutoff;
+  // The circumscribed circle, then the cover discs, often settle a cutoff at
+  // one look-up or a fifth of the outline's (a field of sensed points far
+  // from the robot nearly always does).
+  const DistanceField::LowerBounds bounds = field->lower_bounds();
+  if (cutoff < kInf &&
+      (bounds(pose.x, pose.y) - footprint.radius() >= cutoff || cover_lower_bound(bounds, footprint, at) >= cutoff))
+    return cutoff;
 
   // Polygon: the distance from its outline. The outline is sampled a cell
   // apart (half a cell apart, the pieces' bounds settled more of them but
@@ -236,7 +240,12 @@ double polygon_lower_bound(const DistanceField* field, const DistanceField* sens
                            const Pose2& pose) {
   const Placed at(pose, footprint);
   double best = field ? cover_lower_bound(field->lower_bounds(), footprint, at) : std::numeric_limits<double>::infinity();
-  if (sensed) best = std::min(best, cover_lower_bound(sensed->lower_bounds(), footprint, at));
+  // The sensed points are mostly far: their circumscribed circle's bound,
+  // one look-up, then leaves the least unchanged.
+  if (sensed) {
+    const DistanceField::LowerBounds bounds = sensed->lower_bounds();
+    if (bounds(pose.x, pose.y) - footprint.radius() < best) best = std::min(best, cover_lower_bound(bounds, footprint, at));
+  }
   return best;
 }
 
