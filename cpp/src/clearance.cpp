@@ -113,6 +113,20 @@ struct Placed {
   Vec2 world(const Vec2& q) const { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); }
 };
 
+// How near a piece of length `length` can come to an obstacle that lies at
+// least da from one end and db from the other: the height over the piece of the
+// triangle with sides da, db and length where its foot falls on the piece,
+// else the nearer end's distance. Tighter than the field's Lipschitz bound
+// (da + db - length) / 2: pieces a cell long between ends 0.3 m away are held
+// to 0.296 m instead of 0.25 m. Shaved a little below the rounding.
+double piece_lower_bound(double da, double db, double length) {
+  if (!(da > 0.0 && db > 0.0)) return 0.0;
+  const double foot = (da * da - db * db + length * length) / (2.0 * length);
+  if (foot <= 0.0) return da * (1.0 - 1e-12);
+  if (foot >= length) return db * (1.0 - 1e-12);
+  return std::sqrt(std::max(da * da - foot * foot, 0.0)) * (1.0 - 1e-12);
+}
+
 // A polygon's bound from one field: every point of it lies in one of its cover discs.
 double cover_lower_bound(const DistanceField::LowerBounds& bound, const Footprint& footprint, const Placed& at) {
   double best = std::numeric_limits<double>::infinity();
@@ -147,8 +161,7 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   // where the table's lower bounds leave it open: first at the sample of
   // lowest bound, then at every
   // sample whose bound is below the best so far; then the pieces between
-  // samples whose bound could still be below it (the field is 1-Lipschitz, so
-  // a piece of length L holds no point nearer than (da + db - L) / 2) are
+  // samples whose bound (piece_lower_bound) could still be below it are
   // measured whole, inside the grid or out.
   const double res = field->grid().resolution();
   const auto& vertices = footprint.vertices();
@@ -203,12 +216,12 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     Sample& to = samples[(j + 1) % n];
     const double length = from.length;
     const auto known = [](const Sample& sample) { return std::isnan(sample.exact) ? sample.low : sample.exact; };
-    if (0.5 * (known(from) + known(to) - length) >= best) continue;
+    if (piece_lower_bound(known(from), known(to), length) >= best) continue;
     if (!on_grid(from.point) || !on_grid(to.point)) {
       // Off the grid (always so for a small field of sensed cells) a segment
       // walks rows or columns; the exact distances at its ends often settle it.
       best = std::min({best, exact(from), exact(to)});
-      if (0.5 * (from.exact + to.exact - length) >= best) continue;
+      if (piece_lower_bound(from.exact, to.exact, length) >= best) continue;
     }
     best = std::min(best, field->segment_distance(from.point, to.point));
   }

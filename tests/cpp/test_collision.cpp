@@ -145,6 +145,41 @@ TEST_P(ClearanceAgreement, FieldNeverAboveFclAndWithinAFewMillimetres) {
 
 INSTANTIATE_TEST_SUITE_P(CircleAndRectangle, ClearanceAgreement, ::testing::Values(0, 1, 2));
 
+// The outline's pieces are skipped on bounds from their ends' distances; the
+// clearance must still be the least of the edges' exact distances, over
+// footprints from a sliver to a square and from many poses near obstacles,
+// off the grid included.
+TEST(FieldClearance, PolygonClearanceIsTheLeastEdgeDistance) {
+  std::mt19937 rng(515);
+  const OccupancyGrid grid = test::random_rectangles(rng, 60, 60, 0.1, Vec2(-1.0, 0.5), 0.12);
+  const auto field = std::make_shared<const DistanceField>(grid);
+  const FieldClearance fast(field);
+  std::uniform_real_distribution<double> side(0.02, 0.9), shift(-0.4, 0.4);  // shift: of the side, keeping the origin in
+  int compared = 0;
+  for (int shape = 0; shape < 40; ++shape) {
+    const double w = side(rng), h = side(rng), dx = shift(rng) * w, dy = shift(rng) * h;
+    const Footprint footprint = Footprint::polygon({{dx - w / 2, dy - h / 2}, {dx + w / 2, dy - h / 2},
+                                                    {dx + w / 2 + 0.1 * w, dy + h / 2}, {dx - w / 2, dy + h / 2}});
+    for (const Query& q : random_queries(rng, grid, 500)) {
+      const auto& v = footprint.vertices();
+      double least = std::numeric_limits<double>::infinity();
+      const double c = std::cos(q.pose.theta), s = std::sin(q.pose.theta);
+      const auto world = [&](const Vec2& p) {
+        return Vec2(q.pose.x + c * p.x() - s * p.y(), q.pose.y + s * p.x() + c * p.y());
+      };
+      for (std::size_t i = 0; i < v.size(); ++i)
+        least = std::min(least, field->segment_distance(world(v[i]), world(v[(i + 1) % v.size()])));
+      const double got = fast.clearance(footprint, q.pose, 0.0);
+      if (got <= 0.0) continue;  // an obstacle inside the outline
+      SCOPED_TRACE(::testing::Message() << "shape " << shape << " pose " << q.pose.x << "," << q.pose.y << ","
+                                        << q.pose.theta);
+      ASSERT_NEAR(got, least, 1e-12);
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 9000);
+}
+
 // The planner's query with a cutoff, which LocalPlanner alone may call.
 struct CutoffQueries : FieldClearance {
   using FieldClearance::clearance_below;
