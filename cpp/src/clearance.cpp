@@ -137,6 +137,40 @@ double cover_lower_bound(const DistanceField::LowerBounds& bound, const Footprin
   return best;
 }
 
+// The outline's samples in the robot's frame, a cell apart or less (half a
+// cell apart, the pieces' bounds settled more of them but twice as many were
+// looked up: 8 % slower), each with the length of the piece to the next, a
+// little over. They depend on the footprint and the resolution alone, so
+// each thread keeps the last ones it worked out.
+struct OutlineSamples {
+  std::vector<Vec2> vertices;
+  double resolution = 0.0;
+  std::vector<Vec2> points;
+  std::vector<double> lengths;
+};
+
+const OutlineSamples& outline_samples(const Footprint& footprint, double resolution) {
+  thread_local OutlineSamples last;
+  const std::vector<Vec2>& vertices = footprint.vertices();
+  if (last.resolution == resolution && last.vertices == vertices) return last;
+  last.vertices = vertices;
+  last.resolution = resolution;
+  last.points.clear();
+  last.lengths.clear();
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const Vec2 a = vertices[i], b = vertices[(i + 1) % vertices.size()];
+    const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / resolution)));
+    // Rounding aside the pieces of an edge are equally long; the margin keeps
+    // a piece's bound from cutting one that holds the minimum.
+    const double length = (b - a).norm() / pieces * (1.0 + 1e-12) + 1e-15;
+    for (int k = 0; k < pieces; ++k) {
+      last.points.push_back(a + (b - a) * (double(k) / pieces));
+      last.lengths.push_back(length);
+    }
+  }
+  return last;
+}
+
 // The footprint's clearance from the field's obstacles where it is below
 // `cutoff`; elsewhere a value from cutoff up to it. Both give the same bits
 // below the cutoff: the result is the least of the distances and piece bounds
@@ -155,28 +189,21 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
       (bounds(pose.x, pose.y) - footprint.radius() >= cutoff || cover_lower_bound(bounds, footprint, at) >= cutoff))
     return cutoff;
 
-  // Polygon: the distance from its outline. The outline is sampled a cell
-  // apart (half a cell apart, the pieces' bounds settled more of them but
-  // twice as many were looked up: 8 % slower). Exact distances are asked
-  // where the table's lower bounds leave it open: first at the sample of
-  // lowest bound, then at every
-  // sample whose bound is below the best so far; then the pieces between
-  // samples whose bound (piece_lower_bound) could still be below it are
-  // measured whole, inside the grid or out.
+  // Polygon: the distance from its outline, sampled (outline_samples).
+  // Exact distances are asked where the table's lower bounds leave it open:
+  // first at the sample of lowest bound, then at every sample whose bound is
+  // below the best so far; then the pieces between samples whose bound
+  // (piece_lower_bound) could still be below it are measured whole, inside
+  // the grid or out.
   const double res = field->grid().resolution();
-  const auto& vertices = footprint.vertices();
   struct Sample {
     Vec2 point;
     double low;     // the table's lower bound
     double exact;   // NaN until asked
     double length;  // of the piece to the next sample, a little over
   };
-  const auto edge_pieces = [&](std::size_t i) {
-    const double length = (vertices[(i + 1) % vertices.size()] - vertices[i]).norm();
-    return std::max(1, static_cast<int>(std::ceil(length / res)));
-  };
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < vertices.size(); ++i) n += static_cast<std::size_t>(edge_pieces(i));
+  const OutlineSamples& outline = outline_samples(footprint, res);
+  const std::size_t n = outline.points.size();
   // On the stack for the usual footprint; this runs thousands of times per control cycle.
   constexpr std::size_t kOnStack = 96;
   Sample on_stack[kOnStack];
@@ -186,18 +213,15 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     spilled.resize(n);
     samples = spilled.data();
   }
+  // Placing the samples rounds their coordinates: a few units in the last
+  // place of the largest one, which the pieces' lengths must allow for.
+  const double placing_slack =
+      8.0 * std::numeric_limits<double>::epsilon() * (std::abs(pose.x) + std::abs(pose.y) + footprint.radius());
   std::size_t lowest = 0;
-  for (std::size_t i = 0, j = 0; i < vertices.size(); ++i) {
-    const Vec2 a = at.world(vertices[i]), b = at.world(vertices[(i + 1) % vertices.size()]);
-    const int pieces = edge_pieces(i);
-    // Rounding aside the pieces of an edge are equally long; the margin keeps
-    // the bound below from cutting a piece that holds the minimum.
-    const double length = (b - a).norm() / pieces * (1.0 + 1e-12) + 1e-15;
-    for (int k = 0; k < pieces; ++k, ++j) {
-      const Vec2 q = a + (b - a) * (double(k) / pieces);
-      samples[j] = Sample{q, field->lower_bound(q), std::numeric_limits<double>::quiet_NaN(), length};
-      if (samples[j].low < samples[lowest].low) lowest = j;
-    }
+  for (std::size_t j = 0; j < n; ++j) {
+    const Vec2 q = at.world(outline.points[j]);
+    samples[j] = Sample{q, bounds(q.x(), q.y()), std::numeric_limits<double>::quiet_NaN(), outline.lengths[j] + placing_slack};
+    if (samples[j].low < samples[lowest].low) lowest = j;
   }
   const OccupancyGrid& grid = field->grid();
   const Vec2 grid_lo = grid.origin(), grid_hi = grid.origin() + res * Vec2(grid.cols(), grid.rows());
