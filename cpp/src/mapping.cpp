@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "beam_directions.hpp"
 #include "fgdwa/error.hpp"
 #include "validation.hpp"
 
@@ -168,11 +169,11 @@ std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>
   const double short_of_hit = 3.0 * params_.range_std;
   const Vec2 origin(scan.pose.x, scan.pose.y);
   constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  const std::vector<Vec2>& directions = detail::beam_directions(scan);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     const double r = scan.ranges[i];
     if (std::isnan(r)) continue;
-    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-    const Vec2 direction(std::cos(a), std::sin(a));
+    const Vec2& direction = directions[i];
     std::size_t hit = kNone;
     if (std::isfinite(r) && (!keep_hit || (*keep_hit)[i]) && cell_index(origin + (r + depth) * direction, hit))
       ++tally(hit).hits;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "beam_directions.hpp"
 #include "mover_sweeps.hpp"
 #include "validation.hpp"
 
@@ -340,11 +341,11 @@ void Navigator::locate_hits(const Scan& scan) {
   // nor marked in the scan map (it teaches nothing new, and hits that noise
   // carries past a thin obstacle would thicken it).
   segment_mask_.assign(n, 1);
+  const std::vector<Vec2>& directions = detail::beam_directions(scan);
   for (std::size_t i = 0; i < n; ++i) {
     const double r = scan.ranges[i];
     if (!std::isfinite(r)) continue;
-    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-    hits_[i] = Vec2(scan.pose.x + r * std::cos(a), scan.pose.y + r * std::sin(a));
+    hits_[i] = Vec2(scan.pose.x + r * directions[i].x(), scan.pose.y + r * directions[i].y());
     if (prior && known_field_->distance(hits_[i]) <= tolerance) segment_mask_[i] = 0;
   }
   keep_hit_ = segment_mask_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "beam_directions.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -35,13 +36,36 @@ void Scan::validate() const {
       throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", ranges[i], "must lie in [0, " + detail::format_number(limits::kMaxLength) + "] (+inf: no hit)"));
 }
 
+namespace detail {
+const std::vector<Vec2>& beam_directions(const Scan& scan) {
+  struct Kept {
+    double theta = std::numeric_limits<double>::quiet_NaN(), angle_min = 0.0, angle_increment = 0.0;
+    std::vector<Vec2> directions;
+  };
+  thread_local Kept kept;
+  // NaN never equals itself, so a fresh thread always computes.
+  if (!(kept.theta == scan.pose.theta && kept.angle_min == scan.angle_min &&
+        kept.angle_increment == scan.angle_increment && kept.directions.size() == scan.ranges.size())) {
+    kept.directions.resize(scan.ranges.size());
+    for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+      const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+      kept.directions[i] = Vec2(std::cos(a), std::sin(a));
+    }
+    kept.theta = scan.pose.theta;
+    kept.angle_min = scan.angle_min;
+    kept.angle_increment = scan.angle_increment;
+  }
+  return kept.directions;
+}
+}  // namespace detail
+
 std::vector<Vec2> Scan::hit_points() const {
   validate();
+  const std::vector<Vec2>& directions = detail::beam_directions(*this);
   std::vector<Vec2> points;
   for (std::size_t i = 0; i < ranges.size(); ++i) {
     if (!std::isfinite(ranges[i])) continue;
-    const double a = pose.theta + angle_min + static_cast<double>(i) * angle_increment;
-    points.emplace_back(pose.x + ranges[i] * std::cos(a), pose.y + ranges[i] * std::sin(a));
+    points.emplace_back(pose.x + ranges[i] * directions[i].x(), pose.y + ranges[i] * directions[i].y());
   }
   return points;
 }
