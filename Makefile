@@ -60,8 +60,10 @@ test-cpp: setup
 	$(BIN)/cmake --build $(BUILD) -j $(JOBS)
 	$(BIN)/ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
+# One worker per job, each test file on one worker: the fuzz module counts its
+# calls across its own tests.
 test-python: setup
-	$(BIN)/python -m pytest -q tests/python
+	$(BIN)/python -m pytest -q -n $(JOBS) --dist loadfile tests/python
 
 bench: setup
 	$(BIN)/cmake --build $(BUILD) -j $(JOBS) --target bench_planner bench_global bench_fgdwa bench_navigator
