@@ -149,6 +149,7 @@ double Footprint::signed_distance(const Pose2& pose, const Vec2& p) const {
 }
 
 double Footprint::signed_distance_in_frame(const Vec2& q) const {
+  detail::require_query_point("point", q);
   if (is_circle()) return q.norm() - radius_;
   double d = std::numeric_limits<double>::infinity();
   const size_t n = vertices_.size();

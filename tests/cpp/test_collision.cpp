@@ -161,14 +161,9 @@ TEST(FieldClearance, PolygonClearanceIsTheLeastEdgeDistance) {
     const Footprint footprint = Footprint::polygon({{dx - w / 2, dy - h / 2}, {dx + w / 2, dy - h / 2},
                                                     {dx + w / 2 + 0.1 * w, dy + h / 2}, {dx - w / 2, dy + h / 2}});
     for (const Query& q : random_queries(rng, grid, 500)) {
-      const auto& v = footprint.vertices();
+      const std::vector<Vec2> v = test::placed_vertices(footprint, q.pose);
       double least = std::numeric_limits<double>::infinity();
-      const double c = std::cos(q.pose.theta), s = std::sin(q.pose.theta);
-      const auto world = [&](const Vec2& p) {
-        return Vec2(q.pose.x + c * p.x() - s * p.y(), q.pose.y + s * p.x() + c * p.y());
-      };
-      for (std::size_t i = 0; i < v.size(); ++i)
-        least = std::min(least, field->segment_distance(world(v[i]), world(v[(i + 1) % v.size()])));
+      for (std::size_t i = 0; i < v.size(); ++i) least = std::min(least, field->segment_distance(v[i], v[(i + 1) % v.size()]));
       const double got = fast.clearance(footprint, q.pose, 0.0);
       if (got <= 0.0) continue;  // an obstacle inside the outline
       SCOPED_TRACE(::testing::Message() << "shape " << shape << " pose " << q.pose.x << "," << q.pose.y << ","

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <complex>
 #include <functional>
+#include <limits>
 #include <random>
 
+#include "fgdwa/error.hpp"
 #include "fgdwa/robot.hpp"
 #include "test_support.hpp"
 
@@ -131,6 +133,15 @@ TEST(Footprint, SignedDistanceOfCircleAndPolygon) {
   EXPECT_NEAR(rect.signed_distance(up, {0.4, 0.6}), std::hypot(0.3, 0.3), 1e-12);  // off a corner
   EXPECT_FALSE(rect.contains(up, {0.25, 0.0}));
   EXPECT_TRUE(rect.contains(up, {0.05, 0.25}));
+
+  // In the robot's frame: the same distances, the point turned by the caller.
+  EXPECT_NEAR(rect.signed_distance_in_frame({1.3, 0.0}), 1.0, 1e-12);
+  EXPECT_NEAR(rect.signed_distance_in_frame({0.25, 0.0}), -0.05, 1e-12);
+  EXPECT_NEAR(circle.signed_distance_in_frame({0.0, 1.0}), 0.5, 1e-15);
+  for (const Footprint& fp : {circle, rect}) {
+    EXPECT_THROW(fp.signed_distance_in_frame({std::nan(""), 0.0}), Error);
+    EXPECT_THROW(fp.signed_distance_in_frame({0.0, std::numeric_limits<double>::infinity()}), Error);
+  }
 }
 
 // Every point of the footprint lies in one of its cover discs, and no disc

@@ -65,8 +65,9 @@ class Footprint {
   // Signed distance from the footprint placed at `pose` to the point `p`
   // (negative inside).
   double signed_distance(const Pose2& pose, const Vec2& p) const;
-  // The same for a point `q` given in the robot frame (unchecked): what a
-  // caller measuring many points from one pose uses, turning each itself.
+  // The same for a point `q` given in the robot frame: what a caller
+  // measuring many points from one pose uses, turning each itself. Throws
+  // fgdwa::Error for a point that is not finite or beyond the query bounds.
   double signed_distance_in_frame(const Vec2& q) const;
   // Whether the point `p` lies inside the footprint placed at `pose`.
   bool contains(const Pose2& pose, const Vec2& p) const;
