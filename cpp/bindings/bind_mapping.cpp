@@ -17,7 +17,7 @@ void init_mapping(py::module_& m) {
   py::class_<OccupancyParams>(m, "OccupancyParams",
                               "The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).")
       .def(py::init([](FloatArg hit, FloatArg miss, FloatArg clamp_min, FloatArg clamp_max, FloatArg occupied,
-                       FloatArg free, FloatArg range_std, FloatArg clear_range, FloatArg hit_share, bool clear) {
+                       FloatArg free, FloatArg range_std, FloatArg clear_range, FloatArg hit_share, bool clear, FloatArg edge_margin) {
              OccupancyParams p;
              p.hit = to_float(hit, "hit");
              p.miss = to_float(miss, "miss");
@@ -29,18 +29,20 @@ void init_mapping(py::module_& m) {
              p.clear_range = to_float(clear_range, "clear_range");
              p.hit_share = to_float(hit_share, "hit_share");
              p.clear = clear;
+             p.edge_margin = to_float(edge_margin, "edge_margin");
              p.validate();
              return p;
            }),
            py::arg("hit") = 0.85, py::arg("miss") = -0.4, py::arg("clamp_min") = -2.0, py::arg("clamp_max") = 3.5,
            py::arg("occupied") = 0.5, py::arg("free") = -0.5, py::arg("range_std") = 0.0,
            py::arg("clear_range") = std::numeric_limits<double>::infinity(), py::arg("hit_share") = 0.2,
-           py::arg("clear") = true,
+           py::arg("clear") = true, py::arg("edge_margin") = DistanceField::kDefaultEdgeMargin,
            "hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the "
            "range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; "
            "range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std "
            "short); clear_range (m): the farthest a beam clears; hit_share: a cell some beams of a scan end in and "
-           "others pass is hit when at least this share end in it; clear=False: hits only, nothing clears.")
+           "others pass is hit when at least this share end in it; clear=False: hits only, nothing clears; "
+           "edge_margin (m): the free margin the map's field keeps past the grid's edge (DistanceField).")
       .def_readonly("hit", &OccupancyParams::hit)
       .def_readonly("miss", &OccupancyParams::miss)
       .def_readonly("clamp_min", &OccupancyParams::clamp_min)
@@ -51,11 +53,12 @@ void init_mapping(py::module_& m) {
       .def_readonly("clear_range", &OccupancyParams::clear_range)
       .def_readonly("hit_share", &OccupancyParams::hit_share)
       .def_readonly("clear", &OccupancyParams::clear)
+      .def_readonly("edge_margin", &OccupancyParams::edge_margin)
       .def("__repr__", [](const OccupancyParams& p) {
         std::ostringstream s;
         s << "OccupancyParams(hit=" << p.hit << ", miss=" << p.miss << ", clamp=[" << p.clamp_min << ", "
           << p.clamp_max << "], occupied=" << p.occupied << ", free=" << p.free << ", range_std=" << p.range_std
-          << ", clear=" << (p.clear ? "True" : "False") << ")";
+          << ", clear=" << (p.clear ? "True" : "False") << ", edge_margin=" << p.edge_margin << ")";
         return s.str();
       });
 

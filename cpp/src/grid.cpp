@@ -86,13 +86,14 @@ std::uint16_t bound_in_steps(double bound, double inverse_step) {
 }
 
 // 1-D squared distance transform of a sampled function: the lower envelope of
-// the parabolas rooted at each sample.
-void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vector<int>& v, std::vector<double>& z) {
+// the parabolas rooted at the samples first..last - 1, evaluated at all n.
+void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vector<int>& v, std::vector<double>& z,
+                           int first, int last) {
   int k = 0;
-  v[0] = 0;
+  v[0] = first;
   z[0] = -kInf;
   z[1] = kInf;
-  for (int q = 1; q < n; ++q) {
+  for (int q = first + 1; q < last; ++q) {
     double s;
     while (true) {
       const int p = v[k];
@@ -115,13 +116,47 @@ void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vec
 }
 }  // namespace
 
-DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
-  const int rows = grid.rows(), cols = grid.cols();
+namespace {
+// The free cells added on every side of a field's grid for an edge margin of
+// `margin` metres: at most 64, and on a large grid at most an eighth more
+// cells in all, so that memory follows the grid.
+constexpr long kSmallPaddedCells = 1L << 14;
+
+int edge_pad(const OccupancyGrid& grid, double margin) {
+  detail::require_distance("edge_margin", margin);
+  const long rows = grid.rows(), cols = grid.cols(), cells = rows * cols;
+  const long budget = std::max(cells / 8, kSmallPaddedCells);
+  int pad = static_cast<int>(std::min(64.0, std::ceil(margin / grid.resolution() - 1e-9)));
+  const auto extra = [&](long p) { return (rows + 2 * p) * (cols + 2 * p) - cells; };
+  while (pad > 0 && (extra(pad) > budget || cells + extra(pad) > limits::kMaxGridCells)) --pad;
+  // Within the coordinates a grid may have.
+  const double reach = limits::kMaxQueryCoordinate + limits::kMaxLength;
+  const double res = grid.resolution();
+  const Vec2 lo = grid.origin() - Vec2(pad * res, pad * res);
+  const Vec2 hi = grid.origin() + Vec2(static_cast<double>(cols + pad) * res, static_cast<double>(rows + pad) * res);
+  if (!(std::max({std::abs(lo.x()), std::abs(lo.y()), std::abs(hi.x()), std::abs(hi.y())}) <= reach)) pad = 0;
+  return pad;
+}
+
+OccupancyGrid padded(const OccupancyGrid& grid, int pad) {
+  if (pad == 0) return grid;
+  const int rows = grid.rows() + 2 * pad, cols = grid.cols() + 2 * pad;
+  std::vector<std::uint8_t> cells(static_cast<std::size_t>(rows) * cols, 0);
+  for (int r = 0; r < grid.rows(); ++r)
+    std::copy_n(&grid.cells()[grid.index(r, 0)], grid.cols(), &cells[static_cast<std::size_t>(r + pad) * cols + pad]);
+  return OccupancyGrid(rows, cols, grid.resolution(), grid.origin() - Vec2(pad * grid.resolution(), pad * grid.resolution()),
+                       std::move(cells));
+}
+}  // namespace
+
+DistanceField::DistanceField(const OccupancyGrid& grid, double edge_margin)
+    : shown_(grid), pad_(edge_pad(grid, edge_margin)), grid_(padded(grid, pad_)) {
+  const int rows = grid_.rows(), cols = grid_.cols();
   // The grid's constructor bounds the cells (limits::kMaxGridCells), so cell
   // indices fit the 32-bit tables.
   const std::size_t n_cells = static_cast<std::size_t>(rows) * cols;
   static_assert(limits::kMaxGridCells <= std::numeric_limits<std::int32_t>::max());
-  occupied_ = grid.occupied_count();
+  occupied_ = grid_.occupied_count();
   const int n = std::max(rows, cols);
   f_.resize(n);
   d_.resize(n);
@@ -134,21 +169,23 @@ DistanceField::DistanceField(const OccupancyGrid& grid) : grid_(grid) {
   static_assert(2 * limits::kMaxGridCells <= std::numeric_limits<std::uint32_t>::max());
   centre_x_.resize(cols);
   centre_y_.resize(rows);
-  for (int c = 0; c < cols; ++c) centre_x_[c] = grid.cell_center(0, c).x();
-  for (int r = 0; r < rows; ++r) centre_y_[r] = grid.cell_center(r, 0).y();
+  // The bits of shown_.cell_center() on the given cells, so that a query at a
+  // centre measures the same there whatever the margin.
+  for (int c = 0; c < cols; ++c) centre_x_[c] = shown_.cell_center(0, c - pad_).x();
+  for (int r = 0; r < rows; ++r) centre_y_[r] = shown_.cell_center(r - pad_, 0).y();
   // Pieces of about kBoundPiece metres, at least 2 x 2 per cell, and no more
   // than kMaxBoundPieces in all.
   constexpr double kBoundPiece = 0.025;
   constexpr double kMaxBoundPieces = 4e6;
-  subdivisions_ = std::max(2, static_cast<int>(std::ceil(grid.resolution() / kBoundPiece - 1e-9)));
+  subdivisions_ = std::max(2, static_cast<int>(std::ceil(grid_.resolution() / kBoundPiece - 1e-9)));
   subdivisions_ = std::max(2, std::min(subdivisions_, static_cast<int>(std::sqrt(kMaxBoundPieces / n_cells))));
   const int sub = subdivisions_;
-  inverse_resolution_ = 1.0 / grid.resolution();
-  inverse_piece_ = sub / grid.resolution();
+  inverse_resolution_ = 1.0 / grid_.resolution();
+  inverse_piece_ = sub / grid_.resolution();
   bound_cols_ = static_cast<double>(sub * cols);
   bound_rows_ = static_cast<double>(sub * rows);
   bound_stride_ = static_cast<std::size_t>(sub * cols);
-  bound_step_ = grid.resolution() / sub / kBoundSteps;
+  bound_step_ = grid_.resolution() / sub / kBoundSteps;
   candidates_.assign(n_cells, CellCandidates{kNoCell, kNoCell, 0});
   more_.assign(1, 0);
   piece_scratch_.resize(static_cast<std::size_t>(sub) * sub);
@@ -211,11 +248,12 @@ void DistanceField::column_pass(int col, int from, int to, std::vector<int>* cha
 void DistanceField::row_pass(int row, std::vector<std::size_t>* changed) {
   const int cols = grid_.cols();
   const std::int32_t* nearest_row = &column_nearest_[grid_.index(row, 0)];
-  for (int c = 0; c < cols; ++c) {
+  // The margin's columns hold no obstacle: no parabola is rooted there.
+  for (int c = pad_; c < cols - pad_; ++c) {
     const double dr = row - nearest_row[c];
     f_[c] = nearest_row[c] < 0 ? kFar : dr * dr;
   }
-  distance_transform_1d(f_.data(), cols, d_.data(), arg_.data(), v_, z_);
+  distance_transform_1d(f_.data(), cols, d_.data(), arg_.data(), v_, z_, pad_, cols - pad_);
   for (int c = 0; c < cols; ++c) {
     const std::uint32_t nearest = d_[c] >= 0.5 * kFar ? kNoCell : pack(nearest_row[arg_[c]], arg_[c]);
     std::uint32_t& now = candidates_[grid_.index(row, c)].first;
@@ -340,7 +378,7 @@ void DistanceField::compact_more() {
 
 std::size_t DistanceField::update(const OccupancyGrid& grid) {
   std::vector<std::size_t> differ;
-  const std::vector<std::uint8_t>& now = grid_.cells();
+  const std::vector<std::uint8_t>& now = shown_.cells();
   if (grid.cells().size() == now.size())
     for (std::size_t i = 0; i < now.size(); ++i)
       if ((grid.cells()[i] != 0) != (now[i] != 0)) differ.push_back(i);
@@ -348,20 +386,22 @@ std::size_t DistanceField::update(const OccupancyGrid& grid) {
 }
 
 std::size_t DistanceField::update(const OccupancyGrid& grid, const std::vector<std::size_t>& cells) {
-  if (grid.rows() != grid_.rows() || grid.cols() != grid_.cols() || grid.resolution() != grid_.resolution() ||
-      grid.origin() != grid_.origin())
+  if (grid.rows() != shown_.rows() || grid.cols() != shown_.cols() || grid.resolution() != shown_.resolution() ||
+      grid.origin() != shown_.origin())
     throw Error("DistanceField::update: the grid has another layout (rows, cols, resolution or origin) than the field's");
   const int rows = grid_.rows(), cols = grid_.cols();
   for (const std::size_t i : cells)  // all checked before anything changes
     if (i >= grid.cells().size())
       throw Error(describe("DistanceField::update cell", i, "must be below rows x cols = " + std::to_string(grid.cells().size())));
-  std::vector<std::size_t> flipped;
+  std::vector<std::size_t> flipped;  // in the padded grid
   for (const std::size_t i : cells) {
     const bool occupied = grid.cells()[i] != 0;
-    if (occupied == (grid_.cells()[i] != 0)) continue;
-    grid_.set(i, occupied);
+    if (occupied == (shown_.cells()[i] != 0)) continue;
+    shown_.set(i, occupied);
+    const std::size_t j = grid_.index(static_cast<int>(i / shown_.cols()) + pad_, static_cast<int>(i % shown_.cols()) + pad_);
+    grid_.set(j, occupied);
     occupied_ = occupied ? occupied_ + 1 : occupied_ - 1;
-    flipped.push_back(i);
+    flipped.push_back(j);
   }
   if (flipped.empty()) return 0;
 
@@ -452,8 +492,10 @@ void DistanceField::col_outermost(int col) {
 }
 
 double DistanceField::cell_distance(int row, int col) const {
-  if (!grid_.in_bounds(row, col))
+  if (!shown_.in_bounds(row, col))
     throw Error("cell (" + std::to_string(row) + ", " + std::to_string(col) + ") is outside the grid");
+  row += pad_;
+  col += pad_;
   const std::uint32_t o = candidates_[grid_.index(row, col)].first;
   if (o == kNoCell) return kInf;
   const double dr = row - row_of(o), dc = col - col_of(o);
@@ -461,21 +503,21 @@ double DistanceField::cell_distance(int row, int col) const {
 }
 
 std::vector<double> DistanceField::cell_distances() const {
-  std::vector<double> out(candidates_.size());
-  for (int r = 0; r < grid_.rows(); ++r)
-    for (int c = 0; c < grid_.cols(); ++c) out[grid_.index(r, c)] = cell_distance(r, c);
+  std::vector<double> out(shown_.cells().size());
+  for (int r = 0; r < shown_.rows(); ++r)
+    for (int c = 0; c < shown_.cols(); ++c) out[shown_.index(r, c)] = cell_distance(r, c);
   return out;
 }
 
 double DistanceField::bytes_per_cell() const {
   const auto bytes = [](const auto& v) { return static_cast<double>(v.capacity() * sizeof(v[0])); };
-  const double total = sizeof(*this) + bytes(grid_.cells()) + bytes(column_nearest_) + bytes(candidates_) + bytes(more_) +
+  const double total = sizeof(*this) + bytes(shown_.cells()) + bytes(grid_.cells()) + bytes(column_nearest_) + bytes(candidates_) + bytes(more_) +
                        bytes(centre_x_) + bytes(centre_y_) + bytes(piece_lower_bound_) + bytes(row_first_) +
                        bytes(row_last_) + bytes(col_first_) + bytes(col_last_) + bytes(row_block_first_) +
                        bytes(row_block_last_) + bytes(col_block_first_) + bytes(col_block_last_) + bytes(f_) +
                        bytes(d_) + bytes(z_) + bytes(v_) + bytes(arg_) + bytes(piece_scratch_) + bytes(gap_x_) +
                        bytes(gap_y_) + bytes(stale_mark_) + bytes(column_before_);
-  return total / static_cast<double>(candidates_.size());
+  return total / static_cast<double>(shown_.cells().size());
 }
 
 namespace {

@@ -30,6 +30,7 @@ void OccupancyParams::validate() const {
   detail::require_non_negative("occupancy range_std", range_std);
   if (!(hit_share > 0.0 && hit_share <= 1.0))
     throw Error("occupancy hit_share = " + std::to_string(hit_share) + ": must be in (0, 1]");
+  detail::require_distance("occupancy edge_margin", edge_margin);
   if (std::isnan(clear_range) || clear_range < 0.0)
     throw Error("occupancy clear_range = " + std::to_string(clear_range) + ": must be >= 0 (m, inf for no limit)");
 }
@@ -222,7 +223,7 @@ std::size_t ScanMap::commit(std::size_t changed) {
 
 std::shared_ptr<const DistanceField> ScanMap::field() {
   if (!field_) {
-    field_ = std::make_shared<DistanceField>(grid_);
+    field_ = std::make_shared<DistanceField>(grid_, params_.edge_margin);
   } else if (!pending_.empty() || pending_all_) {
     // A field that someone else still holds stays as they saw it: the update goes to a copy.
     if (field_.use_count() > 1) field_ = std::make_shared<DistanceField>(*field_);

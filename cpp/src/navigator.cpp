@@ -121,10 +121,13 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
     throw Error("terrain: its cells must lie exactly on the map's (same size, resolution and origin)");
   OccupancyParams occupancy = params_.occupancy;
   occupancy.range_std = std::max(occupancy.range_std, lidar_.noise_std);
+  // The map's fields keep free space past the edge only as far as a rollout
+  // reaches: a wider margin costs every map update and buys nothing.
+  occupancy.edge_margin = std::min(occupancy.edge_margin, limits_.v_max * planner.sim_time + footprint_.radius());
   if (mode_ == MapMode::Known) {
     known_map_ = std::make_unique<OccupancyGrid>(map);
     planning_map_ = std::make_unique<OccupancyGrid>(map);
-    known_field_ = std::make_shared<DistanceField>(map);
+    known_field_ = std::make_shared<DistanceField>(map, occupancy.edge_margin);
     controller_.set_map(known_field_);
     if (params_.learn_obstacles) scan_map_ = std::make_unique<ScanMap>(map, occupancy);
   } else {

@@ -233,7 +233,8 @@ std::shared_ptr<DistanceField> points_field(const std::vector<Vec2>& points, dou
     const int r = std::clamp(static_cast<int>(std::floor((p.y() - origin.y()) / resolution)), 0, rows - 1);
     cells[static_cast<std::size_t>(r) * cols + c] = 1;
   }
-  return std::make_shared<DistanceField>(OccupancyGrid(rows, cols, resolution, origin, std::move(cells)));
+  // Built anew every cycle, and the points are mostly far: no edge margin.
+  return std::make_shared<DistanceField>(OccupancyGrid(rows, cols, resolution, origin, std::move(cells)), 0.0);
 }
 
 }  // namespace fgdwa

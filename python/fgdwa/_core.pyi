@@ -234,8 +234,10 @@ class DistanceField:
     """
     Exact Euclidean distance transform of a grid. `cells` holds centre-to-centre distances in metres (scipy's distance_transform_edt(cells == 0) * resolution); `distance(points)` is the exact distance to the nearest obstacle cell's edge. Given `previous`, the field of an earlier grid with the same layout, only the cells near changed obstacles are recomputed (same result, faster).
     """
-    def __init__(self, grid: OccupancyGrid, previous: DistanceField = None) -> None:
-        ...
+    def __init__(self, grid: OccupancyGrid, previous: DistanceField = None, *, edge_margin: typing.Any = None) -> None:
+        """
+        edge_margin: free space in metres the field adds around the grid (default 3), so that points past the edge cost no more than inside; held to 64 cells and, on large grids, an eighth more cells.
+        """
     def __repr__(self) -> str:
         ...
     def distance(self, points: typing.Any) -> numpy.typing.NDArray[numpy.float64]:
@@ -245,6 +247,11 @@ class DistanceField:
     @property
     def cells(self) -> numpy.typing.NDArray[numpy.float64]:
         ...
+    @property
+    def edge_margin(self) -> float:
+        """
+        the free margin kept around the grid, in metres: edge_margin rounded up to whole cells, less where the budget holds it
+        """
     @property
     def grid(self) -> OccupancyGrid:
         ...
@@ -1260,9 +1267,9 @@ class OccupancyParams:
     """
     The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).
     """
-    def __init__(self, hit: typing.SupportsFloat | typing.SupportsIndex = 0.85, miss: typing.SupportsFloat | typing.SupportsIndex = -0.4, clamp_min: typing.SupportsFloat | typing.SupportsIndex = -2.0, clamp_max: typing.SupportsFloat | typing.SupportsIndex = 3.5, occupied: typing.SupportsFloat | typing.SupportsIndex = 0.5, free: typing.SupportsFloat | typing.SupportsIndex = -0.5, range_std: typing.SupportsFloat | typing.SupportsIndex = 0.0, clear_range: typing.SupportsFloat | typing.SupportsIndex = ..., hit_share: typing.SupportsFloat | typing.SupportsIndex = 0.2, clear: bool = True) -> None:
+    def __init__(self, hit: typing.SupportsFloat | typing.SupportsIndex = 0.85, miss: typing.SupportsFloat | typing.SupportsIndex = -0.4, clamp_min: typing.SupportsFloat | typing.SupportsIndex = -2.0, clamp_max: typing.SupportsFloat | typing.SupportsIndex = 3.5, occupied: typing.SupportsFloat | typing.SupportsIndex = 0.5, free: typing.SupportsFloat | typing.SupportsIndex = -0.5, range_std: typing.SupportsFloat | typing.SupportsIndex = 0.0, clear_range: typing.SupportsFloat | typing.SupportsIndex = ..., hit_share: typing.SupportsFloat | typing.SupportsIndex = 0.2, clear: bool = True, edge_margin: typing.SupportsFloat | typing.SupportsIndex = 3.0) -> None:
         """
-        hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std short); clear_range (m): the farthest a beam clears; hit_share: a cell some beams of a scan end in and others pass is hit when at least this share end in it; clear=False: hits only, nothing clears.
+        hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std short); clear_range (m): the farthest a beam clears; hit_share: a cell some beams of a scan end in and others pass is hit when at least this share end in it; clear=False: hits only, nothing clears; edge_margin (m): the free margin the map's field keeps past the grid's edge (DistanceField).
         """
     def __repr__(self) -> str:
         ...
@@ -1277,6 +1284,9 @@ class OccupancyParams:
         ...
     @property
     def clear_range(self) -> float:
+        ...
+    @property
+    def edge_margin(self) -> float:
         ...
     @property
     def free(self) -> float:

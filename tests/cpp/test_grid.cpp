@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 #include <utility>
@@ -106,14 +107,49 @@ TEST(DistanceField, PointDistanceOutsideTheGridIsExact) {
   for (int trial = 0; trial < 60; ++trial) {
     const int rows = size(rng), cols = size(rng);
     const OccupancyGrid grid = test::random_cells(rng, rows, cols, 0.1, Vec2(-1.0, 2.0), density(rng));
-    const DistanceField field(grid);
-    if (!field.has_obstacles()) continue;
+    // With no margin the walks outward measure every point off the grid; with
+    // one, the margin's look-up data the near ones.
+    const DistanceField walked(grid, 0.0), margined(grid);
+    if (!walked.has_obstacles()) continue;
     for (int i = 0; i < 100; ++i) {
       const Vec2 p = grid.origin() + Vec2(u(rng) * cols * 0.1, u(rng) * rows * 0.1);
-      ASSERT_NEAR(field.distance(p), test::brute_point_distance(grid, p), 1e-9)
-          << "trial " << trial << " p " << p.transpose();
+      const double exact = test::brute_point_distance(grid, p);
+      ASSERT_NEAR(walked.distance(p), exact, 1e-9) << "trial " << trial << " p " << p.transpose();
+      ASSERT_NEAR(margined.distance(p), exact, 1e-9) << "trial " << trial << " p " << p.transpose();
     }
   }
+}
+
+// The free margin kept around the grid: whole cells, within the budget, and
+// a field with one answers as a field of the grid padded with free cells by
+// hand, while grid() and cell_distances() stay the grid's as given.
+TEST(DistanceField, EdgeMarginAnswersAsAGridPaddedWithFreeCells) {
+  std::mt19937 rng(31);
+  const OccupancyGrid grid = test::random_cells(rng, 40, 70, 0.1, Vec2(-1.0, 2.0), 0.05);
+  const DistanceField field(grid, 1.25), none(grid, 0.0), wide(grid);
+  EXPECT_DOUBLE_EQ(field.edge_margin(), 1.3);  // 13 whole cells
+  EXPECT_EQ(none.edge_margin(), 0.0);
+  EXPECT_NEAR(wide.edge_margin(), DistanceField::kDefaultEdgeMargin, 1e-12);
+  EXPECT_EQ(field.grid().rows(), 40);
+  EXPECT_EQ(field.grid().cells(), grid.cells());
+  EXPECT_EQ(field.cell_distances(), none.cell_distances());
+  std::vector<std::uint8_t> cells(static_cast<std::size_t>(66) * 96, 0);
+  for (int r = 0; r < 40; ++r)
+    for (int c = 0; c < 70; ++c) cells[static_cast<std::size_t>(r + 13) * 96 + c + 13] = grid.occupied(r, c);
+  const DistanceField by_hand(OccupancyGrid(66, 96, 0.1, Vec2(-2.3, 0.7), std::move(cells)), 0.0);
+  std::uniform_real_distribution<double> x(-4.0, 9.0), y(-1.0, 9.0);
+  for (int i = 0; i < 5000; ++i) {
+    const Vec2 p(x(rng), y(rng));
+    ASSERT_NEAR(field.distance(p), by_hand.distance(p), 1e-12) << p.transpose();
+    ASSERT_LE(field.lower_bound(p), field.distance(p) + 1e-12) << p.transpose();
+    ASSERT_NEAR(field.segment_distance(p, p + Vec2(0.07, -0.05)), by_hand.segment_distance(p, p + Vec2(0.07, -0.05)), 1e-12);
+  }
+  // A large grid keeps at most an eighth more cells: 1000 x 1000 at 5 cm gets
+  // 30 of the 60 cells 3 m asks for.
+  const OccupancyGrid large(1000, 1000, 0.05, Vec2(0.0, 0.0), std::vector<std::uint8_t>(1000000, 0));
+  EXPECT_NEAR(DistanceField(large).edge_margin(), 30 * 0.05, 1e-12);
+  for (const double bad : {-0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    EXPECT_THROW(DistanceField(grid, bad), Error);
 }
 
 // inflate() blocks exactly the cells whose centre lies within the radius of
@@ -171,7 +207,7 @@ TEST(DistanceField, HoldsAtMost32BytesPerCellAt5Centimetres) {
   const OccupancyGrid grid = test::random_cells(rng, 400, 500, 0.05, Vec2(-3.0, 1.0), 0.03);
   const DistanceField field(grid);
   EXPECT_EQ(field.bound_subdivisions(), 2);
-  EXPECT_LE(field.bytes_per_cell(), 32.0);
+  EXPECT_LE(field.bytes_per_cell(), 32.0) << "its edge margin " << field.edge_margin() << " m";
 }
 
 // A field updated from an earlier one answers exactly as one built afresh,

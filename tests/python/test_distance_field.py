@@ -37,6 +37,29 @@ def test_point_distance_outside_the_grid_is_a_lower_bound(rng):
     assert np.all(got >= 0.0)
 
 
+@pytest.mark.parametrize("margin", [0.0, 0.45, None])
+def test_point_distance_past_the_edge_is_exact_with_or_without_a_margin(rng, margin):
+    cells = random_block_grid(rng)
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    field = fgdwa.DistanceField(grid) if margin is None else fgdwa.DistanceField(grid, edge_margin=margin)
+    # Whole cells, rounded up: 0.45 m is 5 cells of 0.1 m.
+    assert field.edge_margin == pytest.approx({None: 3.0, 0.0: 0.0, 0.45: 0.5}[margin], abs=1e-12)
+    assert field.grid.shape == grid.shape
+    points = np.column_stack([rng.uniform(-4.0, 12.0, 2000), rng.uniform(-4.0, 10.0, 2000)])
+    exact = brute_force_square_distance(points, cells, 0.1, (0.0, 0.0))
+    np.testing.assert_allclose(field.distance(points), exact, rtol=0, atol=1e-9)
+
+
+def test_edge_margin_comes_from_previous_when_it_is_given(rng):
+    grid = fgdwa.OccupancyGrid(random_block_grid(rng), 0.1)
+    previous = fgdwa.DistanceField(grid, edge_margin=0.5)
+    assert fgdwa.DistanceField(grid, previous).edge_margin == pytest.approx(0.5)
+    with pytest.raises(fgdwa.FgdwaError, match="edge_margin"):
+        fgdwa.DistanceField(grid, previous, edge_margin=1.0)
+    with pytest.raises(fgdwa.FgdwaError, match="edge_margin"):
+        fgdwa.OccupancyParams(edge_margin=-0.5)
+
+
 def test_no_obstacle_gives_infinity(open_world):
     field = fgdwa.DistanceField(open_world)
     assert np.all(np.isinf(field.cells))

@@ -754,11 +754,13 @@ def test_terrain_grid(args, top, probe):
 @fuzz(150)
 @given(seed=seeds(), shape=st.tuples(st.integers(1, 25), st.integers(1, 25)), res=st.sampled_from([0.05, 0.1, 0.3]),
        origin=st.tuples(st.floats(-5, 5), st.floats(-5, 5)), probes=points_arg(1, 8, -8.0, 8.0),
-       radius=hf(0.0, 1.0), other=st.sampled_from(["same", "res", "origin", "shape"]))
-def test_distance_field_and_inflate(seed, shape, res, origin, probes, radius, other):
+       radius=hf(0.0, 1.0), other=st.sampled_from(["same", "res", "origin", "shape"]), margin=hf(0.0, 4.0))
+def test_distance_field_and_inflate(seed, shape, res, origin, probes, radius, other, margin):
     ran("field")
     cells = block_cells(seed, *shape, blocks=4)
     grid = fgdwa.OccupancyGrid(cells, res, origin)
+    out = attempt(fgdwa.DistanceField, grid, edge_margin=margin)
+    expect(out, within(margin, 0.0, MAX_LENGTH), "edge_margin")
     out = attempt(fgdwa.DistanceField, grid)
     assert out.ok, out.call
     field = out.value

@@ -43,6 +43,8 @@ struct OccupancyParams {
   // readings that noise puts short, however many beams cross it up close.
   double hit_share = 0.2;
   bool clear = true;         // false: hits only and nothing clears (static worlds; the map of earlier versions)
+  // m, the free margin the map's field keeps past the grid's edge (DistanceField's edge_margin)
+  double edge_margin = DistanceField::kDefaultEdgeMargin;
   void validate() const;
 };
 
