@@ -131,7 +131,7 @@ void init_grid(py::module_& m) {
            }),
            py::arg("grid"), py::arg("previous") = nullptr, py::kw_only(), py::arg("edge_margin") = py::none(),
            "edge_margin: free space in metres the field adds around the grid (default 3), so that points "
-           "past the edge cost no more than inside; held to 64 cells and, on large grids, an eighth more cells.")
+           "past the edge cost no more than inside; held to 64 cells and, on large grids, a sixteenth more cells.")
       .def_property_readonly("edge_margin", &DistanceField::edge_margin,
                              "the free margin kept around the grid, in metres: edge_margin rounded up to whole cells, less where the budget holds it")
       .def_property_readonly("grid", &DistanceField::grid)

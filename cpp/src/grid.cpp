@@ -118,14 +118,14 @@ void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vec
 
 namespace {
 // The free cells added on every side of a field's grid for an edge margin of
-// `margin` metres: at most 64, and on a large grid at most an eighth more
+// `margin` metres: at most 64, and on a large grid at most a sixteenth more
 // cells in all, so that memory follows the grid.
 constexpr long kSmallPaddedCells = 1L << 14;
 
 int edge_pad(const OccupancyGrid& grid, double margin) {
   detail::require_distance("edge_margin", margin);
   const long rows = grid.rows(), cols = grid.cols(), cells = rows * cols;
-  const long budget = std::max(cells / 8, kSmallPaddedCells);
+  const long budget = std::max(cells / 16, kSmallPaddedCells);
   int pad = static_cast<int>(std::min(64.0, std::ceil(margin / grid.resolution() - 1e-9)));
   const auto extra = [&](long p) { return (rows + 2 * p) * (cols + 2 * p) - cells; };
   while (pad > 0 && (extra(pad) > budget || cells + extra(pad) > limits::kMaxGridCells)) --pad;

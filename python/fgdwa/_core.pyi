@@ -236,7 +236,7 @@ class DistanceField:
     """
     def __init__(self, grid: OccupancyGrid, previous: DistanceField = None, *, edge_margin: typing.Any = None) -> None:
         """
-        edge_margin: free space in metres the field adds around the grid (default 3), so that points past the edge cost no more than inside; held to 64 cells and, on large grids, an eighth more cells.
+        edge_margin: free space in metres the field adds around the grid (default 3), so that points past the edge cost no more than inside; held to 64 cells and, on large grids, a sixteenth more cells.
         """
     def __repr__(self) -> str:
         ...

@@ -144,10 +144,10 @@ TEST(DistanceField, EdgeMarginAnswersAsAGridPaddedWithFreeCells) {
     ASSERT_LE(field.lower_bound(p), field.distance(p) + 1e-12) << p.transpose();
     ASSERT_NEAR(field.segment_distance(p, p + Vec2(0.07, -0.05)), by_hand.segment_distance(p, p + Vec2(0.07, -0.05)), 1e-12);
   }
-  // A large grid keeps at most an eighth more cells: 1000 x 1000 at 5 cm gets
-  // 30 of the 60 cells 3 m asks for.
+  // A large grid keeps at most a sixteenth more cells: 1000 x 1000 at 5 cm gets
+  // 15 of the 60 cells 3 m asks for.
   const OccupancyGrid large(1000, 1000, 0.05, Vec2(0.0, 0.0), std::vector<std::uint8_t>(1000000, 0));
-  EXPECT_NEAR(DistanceField(large).edge_margin(), 30 * 0.05, 1e-12);
+  EXPECT_NEAR(DistanceField(large).edge_margin(), 15 * 0.05, 1e-12);
   for (const double bad : {-0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
     EXPECT_THROW(DistanceField(grid, bad), Error);
 }

@@ -99,7 +99,7 @@ class TerrainGrid {
 // table is cut finer (16 pieces a cell at 10 cm), up to 4 million pieces in
 // all. update() appends the candidates it redoes and compacts them once half
 // are stale: a field that keeps being updated holds a little more. The edge
-// margin's cells are counted too: on a large grid at most an eighth more, on a
+// margin's cells are counted too: on a large grid at most a sixteenth more, on a
 // small one (10 m x 10 m at 0.1 m) 2.6 times the grid's cells.
 //
 // Threads: const methods may run concurrently on one field; update() may not
@@ -113,8 +113,8 @@ class DistanceField {
   // edge_margin: free space the field adds around the grid (metres, >= 0).
   // Where it reaches, a point off the grid is measured from look-up data as
   // inside: distance() and lower_bound() cost the same on both sides of the
-  // edge. It is held to 64 cells and, on grids over 131 072 cells, to an
-  // eighth more cells in all; 0 for a field built anew every cycle.
+  // edge. It is held to 64 cells and, on grids over 262 144 cells, to a
+  // sixteenth more cells in all; 0 for a field built anew every cycle.
   explicit DistanceField(const OccupancyGrid& grid, double edge_margin = kDefaultEdgeMargin);
   // The field of `grid`, from the field of an earlier grid with the same
   // layout: a copy of `previous` brought to `grid` by update(). Throws
