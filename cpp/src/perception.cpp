@@ -126,11 +126,10 @@ double LaserScanner::cast(const Vec2& origin, double angle, const std::vector<Di
   detail::require_query_point("origin", origin);
   detail::require_magnitude("angle", angle, limits::kMaxAngle);
   detail::require_magnitude("t", t, limits::kMaxHorizon);
-  return cast_unchecked(origin, angle, discs, t);
+  return cast_unchecked(origin, Vec2(std::cos(angle), std::sin(angle)), discs, t);
 }
 
-double LaserScanner::cast_unchecked(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const {
-  const Vec2 dir(std::cos(angle), std::sin(angle));
+double LaserScanner::cast_unchecked(const Vec2& origin, const Vec2& dir, const std::vector<Disc>& discs, double t) const {
   double best = cast_grid(origin, dir);
   for (const Disc& disc : discs) {
     // |origin + s dir - c| = r, smallest s >= 0.
@@ -155,6 +154,9 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
   out.angle_increment = params_.increment();
   out.max_range = params_.max_range;
   out.ranges.resize(static_cast<std::size_t>(params_.beams));
+  // The directions the robot's side works out from the scan, kept for it:
+  // the same angles, so each beam's direction is computed once per scan.
+  const std::vector<Vec2>& directions = detail::beam_directions(out);
   std::normal_distribution<double> noise(0.0, params_.noise_std);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < params_.beams; ++i) {
@@ -164,7 +166,7 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
       out.ranges[static_cast<std::size_t>(i)] = kInf;
       continue;
     }
-    double r = cast_unchecked(pose.position(), pose.theta + params_.angle(i), discs, t);
+    double r = cast_unchecked(pose.position(), directions[static_cast<std::size_t>(i)], discs, t);
     if (std::isfinite(r) && params_.noise_std > 0.0) r = std::clamp(r + noise(rng), 0.0, params_.max_range);
     out.ranges[static_cast<std::size_t>(i)] = r;
   }

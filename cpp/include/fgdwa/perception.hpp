@@ -52,7 +52,7 @@ class LaserScanner {
   double cast(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const;
 
  private:
-  double cast_unchecked(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const;
+  double cast_unchecked(const Vec2& origin, const Vec2& direction, const std::vector<Disc>& discs, double t) const;
   double cast_grid(const Vec2& origin, const Vec2& direction) const;
   LidarParams params_;
   std::shared_ptr<const DistanceField> world_;
