@@ -214,6 +214,32 @@ TEST(FieldClearance, ClearanceBelowACutoffIsTheClearanceBitForBit) {
   EXPECT_GE(stopped, 500);  // the cutoff saved work
 }
 
+// A polygon's lower bounds over many poses (lanes carrying poses, on the
+// widest instruction set) equal those of each pose asked alone, bit for bit,
+// on the grid, in its margin and beyond it, and never exceed the clearance.
+TEST(FieldClearance, PolygonBoundsOfManyPosesAreThoseOfEachAlone) {
+  const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
+  std::mt19937 rng(78);
+  const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.12);
+  const OccupancyGrid sensed = test::random_cells(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.01);
+  FieldClearance world(std::make_shared<const DistanceField>(grid, 1.0));
+  FieldClearance both(std::make_shared<const DistanceField>(grid, 1.0));
+  both.set_sensed(std::make_shared<const DistanceField>(sensed, 0.0));
+  std::uniform_real_distribution<double> x(-4.0, 10.0), y(-2.5, 9.5), heading(-M_PI, M_PI);
+  for (const FieldClearance* source : {&world, &both}) {
+    Trajectory poses(1001);  // not a multiple of any vector's lanes
+    for (Pose2& p : poses) p = Pose2{x(rng), y(rng), heading(rng)};
+    std::vector<double> bounds(poses.size());
+    source->clearance_lower_bounds(rectangle, poses, 0.1, bounds.data());
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+      double alone;
+      source->clearance_lower_bounds(rectangle, Trajectory{poses[k]}, 0.1, &alone);
+      ASSERT_EQ(bounds[k], alone) << "pose " << k;
+      ASSERT_LE(bounds[k], source->clearance(rectangle, poses[k], 0.0) + 1e-12) << "pose " << k;
+    }
+  }
+}
+
 TEST(CollisionWorld, MovingDiscsMatchTheAnalyticDistance) {
   std::mt19937 rng(77);
   std::uniform_real_distribution<double> pos(-3.0, 3.0), vel(-1.0, 1.0), rad(0.0, 0.5), angle(-M_PI, M_PI),
