@@ -285,25 +285,30 @@ void ClearanceSource::clearance_lower_bounds(const Footprint& footprint, const T
 void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const {
   const double r = footprint.radius();
   const std::size_t n = poses.size();
+  // Positions (and a polygon's headings and cover discs) column by column, so
+  // that lanes carry poses; one thread-local look-up per call, and the
+  // positions filled once for the polygon's kernel and the discs' alike.
+  struct Columns {
+    std::vector<double> x, y, c, s, qx, qy, qr;
+  };
+  thread_local Columns columns;
+  Columns& in = columns;
+  const bool polygon_kernel = !footprint.is_circle() && field_;
+  if (polygon_kernel || !static_discs_.x.empty()) {
+    in.x.resize(n);
+    in.y.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      in.x[k] = poses[k].x;
+      in.y[k] = poses[k].y;
+    }
+  }
   if (!footprint.is_circle()) {
     // Every point of the polygon lies in one of its cover discs: the map's
-    // bounds at the discs, for all poses at once with lanes carrying poses.
-    if (field_) {
-      // Column by column, so that lanes carry poses (one thread-local look-up per call).
-      struct Columns {
-        std::vector<double> x, y, c, s, qx, qy, qr;
-      };
-      thread_local Columns columns;
-      Columns& in = columns;
-      in.x.resize(n);
-      in.y.resize(n);
+    // bounds at the discs, for all poses at once.
+    if (polygon_kernel) {
       in.c.resize(n);
       in.s.resize(n);
-      for (std::size_t k = 0; k < n; ++k) {
-        in.x[k] = poses[k].x;
-        in.y[k] = poses[k].y;
-        heading_cos_sin(poses[k].theta, in.c[k], in.s[k]);
-      }
+      for (std::size_t k = 0; k < n; ++k) heading_cos_sin(poses[k].theta, in.c[k], in.s[k]);
       const std::vector<Footprint::CoverDisc>& cover = footprint.cover();
       in.qx.resize(cover.size());
       in.qy.resize(cover.size());
@@ -340,16 +345,8 @@ void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& 
     }
   }
   if (!static_discs_.x.empty()) {
-    // Positions column by column, so that lanes carry poses.
-    thread_local std::vector<double> px, py;
-    px.resize(n);
-    py.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      px[k] = poses[k].x;
-      py[k] = poses[k].y;
-    }
     const StaticDiscs& d = static_discs_;
-    detail::lower_to_discs(px.data(), py.data(), n, d.x.data(), d.y.data(), d.radius.data(), d.x.size(), r, out);
+    detail::lower_to_discs(in.x.data(), in.y.data(), n, d.x.data(), d.y.data(), d.radius.data(), d.x.size(), r, out);
   }
   for (const Disc& disc : moving_)
     for (std::size_t k = 0; k < n; ++k)

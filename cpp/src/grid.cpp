@@ -129,12 +129,11 @@ int edge_pad(const OccupancyGrid& grid, double margin) {
   int pad = static_cast<int>(std::min(64.0, std::ceil(margin / grid.resolution() - 1e-9)));
   const auto extra = [&](long p) { return (rows + 2 * p) * (cols + 2 * p) - cells; };
   while (pad > 0 && (extra(pad) > budget || cells + extra(pad) > limits::kMaxGridCells)) --pad;
-  // Within the coordinates a grid may have.
-  const double reach = limits::kMaxQueryCoordinate + limits::kMaxLength;
+  // Within the coordinates a grid may have (OccupancyGrid's own check).
   const double res = grid.resolution();
   const Vec2 lo = grid.origin() - Vec2(pad * res, pad * res);
   const Vec2 hi = grid.origin() + Vec2(static_cast<double>(cols + pad) * res, static_cast<double>(rows + pad) * res);
-  if (!(std::max({std::abs(lo.x()), std::abs(lo.y()), std::abs(hi.x()), std::abs(hi.y())}) <= reach)) pad = 0;
+  if (!detail::is_field_point(lo) || !detail::is_field_point(hi)) pad = 0;
   return pad;
 }
 

@@ -132,8 +132,12 @@ inline void require_query_point(std::string_view field, const Vec2& p) {
 
 // A point a distance field is asked about: any point of a footprint placed at
 // a query pose, or a lidar hit from one.
+inline constexpr double kMaxFieldCoordinate = limits::kMaxQueryCoordinate + limits::kMaxLength;
+inline bool is_field_point(const Vec2& p) {
+  return std::abs(p.x()) <= kMaxFieldCoordinate && std::abs(p.y()) <= kMaxFieldCoordinate;
+}
 inline void require_field_point(std::string_view field, const Vec2& p) {
-  require_xy(field, p.x(), p.y(), limits::kMaxQueryCoordinate + limits::kMaxLength);
+  require_xy(field, p.x(), p.y(), kMaxFieldCoordinate);
 }
 
 [[gnu::cold, gnu::noinline]] inline void fail_pose(std::string_view field, const Pose2& pose, double bound) {
