@@ -75,25 +75,13 @@ LaserScanner::LaserScanner(const LidarParams& params, std::shared_ptr<const Dist
   params_.validate();
 }
 
-double LaserScanner::cast_grid(const Vec2& origin, const Vec2& dir) const {
-  if (!world_ || !world_->has_obstacles()) return kInf;
-  const OccupancyGrid& grid = world_->grid();
+namespace {
+
+// Where a ray from `origin` along `dir` meets the grid, walking the cells from
+// t (m along the ray) on: the distance at which it enters an occupied cell, or
+// +inf past `max_range` or beyond the grid.
+double walk_cells(const OccupancyGrid& grid, const Vec2& origin, const Vec2& dir, double t, double max_range) {
   const double res = grid.resolution();
-  // Obstacles lie only inside the grid: clip the ray to its rectangle.
-  const Vec2 lo = grid.origin(), hi = lo + Vec2(grid.cols() * res, grid.rows() * res);
-  double enter = 0.0, leave = 1.0;
-  if (!clip_segment_to_box(origin, origin + params_.max_range * dir, lo, hi, enter, leave)) return kInf;
-  double t = enter * params_.max_range;
-  const double range = leave * params_.max_range;
-  // Far from obstacles, jump by a lower bound of the clearance: nothing lies closer.
-  while (t < range) {
-    const double d = world_->lower_bound(origin + t * dir);
-    if (d < res) break;
-    t += d;
-  }
-  if (t >= range) return kInf;
-  // Near one, walk the cells along the ray; the hit is where the ray enters an
-  // occupied cell.
   const Vec2 p = (origin + t * dir - grid.origin()) / res;
   int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
   const int step_c = dir.x() > 0 ? 1 : -1, step_r = dir.y() > 0 ? 1 : -1;
@@ -113,7 +101,7 @@ double LaserScanner::cast_grid(const Vec2& origin, const Vec2& dir) const {
       entry = t_r;
       t_r += delta_r;
     }
-    if (entry >= params_.max_range) return kInf;
+    if (entry >= max_range) return kInf;
     if (grid.in_bounds(row, col)) {
       if (grid.occupied(row, col)) return entry;
     } else if ((step_c > 0 ? col >= grid.cols() : col < 0) || (step_r > 0 ? row >= grid.rows() : row < 0)) {
@@ -122,15 +110,74 @@ double LaserScanner::cast_grid(const Vec2& origin, const Vec2& dir) const {
   }
 }
 
+}  // namespace
+
+void LaserScanner::cast_grid(const Vec2& origin, const Vec2* directions, std::size_t n, double* out) const {
+  if (!world_ || !world_->has_obstacles()) {
+    std::fill(out, out + n, kInf);
+    return;
+  }
+  const OccupancyGrid& grid = world_->grid();
+  const double res = grid.resolution();
+  const DistanceField::LowerBounds bound = world_->lower_bounds();
+  // Obstacles lie only inside the grid: each ray is clipped to its rectangle.
+  const Vec2 lo = grid.origin(), hi = lo + Vec2(grid.cols() * res, grid.rows() * res);
+  // Far from obstacles a ray jumps by a lower bound of the clearance: nothing
+  // lies closer. Each jump waits on its table look-up, so the rays of a batch
+  // take their jumps in turn and their look-ups overlap.
+  constexpr std::size_t kBatch = 8;
+  for (std::size_t first = 0; first < n; first += kBatch) {
+    const std::size_t count = std::min(kBatch, n - first);
+    double t[kBatch], range[kBatch];
+    bool jumping[kBatch];
+    std::size_t left = 0;
+    for (std::size_t l = 0; l < count; ++l) {
+      const Vec2& dir = directions[first + l];
+      double enter = 0.0, leave = 1.0;
+      jumping[l] = clip_segment_to_box(origin, origin + params_.max_range * dir, lo, hi, enter, leave);
+      t[l] = enter * params_.max_range;
+      range[l] = leave * params_.max_range;
+      if (!jumping[l]) t[l] = kInf;  // misses the grid
+      left += jumping[l];
+    }
+    while (left > 0) {
+      for (std::size_t l = 0; l < count; ++l) {
+        if (!jumping[l]) continue;
+        const Vec2& dir = directions[first + l];
+        if (!(t[l] < range[l])) {
+          jumping[l] = false;
+          --left;
+          continue;
+        }
+        const double d = bound(origin.x() + t[l] * dir.x(), origin.y() + t[l] * dir.y());
+        if (d < res) {
+          jumping[l] = false;
+          --left;
+          continue;
+        }
+        t[l] += d;
+      }
+    }
+    // Near an obstacle, walk the cells along the ray; the hit is where the ray
+    // enters an occupied cell.
+    for (std::size_t l = 0; l < count; ++l)
+      out[first + l] = t[l] < range[l] ? walk_cells(grid, origin, directions[first + l], t[l], params_.max_range) : kInf;
+  }
+}
+
 double LaserScanner::cast(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const {
   detail::require_query_point("origin", origin);
   detail::require_magnitude("angle", angle, limits::kMaxAngle);
   detail::require_magnitude("t", t, limits::kMaxHorizon);
-  return cast_unchecked(origin, Vec2(std::cos(angle), std::sin(angle)), discs, t);
+  const Vec2 direction(std::cos(angle), std::sin(angle));
+  double grid_range = kInf;
+  cast_grid(origin, &direction, 1, &grid_range);
+  return with_discs(origin, direction, grid_range, discs, t);
 }
 
-double LaserScanner::cast_unchecked(const Vec2& origin, const Vec2& dir, const std::vector<Disc>& discs, double t) const {
-  double best = cast_grid(origin, dir);
+double LaserScanner::with_discs(const Vec2& origin, const Vec2& dir, double grid_range, const std::vector<Disc>& discs,
+                                double t) const {
+  double best = grid_range;
   for (const Disc& disc : discs) {
     // |origin + s dir - c| = r, smallest s >= 0.
     const Vec2 f = origin - disc.center_at(t);
@@ -157,18 +204,23 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
   // The directions the robot's side works out from the scan, kept for it:
   // the same angles, so each beam's direction is computed once per scan.
   const std::vector<Vec2>& directions = detail::beam_directions(out);
+  const Vec2 origin = pose.position();
+  // The grid's ranges of every beam first, a dropped one's too, so that the
+  // draws below come in the same order whatever the beams hit.
+  cast_grid(origin, directions.data(), directions.size(), out.ranges.data());
   std::normal_distribution<double> noise(0.0, params_.noise_std);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (int i = 0; i < params_.beams; ++i) {
+    double& range = out.ranges[static_cast<std::size_t>(i)];
     // The drop is drawn for every beam, hit or not, so one beam's draws do not
     // depend on what the others saw.
     if (params_.dropout > 0.0 && uniform(rng) < params_.dropout) {
-      out.ranges[static_cast<std::size_t>(i)] = kInf;
+      range = kInf;
       continue;
     }
-    double r = cast_unchecked(pose.position(), directions[static_cast<std::size_t>(i)], discs, t);
+    double r = with_discs(origin, directions[static_cast<std::size_t>(i)], range, discs, t);
     if (std::isfinite(r) && params_.noise_std > 0.0) r = std::clamp(r + noise(rng), 0.0, params_.max_range);
-    out.ranges[static_cast<std::size_t>(i)] = r;
+    range = r;
   }
 }
 

@@ -3,6 +3,9 @@
 // path is blocked only by obstacles ahead of the robot.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "fgdwa/controller.hpp"
@@ -18,6 +21,93 @@ OccupancyGrid wall_grid() {
   std::vector<std::uint8_t> cells(20 * 40, 0);
   for (int r = 5; r < 15; ++r) cells[r * 40 + 25] = 1;
   return OccupancyGrid(20, 40, 0.1, Vec2(0.0, 0.0), cells);
+}
+
+// The scanner casts its beams in batches: each beam must read what it reads
+// cast alone, what a fine march along it finds, and dropped beams and noise
+// must be drawn beam by beam in order, whatever the others hit.
+TEST(LaserScanner, EachBeamReadsWhatItReadsCastAloneAndTheDrawsKeepTheirOrder) {
+  std::mt19937_64 cells_rng(7);
+  std::bernoulli_distribution occupied(0.04);
+  std::vector<std::uint8_t> cells(60 * 80);
+  for (auto& c : cells) c = occupied(cells_rng);
+  const OccupancyGrid truth(60, 80, 0.1, Vec2(-1.0, -2.0), cells);
+  LidarParams quiet;
+  quiet.beams = 181;
+  quiet.noise_std = 0.0;
+  quiet.dropout = 0.0;
+  quiet.max_range = 6.0;
+  const auto world = std::make_shared<const DistanceField>(truth);
+  const LaserScanner scanner(quiet, world);
+  const std::vector<Disc> discs = {Disc{Vec2(2.0, 1.0), 0.3, Vec2(0.5, 0.0)}};
+  std::uniform_real_distribution<double> x(-3.0, 9.0), y(-4.0, 6.0), heading(-3.2, 3.2);
+  std::mt19937_64 rng(3);
+  int hits = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Pose2 pose{x(rng), y(rng), heading(rng)};  // off the grid too
+    Scan scan;
+    std::mt19937_64 unused(0);
+    scanner.scan(pose, discs, 0.4, unused, scan);
+    ASSERT_EQ(scan.ranges.size(), 181u);
+    for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+      const double angle = pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+      const double alone = scanner.cast(pose.position(), angle, discs, 0.4);
+      ASSERT_EQ(scan.ranges[i], alone) << "trial " << trial << " beam " << i;
+      // The nearest entry into an occupied cell, cell by cell (slabs), the disc aside.
+      const Vec2 dir(std::cos(angle), std::sin(angle));
+      double nearest = std::numeric_limits<double>::infinity();
+      for (int row = 0; row < truth.rows(); ++row)
+        for (int col = 0; col < truth.cols(); ++col) {
+          if (!truth.occupied(row, col)) continue;
+          const Vec2 lo = truth.origin() + 0.1 * Vec2(col, row), hi = lo + Vec2(0.1, 0.1);
+          double enter = 0.0, leave = quiet.max_range;
+          for (int a = 0; a < 2; ++a) {
+            const double o = pose.position()[a], d = dir[a];
+            if (d == 0.0) {
+              if (o < lo[a] || o >= hi[a]) enter = leave + 1.0;
+              continue;
+            }
+            const double t0 = (lo[a] - o) / d, t1 = (hi[a] - o) / d;
+            enter = std::max(enter, std::min(t0, t1));
+            leave = std::min(leave, std::max(t0, t1));
+          }
+          if (enter < leave) nearest = std::min(nearest, enter);
+        }
+      const double grid_alone = scanner.cast(pose.position(), angle, {}, 0.0);
+      if (std::isinf(nearest)) {
+        EXPECT_TRUE(std::isinf(grid_alone)) << "trial " << trial << " beam " << i;
+      } else {
+        EXPECT_NEAR(grid_alone, nearest, 1e-9) << "trial " << trial << " beam " << i;
+        ++hits;
+      }
+    }
+  }
+  EXPECT_GT(hits, 1000);
+
+  // Noise and drops: one uniform draw per beam, then a normal one for a kept hit.
+  LidarParams noisy = quiet;
+  noisy.noise_std = 0.02;
+  noisy.dropout = 0.2;
+  const LaserScanner noisy_scanner(noisy, world);
+  const Pose2 pose{3.0, 1.0, 0.3};
+  Scan clean, scan;
+  std::mt19937_64 unused(0), draws(11), replay(11);
+  scanner.scan(pose, discs, 0.4, unused, clean);
+  noisy_scanner.scan(pose, discs, 0.4, draws, scan);
+  std::normal_distribution<double> noise(0.0, noisy.noise_std);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  int dropped = 0;
+  for (std::size_t i = 0; i < clean.ranges.size(); ++i) {
+    double expected = clean.ranges[i];
+    if (uniform(replay) < noisy.dropout) {
+      expected = std::numeric_limits<double>::infinity();
+      ++dropped;
+    } else if (std::isfinite(expected)) {
+      expected = std::clamp(expected + noise(replay), 0.0, noisy.max_range);
+    }
+    EXPECT_EQ(scan.ranges[i], expected) << "beam " << i;
+  }
+  EXPECT_GT(dropped, 10);
 }
 
 TEST(ScanMap, MarksExactlyTheVisibleCellsOfAWall) {

@@ -52,8 +52,11 @@ class LaserScanner {
   double cast(const Vec2& origin, double angle, const std::vector<Disc>& discs, double t) const;
 
  private:
-  double cast_unchecked(const Vec2& origin, const Vec2& direction, const std::vector<Disc>& discs, double t) const;
-  double cast_grid(const Vec2& origin, const Vec2& direction) const;
+  // The grid's range along each of n directions from `origin` (+inf: no hit).
+  void cast_grid(const Vec2& origin, const Vec2* directions, std::size_t n, double* out) const;
+  // The nearer of `grid_range` and the discs' along `direction`, +inf past max_range.
+  double with_discs(const Vec2& origin, const Vec2& direction, double grid_range, const std::vector<Disc>& discs,
+                    double t) const;
   LidarParams params_;
   std::shared_ptr<const DistanceField> world_;
 };
