@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fgdwa/tracking.hpp"
+#include "beam_directions.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -134,6 +135,7 @@ std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params,
     throw Error(detail::describe("segment mask size", mask->size(), "must equal the scan's " + std::to_string(n) + " beams"));
 
   const Vec2 origin = scan.pose.position();
+  const std::vector<Vec2>& directions = detail::beam_directions(scan);
   std::vector<Cluster> clusters;
   Cluster current;
   double previous_range = 0.0;
@@ -145,8 +147,7 @@ std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params,
     const double r = scan.ranges[i];
     if (std::isnan(r) || r < 0.0) throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", r, "must be >= 0 or +inf"));
     if (!std::isfinite(r) || (mask && (*mask)[i] == 0)) continue;
-    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-    const Vec2 p = origin + r * Vec2(std::cos(a), std::sin(a));
+    const Vec2 p = origin + r * directions[i];
     if (!current.points.empty() &&
         (p - current.points.back()).norm() > params.base_gap + params.range_gap_factor * std::max(r, previous_range))
       close(true);
