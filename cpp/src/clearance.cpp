@@ -84,23 +84,33 @@ namespace {
 // cos and sin of a heading, remembered: a control cycle places the footprint
 // at thousands of poses but only at n_omega x n_steps headings, since every
 // speed of the window turns alike. Keyed by the heading's bits, so a hit gives
-// exactly what std::cos and std::sin would.
+// exactly what std::cos and std::sin would. Two entries per slot, the last
+// used first: with one, a fifth of the look-ups of a 21 x 20 cycle missed,
+// headings sharing a slot evicting each other pose after pose.
 void heading_cos_sin(double theta, double& c, double& s) {
   struct Entry {
     std::uint64_t bits = ~std::uint64_t{0};  // a NaN no heading has
     double c = std::numeric_limits<double>::quiet_NaN(), s = std::numeric_limits<double>::quiet_NaN();
   };
-  thread_local std::array<Entry, 1024> remembered;
+  struct Slot {
+    Entry recent, older;
+  };
+  thread_local std::array<Slot, 1024> remembered;
   std::uint64_t bits;
   std::memcpy(&bits, &theta, sizeof bits);
-  Entry& e = remembered[((bits ^ (bits >> 31)) * 0x9E3779B97F4A7C15ull) >> 54];
-  if (e.bits != bits) {
-    e.bits = bits;
-    e.c = std::cos(theta);
-    e.s = std::sin(theta);
+  Slot& slot = remembered[((bits ^ (bits >> 31)) * 0x9E3779B97F4A7C15ull) >> 54];
+  if (slot.recent.bits != bits) {
+    if (slot.older.bits == bits) {
+      std::swap(slot.recent, slot.older);
+    } else {
+      slot.older = slot.recent;
+      slot.recent.bits = bits;
+      slot.recent.c = std::cos(theta);
+      slot.recent.s = std::sin(theta);
+    }
   }
-  c = e.c;
-  s = e.s;
+  c = slot.recent.c;
+  s = slot.recent.s;
 }
 
 // A pose with its heading's cosine and sine, worked out once for every field
@@ -241,7 +251,10 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     Sample& to = samples[(j + 1) % n];
     const double length = from.length;
     const auto known = [](const Sample& sample) { return std::isnan(sample.exact) ? sample.low : sample.exact; };
-    if (piece_lower_bound(known(from), known(to), length) >= best) continue;
+    const double da = known(from), db = known(to);
+    // The field's Lipschitz bound first: it settles most pieces, those far
+    // from the nearest obstacle, without a division or a square root.
+    if (0.5 * (da + db - length) >= best || piece_lower_bound(da, db, length) >= best) continue;
     if (!on_grid(from.point) || !on_grid(to.point)) {
       // Off the grid (always so for a small field of sensed cells) a segment
       // walks rows or columns; the exact distances at its ends often settle it.
