@@ -87,7 +87,7 @@ namespace {
 // exactly what std::cos and std::sin would. Two entries per slot, the last
 // used first: with one, a fifth of the look-ups of a 21 x 20 cycle missed,
 // headings sharing a slot evicting each other pose after pose.
-void heading_cos_sin(double theta, double& c, double& s) {
+inline void heading_cos_sin(double theta, double& c, double& s) {
   struct Entry {
     std::uint64_t bits = ~std::uint64_t{0};  // a NaN no heading has
     double c = std::numeric_limits<double>::quiet_NaN(), s = std::numeric_limits<double>::quiet_NaN();
