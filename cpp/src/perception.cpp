@@ -205,8 +205,8 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
   // the same angles, so each beam's direction is computed once per scan.
   const std::vector<Vec2>& directions = detail::beam_directions(out);
   const Vec2 origin = pose.position();
-  // The grid's ranges of every beam first, a dropped one's too, so that the
-  // draws below come in the same order whatever the beams hit.
+  // The grid's ranges of all beams first, in batches (a beam dropped below is
+  // cast too); then, beam by beam, its drop, the discs and its noise.
   cast_grid(origin, directions.data(), directions.size(), out.ranges.data());
   std::normal_distribution<double> noise(0.0, params_.noise_std);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
