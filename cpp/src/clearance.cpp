@@ -298,11 +298,11 @@ void ClearanceSource::clearance_lower_bounds(const Footprint& footprint, const T
 void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const {
   const double r = footprint.radius();
   const std::size_t n = poses.size();
-  // Positions (and a polygon's headings and cover discs) column by column, so
-  // that lanes carry poses; one thread-local look-up per call, and the
-  // positions filled once for the polygon's kernel and the discs' alike.
+  // Positions (and a polygon's headings) column by column, so that lanes
+  // carry poses; one thread-local look-up per call, and the positions filled
+  // once for the polygon's kernel and the discs' alike.
   struct Columns {
-    std::vector<double> x, y, c, s, qx, qy, qr;
+    std::vector<double> x, y, c, s;
   };
   thread_local Columns columns;
   Columns& in = columns;
@@ -323,16 +323,8 @@ void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& 
       in.s.resize(n);
       for (std::size_t k = 0; k < n; ++k) heading_cos_sin(poses[k].theta, in.c[k], in.s[k]);
       const std::vector<Footprint::CoverDisc>& cover = footprint.cover();
-      in.qx.resize(cover.size());
-      in.qy.resize(cover.size());
-      in.qr.resize(cover.size());
-      for (std::size_t j = 0; j < cover.size(); ++j) {
-        in.qx[j] = cover[j].centre.x();
-        in.qy[j] = cover[j].centre.y();
-        in.qr[j] = cover[j].radius;
-      }
-      detail::cover_lower_bounds(in.x.data(), in.y.data(), in.c.data(), in.s.data(), n, in.qx.data(), in.qy.data(),
-                                 in.qr.data(), cover.size(), field_->lower_bounds(), out);
+      detail::cover_lower_bounds(in.x.data(), in.y.data(), in.c.data(), in.s.data(), n, cover.data(), cover.size(),
+                                 field_->lower_bounds(), out);
     } else {
       std::fill(out, out + n, std::numeric_limits<double>::infinity());
     }

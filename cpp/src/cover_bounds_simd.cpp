@@ -24,9 +24,8 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 void CoverLowerBounds(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y, const double* HWY_RESTRICT c,
-                      const double* HWY_RESTRICT s, std::size_t n, const double* HWY_RESTRICT qx,
-                      const double* HWY_RESTRICT qy, const double* HWY_RESTRICT qr, std::size_t m,
-                      const DistanceField::LowerBounds& table, double* HWY_RESTRICT out) {
+                      const double* HWY_RESTRICT s, std::size_t n, const Footprint::CoverDisc* HWY_RESTRICT cover,
+                      std::size_t m, const DistanceField::LowerBounds& table, double* HWY_RESTRICT out) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const hn::ScalableTag<double> d;
   const hn::RebindToSigned<decltype(d)> di;
@@ -42,7 +41,7 @@ void CoverLowerBounds(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y
     const auto X = hn::LoadU(d, x + k), Y = hn::LoadU(d, y + k), C = hn::LoadU(d, c + k), S = hn::LoadU(d, s + k);
     auto best = hn::Set(d, kInf);
     for (std::size_t j = 0; j < m; ++j) {
-      const auto Qx = hn::Set(d, qx[j]), Qy = hn::Set(d, qy[j]);
+      const auto Qx = hn::Set(d, cover[j].centre.x()), Qy = hn::Set(d, cover[j].centre.y());
       // As Placed::world: (x + c qx) - s qy, (y + s qx) + c qy.
       const auto wx = hn::Sub(hn::Add(X, hn::Mul(C, Qx)), hn::Mul(S, Qy));
       const auto wy = hn::Add(hn::Add(Y, hn::Mul(S, Qx)), hn::Mul(C, Qy));
@@ -61,14 +60,16 @@ void CoverLowerBounds(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y
         for (std::size_t l = 0; l < lanes; ++l) read[l] = table(px[l], py[l]);
         bound = hn::Load(d, read);
       }
-      best = hn::Min(best, hn::Sub(bound, hn::Set(d, qr[j])));
+      best = hn::Min(best, hn::Sub(bound, hn::Set(d, cover[j].radius)));
     }
     hn::StoreU(best, d, out + k);
   }
   for (std::size_t k = vector_end; k < n; ++k) {
     double best = kInf;
-    for (std::size_t j = 0; j < m; ++j)
-      best = std::min(best, table(x[k] + c[k] * qx[j] - s[k] * qy[j], y[k] + s[k] * qx[j] + c[k] * qy[j]) - qr[j]);
+    for (std::size_t j = 0; j < m; ++j) {
+      const double qx = cover[j].centre.x(), qy = cover[j].centre.y();
+      best = std::min(best, table(x[k] + c[k] * qx - s[k] * qy, y[k] + s[k] * qx + c[k] * qy) - cover[j].radius);
+    }
     out[k] = best;
   }
 }
@@ -84,9 +85,9 @@ namespace detail {
 HWY_EXPORT(CoverLowerBounds);
 
 void cover_lower_bounds(const double* x, const double* y, const double* c, const double* s, std::size_t n,
-                        const double* qx, const double* qy, const double* qr, std::size_t m,
-                        const DistanceField::LowerBounds& table, double* out) {
-  HWY_DYNAMIC_DISPATCH(CoverLowerBounds)(x, y, c, s, n, qx, qy, qr, m, table, out);
+                        const Footprint::CoverDisc* cover, std::size_t m, const DistanceField::LowerBounds& table,
+                        double* out) {
+  HWY_DYNAMIC_DISPATCH(CoverLowerBounds)(x, y, c, s, n, cover, m, table, out);
 }
 
 }  // namespace detail
