@@ -24,14 +24,11 @@ OccupancyGrid wall_grid() {
 }
 
 // The scanner casts its beams in batches: each beam must read what it reads
-// cast alone, what a fine march along it finds, and dropped beams and noise
-// must be drawn beam by beam in order, whatever the others hit.
+// cast alone and where it first enters an occupied cell, and dropped beams and
+// noise must be drawn beam by beam in order, whatever the others hit.
 TEST(LaserScanner, EachBeamReadsWhatItReadsCastAloneAndTheDrawsKeepTheirOrder) {
-  std::mt19937_64 cells_rng(7);
-  std::bernoulli_distribution occupied(0.04);
-  std::vector<std::uint8_t> cells(60 * 80);
-  for (auto& c : cells) c = occupied(cells_rng);
-  const OccupancyGrid truth(60, 80, 0.1, Vec2(-1.0, -2.0), cells);
+  std::mt19937 cells_rng(7);
+  const OccupancyGrid truth = random_cells(cells_rng, 60, 80, 0.1, Vec2(-1.0, -2.0), 0.04);
   LidarParams quiet;
   quiet.beams = 181;
   quiet.noise_std = 0.0;
