@@ -70,49 +70,54 @@ bool TerrainGrid::matches(const OccupancyGrid& grid) const {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Stands for "no obstacle" in the squared transform: finite, so the parabola
-// intersections below stay well defined, and far above any real squared distance.
-constexpr double kFar = 1e30;
-
 // A piece's bound is held in 64ths of a piece, in 16 bits: at most 1024
 // pieces (25.6 m at 2.5 cm), beyond which it stays there, still a bound.
 constexpr double kBoundSteps = 64.0;
 constexpr std::uint16_t kMostSteps = std::numeric_limits<std::uint16_t>::max();
 
-// `bound` (>= 0) in whole steps, rounded down (lowered by more than the
-// rounding of the step's product first) and held at kMostSteps: never above
-// the bound. The conversion truncates, which for a value >= 0 is the floor
-// (std::floor is a call, or a dozen instructions, without SSE4.1).
-std::uint16_t bound_in_steps(double bound, double inverse_step) {
-  return static_cast<std::uint16_t>(std::min(bound * inverse_step * (1.0 - 1e-12), double(kMostSteps)));
+// `bound` (>= 0) in steps, lowered by more than the rounding of the step's
+// product and held at kMostSteps: its truncation, which for a value >= 0 is the
+// floor (std::floor is a call, or a dozen instructions, without SSE4.1), is
+// never above the bound.
+double bound_in_steps(double bound, double inverse_step) {
+  return std::min(bound * inverse_step * (1.0 - 1e-12), double(kMostSteps));
 }
 
-// 1-D squared distance transform of a sampled function: the lower envelope of
-// the parabolas rooted at the samples first..last - 1, evaluated at all n.
-void distance_transform_1d(const double* f, int n, double* d, int* arg, std::vector<int>& v, std::vector<double>& z,
-                           int first, int last) {
-  int k = 0;
-  v[0] = first;
-  z[0] = -kInf;
-  z[1] = kInf;
-  for (int q = first + 1; q < last; ++q) {
-    double s;
-    while (true) {
-      const int p = v[k];
-      s = ((f[q] + double(q) * q) - (f[p] + double(p) * p)) / (2.0 * (q - p));
-      if (s > z[k]) break;  // z[0] = -inf ends the loop
-      --k;
+// The lower envelope of the parabolas (q - c)^2 + f[c] rooted at the columns
+// c of first..last - 1 with f[c] >= 0 (f[c] < 0: nothing there), at every
+// column q of 0..n - 1: arg[q] is the column of the lowest there, the leftmost
+// of equals, or -1 when there is none. Where a parabola takes over from the
+// one before is kept as a fraction num / den and compared by cross
+// multiplication: exact, and no division in the loop.
+void lower_envelope(const std::int64_t* f, int n, int* arg, std::vector<int>& v, std::vector<std::int64_t>& num,
+                    std::vector<std::int64_t>& den, int first, int last) {
+  using Wide = __int128;
+  int count = 0;
+  for (int q = first; q < last; ++q) {
+    if (f[q] < 0) continue;
+    const std::int64_t height = f[q] + std::int64_t{q} * q;
+    std::int64_t s_num = 0, s_den = 1;
+    while (count > 0) {
+      const int p = v[count - 1];
+      s_num = height - (f[p] + std::int64_t{p} * p);
+      s_den = 2 * std::int64_t{q - p};
+      // The first parabola is never dropped; another is, when q's takes over
+      // no later than it did.
+      if (count == 1 || Wide{s_num} * den[count - 1] > Wide{num[count - 1]} * s_den) break;
+      --count;
     }
-    ++k;
-    v[k] = q;
-    z[k] = s;
-    z[k + 1] = kInf;
+    v[count] = q;
+    num[count] = s_num;
+    den[count] = s_den;
+    ++count;
   }
-  k = 0;
+  if (count == 0) {
+    std::fill(arg, arg + n, -1);
+    return;
+  }
+  int k = 0;
   for (int q = 0; q < n; ++q) {
-    while (z[k + 1] < q) ++k;
-    const double diff = q - v[k];
-    d[q] = diff * diff + f[v[k]];
+    while (k + 1 < count && num[k + 1] < std::int64_t{q} * den[k + 1]) ++k;
     arg[q] = v[k];
   }
 }
@@ -160,8 +165,8 @@ DistanceField::DistanceField(const OccupancyGrid& grid, double edge_margin)
   occupied_ = grid_.occupied_count();
   const int n = std::max(rows, cols);
   f_.resize(n);
-  d_.resize(n);
-  z_.resize(n + 1);
+  num_.resize(n);
+  den_.resize(n);
   v_.resize(n);
   arg_.resize(n);
   column_nearest_.assign(n_cells, -1);
@@ -251,12 +256,12 @@ void DistanceField::row_pass(int row, std::vector<std::size_t>* changed) {
   const std::int32_t* nearest_row = &column_nearest_[grid_.index(row, 0)];
   // The margin's columns hold no obstacle: no parabola is rooted there.
   for (int c = pad_; c < cols - pad_; ++c) {
-    const double dr = row - nearest_row[c];
-    f_[c] = nearest_row[c] < 0 ? kFar : dr * dr;
+    const std::int64_t dr = row - nearest_row[c];
+    f_[c] = nearest_row[c] < 0 ? -1 : dr * dr;
   }
-  distance_transform_1d(f_.data(), cols, d_.data(), arg_.data(), v_, z_, pad_, cols - pad_);
+  lower_envelope(f_.data(), cols, arg_.data(), v_, num_, den_, pad_, cols - pad_);
   for (int c = 0; c < cols; ++c) {
-    const std::uint32_t nearest = d_[c] >= 0.5 * kFar ? kNoCell : pack(nearest_row[arg_[c]], arg_[c]);
+    const std::uint32_t nearest = arg_[c] < 0 ? kNoCell : pack(nearest_row[arg_[c]], arg_[c]);
     std::uint32_t& now = candidates_[grid_.index(row, c)].first;
     if (nearest == now) continue;
     now = nearest;
@@ -282,13 +287,26 @@ void DistanceField::look_up_data(int r, int c, bool first_unchanged) {
   std::uint32_t found[25];
   found[0] = cell.first;
   int count = 1;
-  if (!grid_.occupied(r, c))
-    for (int dr = -2; dr <= 2; ++dr)
-      for (int dc = -2; dc <= 2; ++dc) {
-        const int rr = std::clamp(r + dr, 0, rows - 1), cc = std::clamp(c + dc, 0, cols - 1);
-        const std::uint32_t o = candidates_[grid_.index(rr, cc)].first;
-        if (o != kNoCell && std::find(found, found + count, o) == found + count) found[count++] = o;
+  if (!grid_.occupied(r, c)) {
+    // Neighbours mostly share their nearest: one equal to the value read just
+    // before is skipped without a search.
+    std::uint32_t previous = cell.first;
+    const auto consider = [&](std::uint32_t o) {
+      if (o == previous) return;
+      previous = o;
+      if (o != kNoCell && std::find(found, found + count, o) == found + count) found[count++] = o;
+    };
+    if (r >= 2 && c >= 2 && r + 2 < rows && c + 2 < cols) {
+      for (int dr = -2; dr <= 2; ++dr) {
+        const CellCandidates* line = &candidates_[grid_.index(r + dr, c - 2)];
+        for (int dc = 0; dc < 5; ++dc) consider(line[dc].first);
       }
+    } else {
+      for (int dr = -2; dr <= 2; ++dr)
+        for (int dc = -2; dc <= 2; ++dc)
+          consider(candidates_[grid_.index(std::clamp(r + dr, 0, rows - 1), std::clamp(c + dc, 0, cols - 1))].first);
+    }
+  }
   Vec2 centres[25];
   for (int k = 0; k < count; ++k) centres[k] = centre_of(found[k]);
   // Drop the candidates that cannot be nearest anywhere in the cell: their
@@ -347,11 +365,17 @@ void DistanceField::look_up_data(int r, int c, bool first_unchanged) {
       for (int pc = 0; pc < sub; ++pc)
         nearest_piece[pr * sub + pc] = std::min(nearest_piece[pr * sub + pc], gap_x[pc] + gap_y[pr]);
   }
+  // Square roots and scaling over the whole cell first, so that they run
+  // several to a vector; then the conversions.
   const double inverse_step = 1.0 / bound_step_;
-  for (int pr = 0; pr < sub; ++pr)
-    for (int pc = 0; pc < sub; ++pc)
-      piece_lower_bound_[static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c + pc)] =
-          bound_in_steps(std::sqrt(nearest_piece[pr * sub + pc]), inverse_step);
+  const std::size_t pieces = static_cast<std::size_t>(sub) * sub;
+  for (std::size_t k = 0; k < pieces; ++k)
+    nearest_piece[k] = bound_in_steps(std::sqrt(nearest_piece[k]), inverse_step);
+  for (int pr = 0; pr < sub; ++pr) {
+    std::uint16_t* out = &piece_lower_bound_[static_cast<std::size_t>(sub * r + pr) * bound_stride_ + static_cast<std::size_t>(sub * c)];
+    const double* steps = &nearest_piece[static_cast<std::size_t>(pr) * sub];
+    for (int pc = 0; pc < sub; ++pc) out[pc] = static_cast<std::uint16_t>(static_cast<std::int32_t>(steps[pc]));
+  }
 
   if (count > 1) cell.second = found[1];
   if (count > 2) {
@@ -516,7 +540,7 @@ double DistanceField::bytes_per_cell() const {
                        bytes(centre_x_) + bytes(centre_y_) + bytes(piece_lower_bound_) + bytes(row_first_) +
                        bytes(row_last_) + bytes(col_first_) + bytes(col_last_) + bytes(row_block_first_) +
                        bytes(row_block_last_) + bytes(col_block_first_) + bytes(col_block_last_) + bytes(f_) +
-                       bytes(d_) + bytes(z_) + bytes(v_) + bytes(arg_) + bytes(piece_scratch_) + bytes(gap_x_) +
+                       bytes(num_) + bytes(den_) + bytes(v_) + bytes(arg_) + bytes(piece_scratch_) + bytes(gap_x_) +
                        bytes(gap_y_) + bytes(stale_mark_) + bytes(column_before_);
   return total / static_cast<double>(shown_.cells().size());
 }

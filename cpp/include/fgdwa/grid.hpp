@@ -281,7 +281,7 @@ class DistanceField {
   double bound_cols_ = 0.0, bound_rows_ = 0.0;  // pieces across and down the grid
   std::size_t bound_stride_ = 0;
   // Scratch of the passes.
-  std::vector<double> f_, d_, z_;
+  std::vector<std::int64_t> f_, num_, den_;
   std::vector<int> v_, arg_;
   std::vector<double> piece_scratch_, gap_x_, gap_y_;
   // Per cell, while update() runs (all 0 between calls): 1 when its look-up
