@@ -57,7 +57,12 @@ OrientedBox principal_box(const std::vector<Vec2>& points) {
 // where the hits' curvature cannot (few hits, a far or flat-looking arc), so
 // the fit never runs off; with many hits the hits decide. Fitting the centre
 // rather than taking the centroid keeps it in place as the viewpoint moves.
-void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const SegmentParams& params) {
+// Per-point columns fit_disc() reuses from cluster to cluster.
+struct FitScratch {
+  std::vector<double> px, py, reach, ux, uy;
+};
+
+void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const SegmentParams& params, FitScratch& scratch) {
   const std::vector<Vec2>& points = cluster.points;
   const double max_radius = 0.5 * params.max_size;
   Vec2 centroid = Vec2::Zero();
@@ -90,15 +95,39 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
                     apparent);
   const double w_point = 1.0 / (params.range_noise * params.range_noise);
   const double w_prior = 1.0 / (apparent_std * apparent_std);
+  // Each point's distance to the centre and the unit vector toward it come
+  // first, in a loop of their own: the square roots and divisions, most of
+  // the cost, then run several to a vector.
+  const std::size_t m = points.size();
+  std::vector<double>& px = scratch.px;
+  std::vector<double>& py = scratch.py;
+  std::vector<double>& reach = scratch.reach;
+  std::vector<double>& ux = scratch.ux;
+  std::vector<double>& uy = scratch.uy;
+  px.resize(m);
+  py.resize(m);
+  reach.resize(m);
+  ux.resize(m);
+  uy.resize(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    px[i] = points[i].x();
+    py[i] = points[i].y();
+  }
   for (int iteration = 0; iteration < 20; ++iteration) {
+    const double cx = x[0], cy = x[1];
+    for (std::size_t i = 0; i < m; ++i) {
+      const double dx = px[i] - cx, dy = py[i] - cy;
+      const double n = std::max(std::sqrt(dx * dx + dy * dy), 1e-9);
+      reach[i] = n;
+      ux[i] = dx / n;
+      uy[i] = dy / n;
+    }
     Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
     Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
-    for (const Vec2& p : points) {
-      const Vec2 d = p - Vec2(x[0], x[1]);
-      const double n = std::max(d.norm(), 1e-9);
-      const Eigen::Vector3d J(-d.x() / n, -d.y() / n, -1.0);
+    for (std::size_t i = 0; i < m; ++i) {
+      const Eigen::Vector3d J(-ux[i], -uy[i], -1.0);
       normal += w_point * J * J.transpose();
-      gradient += w_point * J * (n - x[2]);
+      gradient += w_point * J * (reach[i] - x[2]);
     }
     normal(2, 2) += w_prior;
     gradient[2] += w_prior * (x[2] - apparent);
@@ -183,13 +212,14 @@ std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params,
     return scan.ranges[static_cast<std::size_t>(next)] < range;
   };
   std::vector<Cluster> kept;
+  FitScratch scratch;
   for (Cluster& c : clusters) {
     if (static_cast<int>(c.points.size()) < params.min_points) continue;
     c.occluded = hides(c.first_beam, -1, (c.points.front() - origin).norm()) ||
                  hides(c.last_beam, +1, (c.points.back() - origin).norm());
     c.box = principal_box(c.points);
     if (2.0 * c.box.half_extents.maxCoeff() > params.max_size) continue;
-    fit_disc(c, origin, scan.angle_increment, params);
+    fit_disc(c, origin, scan.angle_increment, params, scratch);
     kept.push_back(std::move(c));
   }
   return kept;
