@@ -8,6 +8,7 @@
 
 #include "fgdwa/tracking.hpp"
 #include "beam_directions.hpp"
+#include "radial.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -96,8 +97,8 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
   const double w_point = 1.0 / (params.range_noise * params.range_noise);
   const double w_prior = 1.0 / (apparent_std * apparent_std);
   // Each point's distance to the centre and the unit vector toward it come
-  // first, in a loop of their own: the square roots and divisions, most of
-  // the cost, then run several to a vector.
+  // first, all together: the square roots and divisions, most of the cost,
+  // then run several to a vector.
   const std::size_t m = points.size();
   std::vector<double>& px = scratch.px;
   std::vector<double>& py = scratch.py;
@@ -114,14 +115,7 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
     py[i] = points[i].y();
   }
   for (int iteration = 0; iteration < 20; ++iteration) {
-    const double cx = x[0], cy = x[1];
-    for (std::size_t i = 0; i < m; ++i) {
-      const double dx = px[i] - cx, dy = py[i] - cy;
-      const double n = std::max(std::sqrt(dx * dx + dy * dy), 1e-9);
-      reach[i] = n;
-      ux[i] = dx / n;
-      uy[i] = dy / n;
-    }
+    detail::radial(px.data(), py.data(), m, x[0], x[1], 1e-9, reach.data(), ux.data(), uy.data());
     Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
     Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < m; ++i) {

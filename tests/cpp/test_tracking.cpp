@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <iostream>
 #include <memory>
 #include <random>
+
+#include <hwy/targets.h>
 
 #include "fgdwa/perception.hpp"
 #include "fgdwa/tracking.hpp"
@@ -176,6 +179,43 @@ TEST(Segment, FitsAndBoxesAreSaneAcrossSizesAndRanges) {
       EXPECT_LT(std::abs(std::sin(c.box.angle - across)), c.points.size() >= 10 ? 0.3 : 0.6)
           << "radius " << radius << ", range " << range << ", " << c.points.size() << " points";
     }
+  }
+}
+
+// The disc fit takes its ranges and directions from a vectorised kernel:
+// every instruction set the processor runs fits the same bits, on clusters of
+// every size around the lane counts (the last few points go one by one).
+TEST(Segment, DiscFitsAreTheSameBitsOnEveryInstructionSet) {
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  std::vector<Scan> scans;
+  std::mt19937_64 rng(11);
+  for (double radius : {0.05, 0.15, 0.3, 0.6})
+    for (double range : {0.8, 2.5, 7.0}) {
+      const std::vector<Disc> discs{Disc{Vec2(range + radius, 0.3), radius, Vec2::Zero()},
+                                    Disc{Vec2(-0.5, range + radius), 0.5 * radius + 0.05, Vec2::Zero()}};
+      scans.push_back(scan_of(scanner, Pose2{}, discs, 0.0, rng));
+    }
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_FALSE(targets.empty());
+  std::vector<std::vector<double>> fits;
+  std::size_t sizes = 0;
+  for (const int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    std::vector<double> fit;
+    for (const Scan& scan : scans)
+      for (const Cluster& c : segment_scan(scan)) {
+        fit.insert(fit.end(), {c.center.x(), c.center.y(), c.radius});
+        sizes |= std::size_t{1} << std::min<std::size_t>(c.points.size() % 8, 63);
+      }
+    fits.push_back(fit);
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_EQ(sizes, 0xFFu) << "cluster sizes must cover every remainder modulo 8";
+  ASSERT_GE(fits[0].size(), 3u * scans.size());
+  for (std::size_t t = 1; t < fits.size(); ++t) {
+    ASSERT_EQ(fits[t].size(), fits[0].size()) << hwy::TargetName(targets[t]);
+    EXPECT_EQ(std::memcmp(fits[t].data(), fits[0].data(), fits[0].size() * sizeof(double)), 0)
+        << hwy::TargetName(targets[t]) << " against " << hwy::TargetName(targets[0]);
   }
 }
 
