@@ -219,7 +219,7 @@ DistanceField::DistanceField(const OccupancyGrid& grid, const DistanceField& pre
   update(grid);
 }
 
-void DistanceField::column_pass(int col, int from, int to, std::vector<int>* changed_rows) {
+void DistanceField::column_pass(int col, int from, int to, std::vector<ColumnChange>* changes) {
   const auto occupied = [&](int r) { return grid_.occupied(r, col); };
   int lower = -1;  // the nearest occupied row at or below r
   for (int r = from; r >= 0; --r)
@@ -229,7 +229,7 @@ void DistanceField::column_pass(int col, int from, int to, std::vector<int>* cha
     }
   // The rows whose nearest changes are the ones a row pass must see again;
   // the old values are kept until the second sweep compares them.
-  if (changed_rows) {
+  if (changes) {
     column_before_.clear();
     for (int r = from; r <= to; ++r) column_before_.push_back(column_nearest_[grid_.index(r, col)]);
   }
@@ -247,7 +247,8 @@ void DistanceField::column_pass(int col, int from, int to, std::vector<int>* cha
     if (occupied(r)) upper = r;
     std::int32_t& best = column_nearest_[grid_.index(r, col)];
     if (upper >= 0 && (best < 0 || upper - r < r - best)) best = upper;  // a tie keeps the lower row
-    if (changed_rows && best != column_before_[static_cast<std::size_t>(r - from)]) changed_rows->push_back(r);
+    if (changes && best != column_before_[static_cast<std::size_t>(r - from)])
+      changes->push_back(ColumnChange{r, col, column_before_[static_cast<std::size_t>(r - from)]});
   }
 }
 
@@ -266,6 +267,58 @@ void DistanceField::row_pass(int row, std::vector<std::size_t>* changed) {
     if (nearest == now) continue;
     now = nearest;
     if (changed) changed->push_back(grid_.index(row, c));
+  }
+}
+
+void DistanceField::rows_after(std::vector<ColumnChange>& changes, std::vector<std::size_t>& changed) {
+  // By row and column; of a cell's changes the first holds its value before them all.
+  std::stable_sort(changes.begin(), changes.end(), [](const ColumnChange& a, const ColumnChange& b) {
+    return a.row != b.row ? a.row < b.row : a.col < b.col;
+  });
+  std::vector<Lowered> lowered;
+  for (std::size_t at = 0; at < changes.size();) {
+    const int row = changes[at].row;
+    lowered.clear();
+    bool only_nearer = true;
+    for (; at < changes.size() && changes[at].row == row; ++at) {
+      const ColumnChange& change = changes[at];
+      if (at > 0 && changes[at - 1].row == row && changes[at - 1].col == change.col) continue;
+      const std::int32_t now = column_nearest_[grid_.index(row, change.col)];
+      if (now == change.before) continue;
+      const std::int64_t height = std::int64_t{row - now} * (row - now);
+      if (now >= 0 && (change.before < 0 || height < std::int64_t{row - change.before} * (row - change.before)))
+        lowered.push_back(Lowered{change.col, now, height});
+      else
+        only_nearer = false;
+    }
+    if (!only_nearer) row_pass(row, &changed);
+    else if (!lowered.empty()) row_lowered(row, lowered, changed);
+  }
+}
+
+void DistanceField::row_lowered(int row, const std::vector<Lowered>& lowered, std::vector<std::size_t>& changed) {
+  const int cols = grid_.cols();
+  for (int q = 0; q < cols; ++q) {
+    std::uint32_t& nearest = candidates_[grid_.index(row, q)].first;
+    std::uint32_t best = nearest;
+    std::int64_t best_height = std::numeric_limits<std::int64_t>::max();
+    int best_col = std::numeric_limits<int>::max();
+    if (best != kNoCell) {
+      const std::int64_t dr = row - row_of(best), dc = q - col_of(best);
+      best_height = dr * dr + dc * dc;
+      best_col = col_of(best);
+    }
+    for (const Lowered& l : lowered) {
+      const std::int64_t dc = q - l.col, height = l.height + dc * dc;
+      if (height < best_height || (height == best_height && l.col < best_col)) {
+        best_height = height;
+        best_col = l.col;
+        best = pack(l.nearest, l.col);
+      }
+    }
+    if (best == nearest) continue;
+    nearest = best;
+    changed.push_back(grid_.index(row, q));
   }
 }
 
@@ -431,18 +484,16 @@ std::size_t DistanceField::update(const OccupancyGrid& grid, const std::vector<s
   if (flipped.empty()) return 0;
 
   // A cell's column run changes between the occupied cells above and below it.
-  std::vector<int> dirty_rows;
+  std::vector<ColumnChange> column_changes;
   for (const std::size_t i : flipped) {
     const int r0 = static_cast<int>(i / cols), c0 = static_cast<int>(i % cols);
     int below = r0 - 1, above = r0 + 1;
     while (below >= 0 && !grid_.occupied(below, c0)) --below;
     while (above < rows && !grid_.occupied(above, c0)) ++above;
-    column_pass(c0, below + 1, above - 1, &dirty_rows);
+    column_pass(c0, below + 1, above - 1, &column_changes);
   }
-  std::sort(dirty_rows.begin(), dirty_rows.end());
-  dirty_rows.erase(std::unique(dirty_rows.begin(), dirty_rows.end()), dirty_rows.end());
   std::vector<std::size_t> changed;
-  for (const int r : dirty_rows) row_pass(r, &changed);
+  rows_after(column_changes, changed);
 
   // Look-up data read the nearest obstacles of the cells within two.
   std::vector<std::size_t> stale;

@@ -226,11 +226,29 @@ class DistanceField {
   template <class Measure>
   void walk_outside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, const Measure& measure,
                     const double& best) const;
-  // Nearest occupied rows of column `col` over rows from..to; the rows whose
-  // value changed are appended to changed_rows when given.
-  void column_pass(int col, int from, int to, std::vector<int>* changed_rows);
+  // A cell whose nearest occupied row in its column changed, and what it was.
+  struct ColumnChange {
+    int row, col;
+    std::int32_t before;
+  };
+  // Nearest occupied rows of column `col` over rows from..to; the cells whose
+  // value changed are appended to `changes` when given.
+  void column_pass(int col, int from, int to, std::vector<ColumnChange>* changes);
   // The nearest obstacles of row `row` from the column runs; appends the cells whose nearest changed.
   void row_pass(int row, std::vector<std::size_t>* changed);
+  // A column of row `row` whose nearest obstacle came nearer: now `nearest`
+  // (its row), at squared distance `height` in cells.
+  struct Lowered {
+    int col;
+    std::int32_t nearest;
+    std::int64_t height;
+  };
+  // row_pass() where every change of the row's column runs brought an
+  // obstacle nearer: each cell keeps its nearest unless a lowered column's
+  // beats it (the leftmost of equals, as the full pass picks), with no envelope.
+  void row_lowered(int row, const std::vector<Lowered>& lowered, std::vector<std::size_t>& changed);
+  // The row passes that `changes` (in any order, a cell more than once) call for.
+  void rows_after(std::vector<ColumnChange>& changes, std::vector<std::size_t>& changed);
   // Candidates and piece bounds of one cell, from the nearest obstacles around
   // it; with first_unchanged (its own nearest is the one they were built
   // with), they are rebuilt only if the candidates differ.
