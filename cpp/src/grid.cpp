@@ -276,10 +276,11 @@ void DistanceField::rows_after(std::vector<ColumnChange>& changes, std::vector<s
     return a.row != b.row ? a.row < b.row : a.col < b.col;
   });
   std::vector<Lowered> lowered;
+  std::vector<std::uint32_t> raised;  // the nearest obstacles the row's columns had before
   for (std::size_t at = 0; at < changes.size();) {
     const int row = changes[at].row;
     lowered.clear();
-    bool only_nearer = true;
+    raised.clear();
     for (; at < changes.size() && changes[at].row == row; ++at) {
       const ColumnChange& change = changes[at];
       if (at > 0 && changes[at - 1].row == row && changes[at - 1].col == change.col) continue;
@@ -288,10 +289,18 @@ void DistanceField::rows_after(std::vector<ColumnChange>& changes, std::vector<s
       const std::int64_t height = std::int64_t{row - now} * (row - now);
       if (now >= 0 && (change.before < 0 || height < std::int64_t{row - change.before} * (row - change.before)))
         lowered.push_back(Lowered{change.col, now, height});
-      else
-        only_nearer = false;
+      else if (change.before >= 0)
+        raised.push_back(pack(change.before, change.col));
     }
-    if (!only_nearer) row_pass(row, &changed);
+    // A column whose obstacle went farther off changes nothing if it was
+    // nobody's nearest: it is beaten everywhere, and more so now.
+    bool raised_mattered = false;
+    if (!raised.empty())
+      for (int q = 0; q < grid_.cols() && !raised_mattered; ++q) {
+        const std::uint32_t nearest = candidates_[grid_.index(row, q)].first;
+        raised_mattered = std::find(raised.begin(), raised.end(), nearest) != raised.end();
+      }
+    if (raised_mattered) row_pass(row, &changed);
     else if (!lowered.empty()) row_lowered(row, lowered, changed);
   }
 }

@@ -244,8 +244,9 @@ class DistanceField {
     std::int64_t height;
   };
   // row_pass() where every change of the row's column runs brought an
-  // obstacle nearer: each cell keeps its nearest unless a lowered column's
-  // beats it (the leftmost of equals, as the full pass picks), with no envelope.
+  // obstacle nearer or took away one that was no cell's nearest: each cell
+  // keeps its nearest unless a lowered column's beats it (the leftmost of
+  // equals, as the full pass picks), with no envelope.
   void row_lowered(int row, const std::vector<Lowered>& lowered, std::vector<std::size_t>& changed);
   // The row passes that `changes` (in any order, a cell more than once) call for.
   void rows_after(std::vector<ColumnChange>& changes, std::vector<std::size_t>& changed);
