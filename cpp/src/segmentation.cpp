@@ -53,16 +53,16 @@ OrientedBox principal_box(const std::vector<Vec2>& points) {
   return OrientedBox{mean + mid.x() * major + mid.y() * minor, 0.5 * (hi - lo), angle};
 }
 
-// The disc of least squares distance to the hits, its radius pulled toward
-// the one the cluster's angular width implies. The width pins the radius
-// where the hits' curvature cannot (few hits, a far or flat-looking arc), so
-// the fit never runs off; with many hits the hits decide. Fitting the centre
-// rather than taking the centroid keeps it in place as the viewpoint moves.
 // Per-point columns fit_disc() reuses from cluster to cluster.
 struct FitScratch {
   std::vector<double> px, py, reach, ux, uy;
 };
 
+// The disc of least squares distance to the hits, its radius pulled toward
+// the one the cluster's angular width implies. The width pins the radius
+// where the hits' curvature cannot (few hits, a far or flat-looking arc), so
+// the fit never runs off; with many hits the hits decide. Fitting the centre
+// rather than taking the centroid keeps it in place as the viewpoint moves.
 void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const SegmentParams& params, FitScratch& scratch) {
   const std::vector<Vec2>& points = cluster.points;
   const double max_radius = 0.5 * params.max_size;
