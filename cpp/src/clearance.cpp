@@ -373,8 +373,10 @@ double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& fo
     if (!disc.moves()) continue;
     const Vec2 centre = disc.center_at(t);
     const double radius = disc.radius_at(t);
-    // The circumscribed circle settles the far ones.
-    if ((centre - pose.position()).norm() - radius - footprint.radius() >= best) continue;
+    // The circumscribed circle settles the far ones, once there is a best to beat.
+    if (best < std::numeric_limits<double>::infinity() &&
+        (centre - pose.position()).norm() - radius - footprint.radius() >= best)
+      continue;
     // In the robot's frame; a circle needs no turning.
     Vec2 q = centre - pose.position();
     if (!footprint.is_circle()) {
