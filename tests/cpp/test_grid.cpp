@@ -69,6 +69,34 @@ TEST(DistanceField, CellDistanceEqualsBruteForceCentreDistance) {
   }
 }
 
+// A row and a column of 200 000 cells: squared offsets reach 4e10, past 32
+// bits, and the transform's exact arithmetic must hold there, built and updated.
+TEST(DistanceField, LongRowsAndColumnsAreExact) {
+  constexpr int kLength = 200000;
+  const std::vector<int> obstacles{3, 70001, 70002, 199990};
+  for (const bool as_row : {true, false}) {
+    std::vector<std::uint8_t> cells(kLength, 0);
+    for (const int i : obstacles) cells[i] = 1;
+    OccupancyGrid grid(as_row ? 1 : kLength, as_row ? kLength : 1, 0.01, Vec2(-5.0, 3.0), cells);
+    DistanceField field(grid, 0.0);
+    const auto check = [&](const std::vector<int>& present, const char* stage) {
+      for (int i = 0; i < kLength; i += 997) {
+        int nearest = kLength;
+        for (const int o : present) nearest = std::min(nearest, std::abs(i - o));
+        const double got = as_row ? field.cell_distance(0, i) : field.cell_distance(i, 0);
+        ASSERT_NEAR(got, nearest * 0.01, 1e-9) << stage << (as_row ? " row" : " column") << " cell " << i;
+      }
+    };
+    check(obstacles, "built");
+    // The middle pair goes: the ends of the row are then the nearest for a
+    // hundred thousand cells each.
+    grid.set(70001, false);
+    grid.set(70002, false);
+    field.update(grid, {70001, 70002});
+    check({3, 199990}, "updated");
+  }
+}
+
 TEST(DistanceField, PointDistanceIsWithinOneCellOfTheExactDistance) {
   std::mt19937 rng(4242);
   std::uniform_int_distribution<int> size(1, 30);
