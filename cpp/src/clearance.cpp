@@ -364,9 +364,10 @@ bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {
   return footprint.is_circle() && empty(field_) && empty(sensed_);
 }
 
-double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose, double t) {
-  detail::require_query_pose("pose", pose);
-  detail::require_magnitude("t", t, limits::kMaxHorizon);
+namespace {
+// moving_disc_clearance() without the checks, for callers that made them.
+double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose,
+                                       double t) {
   double best = std::numeric_limits<double>::infinity();
   double c = std::numeric_limits<double>::quiet_NaN(), s = 0.0;  // the heading's, once a disc needs them
   for (const Disc& disc : discs) {
@@ -387,11 +388,18 @@ double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& fo
   }
   return best;
 }
+}  // namespace
+
+double moving_disc_clearance(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose, double t) {
+  detail::require_query_pose("pose", pose);
+  detail::require_magnitude("t", t, limits::kMaxHorizon);
+  return moving_disc_clearance_unchecked(discs, footprint, pose, t);
+}
 
 double FieldClearance::moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const {
   detail::require_query_pose("pose", pose);
   detail::require_magnitude("t", t, limits::kMaxHorizon);
-  return moving_disc_clearance(moving_, footprint, pose, t);
+  return moving_disc_clearance_unchecked(moving_, footprint, pose, t);
 }
 
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
@@ -415,7 +423,7 @@ double FieldClearance::clearance_below(const Footprint& footprint, const Pose2& 
       best = std::min(best, footprint.signed_distance(pose, centre) - d.radius[j]);
     }
   }
-  return std::min(best, moving_clearance(footprint, pose, t));
+  return moving_.empty() ? best : std::min(best, moving_disc_clearance_unchecked(moving_, footprint, pose, t));
 }
 
 }  // namespace fgdwa

@@ -359,7 +359,20 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     };
     double free_distance = inf;
     int last = n_steps_ - 1;  // the last pose reached: the first in contact, or the end
-    for (int k = 0; k < n_steps_; ++k) {
+    // Most poses are settled by their bound and the previous one, with room
+    // to spare: skip those in one tight pass (step.clear_by_bounds implies
+    // the loop's first test), and let the loop take over at the first other.
+    int settled = 0;
+    if (start_clearance > 0.0) {
+      double previous = start_clearance;
+      while (settled < n_steps_) {
+        const double bound = bounds_[static_cast<std::size_t>(settled)] - margin;
+        if (!step.clear_by_bounds(previous, bound)) break;
+        previous = bound;
+        ++settled;
+      }
+    }
+    for (int k = settled; k < n_steps_; ++k) {
       // Bounds and clearances count from the margin.
       const double bound = bounds_[static_cast<std::size_t>(k)] - margin;
       const double previous_bound = k == 0 ? start_clearance : bounds_[static_cast<std::size_t>(k - 1)] - margin;

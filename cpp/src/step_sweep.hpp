@@ -66,6 +66,13 @@ struct StepSweep {
     return std::max(need, 0.0) + 1e-6;
   }
 
+  // A sufficient condition for covered(c0, c1) with fewer tests: the turned
+  // placement then keeps c0 - turn_reach > 0, and with c1 it spans the drive.
+  // Floating-point sums are monotonic, so each of covered()'s tests holds too.
+  bool clear_by_bounds(double c0, double c1) const {
+    return c1 > 0.0 && c0 > turn_reach && (c0 - turn_reach) + c1 > relative(drive, 1.0) - chord;
+  }
+
   // Whether the whole step, turn and drive, is clear given the clearances c0
   // before it and c1 after it. The turned placement's clearance is at least
   // c0 - turn_reach and at least c1 - drive: each footprint point moves no
