@@ -13,6 +13,7 @@
 
 #include <hwy/targets.h>
 
+#include "assignment.hpp"
 #include "fgdwa/perception.hpp"
 #include "fgdwa/tracking.hpp"
 #include "test_support.hpp"
@@ -649,6 +650,62 @@ TEST(Tracker, CostOfOneScan) {
   const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
   std::cout << "segment_scan + Tracker::update, 541 beams, 3 objects: " << us / kScans << " us per scan\n";
   EXPECT_EQ(tracker.moving_discs().size(), 2u);
+}
+
+// The least total over every way of pairing rows with distinct columns
+// through allowed pairs, each row left out at its price.
+double cheapest_assignment(const Eigen::MatrixXd& cost, const std::vector<double>& unassigned, int row,
+                           std::vector<bool>& taken) {
+  if (row == cost.rows()) return 0.0;
+  double best = unassigned[static_cast<std::size_t>(row)] + cheapest_assignment(cost, unassigned, row + 1, taken);
+  for (int c = 0; c < cost.cols(); ++c) {
+    if (taken[static_cast<std::size_t>(c)] || !std::isfinite(cost(row, c))) continue;
+    taken[static_cast<std::size_t>(c)] = true;
+    best = std::min(best, cost(row, c) + cheapest_assignment(cost, unassigned, row + 1, taken));
+    taken[static_cast<std::size_t>(c)] = false;
+  }
+  return best;
+}
+
+// Tracks meet clusters through a gate, so most pairs are forbidden and the
+// problem falls apart into independent ones, solved one by one: together
+// they must still reach the least total, with allowed pairs and each column
+// used once, whatever the sizes and however the allowed pairs link up.
+TEST(Assignment, IndependentProblemsTogetherReachTheLeastTotal) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> price(0.0, 9.0);
+  std::uniform_int_distribution<int> size(0, 6);
+  int linked_problems = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int rows = size(rng), cols = size(rng);
+    const double allowed_share = std::uniform_real_distribution<double>(0.1, 0.9)(rng);
+    Eigen::MatrixXd cost(rows, cols);
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c)
+        cost(r, c) = std::bernoulli_distribution(allowed_share)(rng) ? price(rng) : std::numeric_limits<double>::infinity();
+    std::vector<double> unassigned(static_cast<std::size_t>(rows));
+    for (double& u : unassigned) u = price(rng);
+    const std::vector<int> chosen = detail::assign(cost, unassigned);
+    ASSERT_EQ(chosen.size(), static_cast<std::size_t>(rows));
+    std::vector<bool> used(static_cast<std::size_t>(cols), false);
+    double total = 0.0;
+    for (int r = 0; r < rows; ++r) {
+      const int c = chosen[static_cast<std::size_t>(r)];
+      if (c < 0) {
+        total += unassigned[static_cast<std::size_t>(r)];
+        continue;
+      }
+      ASSERT_LT(c, cols);
+      ASSERT_TRUE(std::isfinite(cost(r, c))) << "trial " << trial << ": a forbidden pair was chosen";
+      ASSERT_FALSE(used[static_cast<std::size_t>(c)]) << "trial " << trial << ": a column was chosen twice";
+      used[static_cast<std::size_t>(c)] = true;
+      total += cost(r, c);
+    }
+    std::vector<bool> taken(static_cast<std::size_t>(cols), false);
+    EXPECT_NEAR(total, cheapest_assignment(cost, unassigned, 0, taken), 1e-9) << "trial " << trial;
+    linked_problems += rows > 1 && cols > 1;
+  }
+  EXPECT_GT(linked_problems, 1500);
 }
 
 }  // namespace
