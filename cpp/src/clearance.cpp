@@ -374,16 +374,18 @@ double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Foo
     if (!disc.moves()) continue;
     const Vec2 centre = disc.center_at(t);
     const double radius = disc.radius_at(t);
-    // The circumscribed circle settles the far ones, once there is a best to beat.
-    if (best < std::numeric_limits<double>::infinity() &&
-        (centre - pose.position()).norm() - radius - footprint.radius() >= best)
-      continue;
-    // In the robot's frame; a circle needs no turning.
     Vec2 q = centre - pose.position();
-    if (!footprint.is_circle()) {
-      if (std::isnan(c)) heading_cos_sin(pose.theta, c, s);
-      q = Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
+    const double gap = q.norm();
+    // The circumscribed circle settles the far ones, once there is a best to beat.
+    if (best < std::numeric_limits<double>::infinity() && gap - radius - footprint.radius() >= best) continue;
+    if (footprint.is_circle()) {
+      // As signed_distance_in_frame(q) would give it, from the norm already taken.
+      best = std::min(best, (gap - footprint.radius()) - radius);
+      continue;
     }
+    // In the robot's frame.
+    if (std::isnan(c)) heading_cos_sin(pose.theta, c, s);
+    q = Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
     best = std::min(best, footprint.signed_distance_in_frame(q) - radius);
   }
   return best;
