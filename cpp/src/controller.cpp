@@ -47,7 +47,8 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
     const double tolerance = 0.5 * resolution + 3.0 * range_noise_;
     unexplained_.clear();
     for (const Vec2& hit : scan->hit_points()) {
-      if (map_ && map_->distance(hit) <= tolerance) continue;
+      // Most hits lie on the map's obstacles: one table look-up settles them.
+      if (map_ && (map_->upper_bound(hit) <= tolerance || map_->distance(hit) <= tolerance)) continue;
       const bool on_disc = std::any_of(discs.begin(), discs.end(), [&](const Disc& d) {
         return (hit - d.center).norm() <= d.radius + tolerance;
       });

@@ -949,6 +949,38 @@ TEST(DistanceField, LowerBoundNeverExceedsTheDistance) {
   }
 }
 
+// The upper bound comes from the same piece: never below the distance, at
+// most the piece's diagonal and two steps above the lower bound, and +inf
+// (no claim) off the table, where the field keeps no pieces.
+TEST(DistanceField, UpperBoundNeverFallsBelowTheDistance) {
+  std::mt19937 rng(9);
+  const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.2);
+  const DistanceField field(grid, 1.0);
+  std::uniform_real_distribution<double> x(-3.0, 9.0), y(-2.5, 9.5);
+  const double piece_diagonal = std::sqrt(2.0) * 0.1 / 4, step = 0.1 / 4 / 64;
+  int on_table = 0, near_obstacles = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec2 p(x(rng), y(rng));
+    const double upper = field.upper_bound(p), d = field.distance(p);
+    ASSERT_GE(upper, d) << p.transpose();
+    const bool table = p.x() > -1.9 && p.x() < 7.9 && p.y() > -0.4 && p.y() < 7.4;  // the grid and its 1 m margin
+    const bool off_table = p.x() < -2.1 || p.x() > 8.1 || p.y() < -0.6 || p.y() > 7.6;
+    if (table) {
+      ASSERT_LE(upper, field.lower_bound(p) + piece_diagonal + 2.0 * step + 1e-9) << p.transpose();
+      ++on_table;
+      near_obstacles += d < 0.15;
+    }
+    if (off_table) {
+      ASSERT_EQ(upper, std::numeric_limits<double>::infinity()) << p.transpose();
+    }
+  }
+  EXPECT_GT(on_table, 10000);
+  EXPECT_GT(near_obstacles, 1000);
+  EXPECT_THROW(field.upper_bound(Vec2(std::nan(""), 0.0)), Error);
+  EXPECT_EQ(DistanceField(OccupancyGrid(3, 3, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(9, 0))).upper_bound(Vec2(0.1, 0.1)),
+            std::numeric_limits<double>::infinity());
+}
+
 // Farther than the table's 16 bits reach (1024 pieces, 25.6 m here) a bound
 // stays at the largest it holds: still below the distance, and not wrapped
 // round to a small one.

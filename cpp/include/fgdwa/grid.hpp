@@ -151,6 +151,12 @@ class DistanceField {
   // grid's edge nearest p: every obstacle lies in the grid, beyond q as seen
   // from p, so hypot(|p - q|, the bound at q) holds.
   double lower_bound(const Vec2& p) const { return lower_bounds()(p.x(), p.y()); }
+  // A value never below distance(p), from the same look-up: the bound of p's
+  // piece, one step up, plus the piece's diagonal (no point of the piece lies
+  // farther from the piece's nearest point to an obstacle). +inf where the
+  // table does not reach, at its largest value, or with no obstacles: a
+  // caller asks distance() there.
+  double upper_bound(const Vec2& p) const;
 
   // The table behind lower_bound(), copied out so that a loop over many points
   // keeps it in registers. Valid while the field lives and is not updated.
