@@ -318,12 +318,13 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const std::size_t n_omega = static_cast<std::size_t>(params_.window.n_omega);
   const bool bounds_exact = fixed.lower_bounds_exact(footprint_);
   headings_.resize(std::min(n_omega, n));
-  for (std::size_t j = 0; j < headings_.size(); ++j)
+  for (std::size_t j = 0; j < headings_.size(); ++j) {
     headings_[j].assign(state.pose.theta, cos_start, sin_start, result_.samples[j].omega, params_.dt, n_steps_);
+    rollouts_sharing(state.pose, j, n_omega);
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const Twist& cmd = result_.samples[i];
-    Trajectory& poses = rollouts_[i];
-    rollout(state.pose, cmd.v * params_.dt, headings_[i % n_omega], poses);
+    const Trajectory& poses = rollouts_[i];
     // Every step of the rollout turns and drives alike.
     const detail::StepSweep step(footprint_, margin, cmd.omega * params_.dt, cmd.v * params_.dt, obstacle_travel);
     // Cheap lower bounds first; exact clearances only where a bound cannot
@@ -459,6 +460,33 @@ double LocalPlanner::first_moving_contact(const Pose2& start, const Twist& cmd, 
   return contact;
 }
 
+// Each pose adds to the one before, so one rollout at a time waits on its own
+// sums: four go side by side, their additions independent. The same
+// operations as rollout() per pose, so the same bits.
+void LocalPlanner::rollouts_sharing(const Pose2& start, std::size_t first, std::size_t stride) {
+  const RolloutHeadings& h = headings_[first];
+  const std::size_t n = result_.samples.size(), steps = h.theta.size();
+  std::size_t i = first;
+  for (; i + 3 * stride < n; i += 4 * stride) {
+    Trajectory* out[4];
+    double step[4], x[4], y[4];
+    for (std::size_t l = 0; l < 4; ++l) {
+      out[l] = &rollouts_[i + l * stride];
+      out[l]->resize(steps);
+      step[l] = result_.samples[i + l * stride].v * params_.dt;
+      x[l] = start.x;
+      y[l] = start.y;
+    }
+    for (std::size_t k = 0; k < steps; ++k)
+      for (std::size_t l = 0; l < 4; ++l) {
+        x[l] += step[l] * h.cos[k];
+        y[l] += step[l] * h.sin[k];
+        (*out[l])[k] = Pose2{x[l], y[l], h.theta[k]};
+      }
+  }
+  for (; i < n; i += stride) rollout(start, result_.samples[i].v * params_.dt, h, rollouts_[i]);
+}
+
 namespace {
 
 // The command a robot reaches from `from` heading for `to` within one period dt.
@@ -572,38 +600,48 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
     result_.raw.row(static_cast<Eigen::Index>(i)).setZero();
   }
 
+  // The samples still admissible, in order; the loops below visit them alone.
+  admissible_index_.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (result_.reasons[i] == RejectReason::None) admissible_index_.push_back(i);
   for (std::size_t j = 0; j < m; ++j) {
+    const auto raw = result_.raw.col(static_cast<Eigen::Index>(j));
+    auto normalized = result_.normalized.col(static_cast<Eigen::Index>(j));
     double magnitude = 0.0, lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (result_.reasons[i] != RejectReason::None) continue;
-      magnitude += std::abs(result_.raw(i, j));
-      lo = std::min(lo, result_.raw(i, j));
-      hi = std::max(hi, result_.raw(i, j));
+    for (const std::size_t i : admissible_index_) {
+      magnitude += std::abs(raw(i));
+      lo = std::min(lo, raw(i));
+      hi = std::max(hi, raw(i));
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      if (result_.reasons[i] != RejectReason::None) continue;
-      double& out = result_.normalized(i, j);
-      switch (params_.normalization) {
-        // Dividing by a positive number keeps every term's order, whatever its sign.
-        case Normalization::Sum: out = magnitude > 0.0 ? result_.raw(i, j) / magnitude : 0.0; break;
-        case Normalization::MinMax: out = hi > lo ? (result_.raw(i, j) - lo) / (hi - lo) : 0.0; break;
-        case Normalization::None: out = result_.raw(i, j); break;
-      }
+    // Rejected samples keep the zero they were given above.
+    switch (params_.normalization) {
+      // Dividing by a positive number keeps every term's order, whatever its sign.
+      case Normalization::Sum:
+        if (magnitude > 0.0)
+          for (const std::size_t i : admissible_index_) normalized(i) = raw(i) / magnitude;
+        break;
+      case Normalization::MinMax:
+        if (hi > lo)
+          for (const std::size_t i : admissible_index_) normalized(i) = (raw(i) - lo) / (hi - lo);
+        break;
+      case Normalization::None:
+        for (const std::size_t i : admissible_index_) normalized(i) = raw(i);
+        break;
     }
   }
-  // This cycle's weights: the velocity critic's scaled while a mover is near.
+  // This cycle's weights: the velocity critic's scaled while a mover is near;
+  // a cost's negated (exactly: -(w x) is (-w) x).
   cycle_weights_ = result_.weights;
   if (speed_critic_ < m &&
       context.world->moving_clearance(footprint_, context.state.pose, 0.0) <= params_.mover_caution_radius)
     cycle_weights_[speed_critic_] *= params_.mover_speed_weight;
+  signed_weights_.resize(m);
+  for (std::size_t j = 0; j < m; ++j)
+    signed_weights_[j] = result_.senses[j] == CriticSense::Cost ? -cycle_weights_[j] : cycle_weights_[j];
   double best = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (result_.reasons[i] != RejectReason::None) continue;
+  for (const std::size_t i : admissible_index_) {
     double total = 0.0;
-    for (std::size_t j = 0; j < m; ++j) {
-      const double term = cycle_weights_[j] * result_.normalized(i, j);
-      total += result_.senses[j] == CriticSense::Cost ? -term : term;
-    }
+    for (std::size_t j = 0; j < m; ++j) total += signed_weights_[j] * result_.normalized(i, j);
     result_.total(static_cast<Eigen::Index>(i)) = total;
     if (total > best) {  // strict: ties keep the first sample, deterministically
       best = total;

@@ -194,11 +194,14 @@ class LocalPlanner {
   std::vector<double> bounds_, exact_;
   std::vector<double> at_least_;  // per pose: a clearance it is known to reach without its exact value
   std::vector<RolloutHeadings> headings_;  // per omega of the window
+  // rollouts_[first], rollouts_[first + stride], ...: the samples turning as
+  // the first does, from headings_[first].
+  void rollouts_sharing(const Pose2& start, std::size_t first, std::size_t stride);
   std::vector<double> escape_;  // per sample: clearance to the movers at the end of moving_horizon
   // The velocity critic's index (none: past the end), and the weights this
   // cycle scores with (its weight scaled while a mover is near).
   std::size_t speed_critic_ = std::numeric_limits<std::size_t>::max();
-  std::vector<double> cycle_weights_;
+  std::vector<double> cycle_weights_, signed_weights_;
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;
