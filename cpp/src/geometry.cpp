@@ -11,6 +11,12 @@ double wrap_angle(double angle) {
   // Most angles are already wrapped, and remainder() returns them unchanged; it
   // is slow enough to show in the planner's profile, so it is skipped for them.
   if (angle > -M_PI && angle <= M_PI) return angle;
+  // One turn off (a difference of two wrapped angles): remainder() would take
+  // exactly one 2 pi away, and so does the subtraction, exact for operands
+  // within a factor of two of each other. Negated on the negative side, so
+  // that -2 pi wraps to -0 as remainder() gives it.
+  if (angle > M_PI && angle < 7.0) return angle - 2.0 * M_PI;
+  if (angle <= -M_PI && angle > -7.0) return -(-angle - 2.0 * M_PI);
   detail::require_finite("angle", angle);
   double wrapped = std::remainder(angle, 2.0 * M_PI);  // [-pi, pi]
   if (wrapped <= -M_PI) wrapped += 2.0 * M_PI;

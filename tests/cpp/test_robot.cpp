@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <complex>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "fgdwa/error.hpp"
 #include "fgdwa/robot.hpp"
@@ -301,6 +303,30 @@ TEST(Geometry, WrapAngleRange) {
   EXPECT_DOUBLE_EQ(wrap_angle(-M_PI), M_PI);
   EXPECT_NEAR(wrap_angle(3 * M_PI + 0.1), -M_PI + 0.1, 1e-12);
   EXPECT_NEAR(angle_difference(0.1, 2 * M_PI - 0.1), 0.2, 1e-12);
+}
+
+// Wrapping is the IEEE remainder by 2 pi, moved from -pi to pi, to the bit:
+// near the ends of each shortcut, across whole turns, and at random.
+TEST(Geometry, WrapAngleIsTheRemainderToTheBit) {
+  const auto reference = [](double angle) {
+    double wrapped = std::remainder(angle, 2.0 * M_PI);
+    if (wrapped <= -M_PI) wrapped += 2.0 * M_PI;
+    return wrapped;
+  };
+  std::vector<double> angles;
+  for (double edge : {M_PI, -M_PI, 3 * M_PI, -3 * M_PI, 7.0, -7.0, 2 * M_PI, -2 * M_PI, 0.0, 5 * M_PI})
+    for (int ulps = -3; ulps <= 3; ++ulps) {
+      double a = edge;
+      for (int u = 0; u < std::abs(ulps); ++u) a = std::nextafter(a, ulps > 0 ? 100.0 : -100.0);
+      angles.push_back(a);
+    }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> turns(-20.0, 20.0);
+  for (int i = 0; i < 100000; ++i) angles.push_back(turns(rng));
+  for (double a : angles) {
+    const double got = wrap_angle(a), want = reference(a);
+    ASSERT_EQ(std::memcmp(&got, &want, sizeof got), 0) << std::hexfloat << a << " -> " << got << ", not " << want;
+  }
 }
 
 }  // namespace
