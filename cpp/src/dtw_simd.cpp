@@ -21,11 +21,12 @@ namespace fgdwa {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// previous and current hold m * K floats, left K floats; the result of sequence
-// k goes to out[k].
+// previous and current hold m * K floats (rows i - 1 and i, column after
+// column, K lanes each); the result of sequence k goes to out[k]. The cell to
+// the left is the one just written in current.
 void DtwBatchF32(const float* HWY_RESTRICT ax, const float* HWY_RESTRICT ay, std::size_t n, std::size_t K,
                  const float* HWY_RESTRICT bx, const float* HWY_RESTRICT by, std::size_t m, float* previous,
-                 float* current, float* HWY_RESTRICT left, float* HWY_RESTRICT out) {
+                 float* current, float* HWY_RESTRICT out) {
   const hn::ScalableTag<float> d;
   const std::size_t lanes = hn::Lanes(d);
   const std::size_t vector_end = K - K % lanes;
@@ -34,31 +35,29 @@ void DtwBatchF32(const float* HWY_RESTRICT ax, const float* HWY_RESTRICT ay, std
   for (std::size_t i = 0; i < n; ++i) {
     const float* xi = ax + i * K;
     const float* yi = ay + i * K;
-    std::fill(left, left + K, inf);
     for (std::size_t j = 0; j < m; ++j) {
       const auto bxj = hn::Set(d, bx[j]), byj = hn::Set(d, by[j]);
       float* cur = current + j * K;
       const float* up = previous + j * K;
       // The first cell has no predecessor; the first column only the one above.
       const float* diag = j > 0 ? previous + (j - 1) * K : nullptr;
+      const float* left = j > 0 ? current + (j - 1) * K : nullptr;
       const bool origin = i == 0 && j == 0;
       std::size_t k = 0;
       for (; k < vector_end; k += lanes) {
         const auto dx = hn::Sub(hn::LoadU(d, xi + k), bxj);
         const auto dy = hn::Sub(hn::LoadU(d, yi + k), byj);
         const auto dist = hn::Sqrt(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)));
-        auto best = origin ? hn::Zero(d) : hn::Min(hn::LoadU(d, left + k), hn::LoadU(d, up + k));
-        if (diag) best = hn::Min(best, hn::LoadU(d, diag + k));
-        const auto sum = hn::Add(dist, best);
-        hn::StoreU(sum, d, left + k);
-        hn::StoreU(sum, d, cur + k);
+        auto best = origin ? hn::Zero(d) : hn::LoadU(d, up + k);
+        if (left) best = hn::Min(hn::Min(hn::LoadU(d, left + k), best), hn::LoadU(d, diag + k));
+        hn::StoreU(hn::Add(dist, best), d, cur + k);
       }
       for (; k < K; ++k) {
         const float dx = xi[k] - bx[j], dy = yi[k] - by[j];
         const float dist = std::sqrt(dx * dx + dy * dy);
-        float best = origin ? 0.0f : std::min(left[k], up[k]);
-        if (diag) best = std::min(best, diag[k]);
-        left[k] = cur[k] = dist + best;
+        float best = origin ? 0.0f : up[k];
+        if (left) best = std::min(std::min(left[k], best), diag[k]);
+        cur[k] = dist + best;
       }
     }
     std::swap(previous, current);
@@ -94,10 +93,9 @@ void DtwWorkspace::distance_batch_f32(const float* ax, const float* ay, std::siz
 void DtwWorkspace::distance_batch_f32_unchecked(const float* ax, const float* ay, std::size_t n, std::size_t count,
                                                 const float* bx, const float* by, std::size_t m, float* out) {
   detail::check_dtw_sizes(n, m, count, kNoBand);  // O(1): kept, an empty batch would read past the buffers
-  rows_f32_.resize(2 * m * count + count);
+  rows_f32_.resize(2 * m * count);
   float* previous = rows_f32_.data();
-  HWY_DYNAMIC_DISPATCH(DtwBatchF32)(ax, ay, n, count, bx, by, m, previous, previous + m * count,
-                                    previous + 2 * m * count, out);
+  HWY_DYNAMIC_DISPATCH(DtwBatchF32)(ax, ay, n, count, bx, by, m, previous, previous + m * count, out);
 }
 
 const char* dtw_instruction_set() {
