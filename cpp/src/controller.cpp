@@ -6,6 +6,8 @@
 #include <string>
 
 #include "fgdwa/error.hpp"
+#include "beam_directions.hpp"
+#include "checked_scan.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -46,7 +48,12 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
     const double resolution = map_ ? map_->grid().resolution() : 0.1;
     const double tolerance = 0.5 * resolution + 3.0 * range_noise_;
     unexplained_.clear();
-    for (const Vec2& hit : scan->hit_points()) {
+    // The scan's hits as Scan::hit_points() places them, without checking it again.
+    const std::vector<Vec2>& directions = detail::beam_directions(*scan);
+    for (std::size_t i = 0; i < scan->ranges.size(); ++i) {
+      const double range = scan->ranges[i];
+      if (!std::isfinite(range)) continue;
+      const Vec2 hit(scan->pose.x + range * directions[i].x(), scan->pose.y + range * directions[i].y());
       // Most hits lie on the map's obstacles: one table look-up settles them.
       if (map_ && (map_->upper_bound(hit) <= tolerance || map_->distance(hit) <= tolerance)) continue;
       const bool on_disc = std::any_of(discs.begin(), discs.end(), [&](const Disc& d) {
@@ -56,7 +63,7 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
     }
     world_.set_sensed(points_field(unexplained_, resolution));
     report_.sensed_points = unexplained_.size();
-    report_.density = obstacle_density(*scan, window_).density;
+    report_.density = detail::obstacle_density_of_checked(*scan, window_).density;
   } else {
     world_.set_sensed(nullptr);
   }

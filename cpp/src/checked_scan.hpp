@@ -1,0 +1,12 @@
+#pragma once
+// What the robot's side reads from a scan it has already validated: the
+// public functions check the scan on every call, and a control cycle would
+// check the same 541 ranges three times over.
+#include "fgdwa/perception.hpp"
+
+namespace fgdwa::detail {
+
+// obstacle_density() without checking the scan (the window's parameters are still checked).
+DensityReading obstacle_density_of_checked(const Scan& scan, const DetectWindowParams& params);
+
+}  // namespace fgdwa::detail
