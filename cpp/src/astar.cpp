@@ -78,12 +78,21 @@ std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_ra
   // on the same side as in the planner's field.
   const double half = 0.5 * res;
   std::vector<std::uint8_t> blocked(grid.cells().size(), 0);
-  for (int r = 0; r < rows; ++r)
+  // Per row, how many of the columns before each have an obstacle within
+  // `reach` rows: a cell whose columns in reach have none is left free at
+  // once, as the search below would leave it.
+  std::vector<int> near_before(static_cast<std::size_t>(cols) + 1, 0);
+  for (int r = 0; r < rows; ++r) {
+    for (int q = 0; q < cols; ++q)
+      near_before[static_cast<std::size_t>(q) + 1] =
+          near_before[static_cast<std::size_t>(q)] + (column_gap[grid.index(r, q)] < far);
     for (int c = 0; c < cols; ++c) {
       if (obstacles.occupied(r, c)) {
         blocked[grid.index(r, c)] = 1;
         continue;
       }
+      const int first = std::max(0, c - reach), last = std::min(cols - 1, c + reach);
+      if (near_before[static_cast<std::size_t>(last) + 1] == near_before[static_cast<std::size_t>(first)]) continue;
       const Vec2 p = grid.cell_center(r, c);
       const auto within = [&](int row, int col) {
         if (row < 0 || row >= rows || !obstacles.occupied(row, col)) return false;
@@ -92,7 +101,7 @@ std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_ra
         const double dy = std::max(std::abs(p.y() - o.y()) - half, 0.0);
         return std::sqrt(dx * dx + dy * dy) < inflation_radius;
       };
-      for (int q = std::max(0, c - reach); q <= std::min(cols - 1, c + reach); ++q) {
+      for (int q = first; q <= last; ++q) {
         const int gap = column_gap[grid.index(r, q)];
         if (gap < far && (within(r - gap, q) || within(r + gap, q))) {
           blocked[grid.index(r, c)] = 1;
@@ -100,6 +109,7 @@ std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_ra
         }
       }
     }
+  }
   return blocked;
 }
 
