@@ -228,12 +228,19 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   // place of the largest one, which the pieces' lengths must allow for.
   const double placing_slack =
       8.0 * std::numeric_limits<double>::epsilon() * (std::abs(pose.x) + std::abs(pose.y) + footprint.radius());
-  std::size_t lowest = 0;
   for (std::size_t j = 0; j < n; ++j) {
     const Vec2 q = at.world(outline.points[j]);
     samples[j] = Sample{q, bounds(q.x(), q.y()), std::numeric_limits<double>::quiet_NaN(), outline.lengths[j] + placing_slack};
-    if (samples[j].low < samples[lowest].low) lowest = j;
   }
+  // The lowest bound's sample (the first of equals) once the look-ups are
+  // all under way: in the loop above, each comparison waited on its own.
+  std::size_t lowest = 0;
+  double lowest_low = samples[0].low;
+  for (std::size_t j = 1; j < n; ++j)
+    if (samples[j].low < lowest_low) {
+      lowest_low = samples[j].low;
+      lowest = j;
+    }
   const OccupancyGrid& grid = field->grid();
   const Vec2 grid_lo = grid.origin(), grid_hi = grid.origin() + res * Vec2(grid.cols(), grid.rows());
   const auto on_grid = [&](const Vec2& p) {
