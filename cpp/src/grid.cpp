@@ -825,10 +825,10 @@ double DistanceField::upper_bound(const Vec2& p) const {
   detail::require_field_point("point", p);
   if (!has_obstacles()) return kInf;
   const LowerBounds table = lower_bounds();
-  const double gx = (p.x() - table.origin_x) * table.inverse_piece, gy = (p.y() - table.origin_y) * table.inverse_piece;
-  if (!(gx >= 0.0 && gy >= 0.0 && gx < table.cols && gy < table.rows)) return kInf;
-  const std::uint16_t steps = table.pieces[static_cast<std::ptrdiff_t>(gy) * table.stride + static_cast<std::ptrdiff_t>(gx)];
-  if (steps == kMostSteps) return kInf;
+  const std::uint16_t* at = table.piece_at((p.x() - table.origin_x) * table.inverse_piece,
+                                           (p.y() - table.origin_y) * table.inverse_piece);
+  if (!at || *at == kMostSteps) return kInf;
+  const std::uint16_t steps = *at;
   // Raised a little above the rounding of the stored bound and of the sum.
   return ((steps + 1.0) * bound_step_ + std::sqrt(2.0) / inverse_piece_) * (1.0 + 1e-9);
 }

@@ -169,9 +169,14 @@ class DistanceField {
     double operator()(double x, double y) const {
       if (!pieces) return std::numeric_limits<double>::infinity();
       const double gx = (x - origin_x) * inverse_piece, gy = (y - origin_y) * inverse_piece;
-      if (gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows)
-        return step * pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
+      if (const std::uint16_t* at = piece_at(gx, gy)) return step * *at;
       return outside(gx, gy);
+    }
+    // The piece at (gx, gy), in pieces from the origin; null off the table
+    // (or not a number).
+    const std::uint16_t* piece_at(double gx, double gy) const {
+      if (!(gx >= 0.0 && gy >= 0.0 && gx < cols && gy < rows)) return nullptr;
+      return &pieces[static_cast<std::ptrdiff_t>(gy) * stride + static_cast<std::ptrdiff_t>(gx)];
     }
     // Not a number in, 0 out: never above the distance.
     double outside(double gx, double gy) const {
