@@ -6,7 +6,6 @@
 #include <string>
 
 #include "fgdwa/error.hpp"
-#include "beam_directions.hpp"
 #include "checked_scan.hpp"
 #include "validation.hpp"
 
@@ -48,12 +47,8 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
     const double resolution = map_ ? map_->grid().resolution() : 0.1;
     const double tolerance = 0.5 * resolution + 3.0 * range_noise_;
     unexplained_.clear();
-    // The scan's hits as Scan::hit_points() places them, without checking it again.
-    const std::vector<Vec2>& directions = detail::beam_directions(*scan);
-    for (std::size_t i = 0; i < scan->ranges.size(); ++i) {
-      const double range = scan->ranges[i];
-      if (!std::isfinite(range)) continue;
-      const Vec2 hit(scan->pose.x + range * directions[i].x(), scan->pose.y + range * directions[i].y());
+    detail::hit_points_of_checked(*scan, hits_);
+    for (const Vec2& hit : hits_) {
       // Most hits lie on the map's obstacles: one table look-up settles them.
       if (map_ && (map_->upper_bound(hit) <= tolerance || map_->distance(hit) <= tolerance)) continue;
       const bool on_disc = std::any_of(discs.begin(), discs.end(), [&](const Disc& d) {

@@ -68,13 +68,18 @@ const std::vector<Vec2>& beam_directions(const Scan& scan) {
 
 std::vector<Vec2> Scan::hit_points() const {
   validate();
-  const std::vector<Vec2>& directions = detail::beam_directions(*this);
   std::vector<Vec2> points;
-  for (std::size_t i = 0; i < ranges.size(); ++i) {
-    if (!std::isfinite(ranges[i])) continue;
-    points.emplace_back(pose.x + ranges[i] * directions[i].x(), pose.y + ranges[i] * directions[i].y());
-  }
+  detail::hit_points_of_checked(*this, points);
   return points;
+}
+
+void detail::hit_points_of_checked(const Scan& scan, std::vector<Vec2>& out) {
+  const std::vector<Vec2>& directions = beam_directions(scan);
+  out.clear();
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (!std::isfinite(scan.ranges[i])) continue;
+    out.emplace_back(scan.pose.x + scan.ranges[i] * directions[i].x(), scan.pose.y + scan.ranges[i] * directions[i].y());
+  }
 }
 
 LaserScanner::LaserScanner(const LidarParams& params, std::shared_ptr<const DistanceField> world)

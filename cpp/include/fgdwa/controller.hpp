@@ -68,7 +68,7 @@ class Controller {
   double range_noise_ = 0.0;
   FieldClearance world_;
   CycleReport report_;
-  std::vector<Vec2> unexplained_;
+  std::vector<Vec2> hits_, unexplained_;  // this cycle's lidar hits, and those the map does not explain
 };
 
 }  // namespace fgdwa
