@@ -600,10 +600,10 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
     result_.raw.row(static_cast<Eigen::Index>(i)).setZero();
   }
 
-  // The samples still admissible, in order; the loops below visit them alone.
-  admissible_index_.clear();
-  for (std::size_t i = 0; i < n; ++i)
-    if (result_.reasons[i] == RejectReason::None) admissible_index_.push_back(i);
+  // The vetoed leave the admissible; the loops below visit the rest alone, in order.
+  admissible_index_.erase(std::remove_if(admissible_index_.begin(), admissible_index_.end(),
+                                         [&](std::size_t i) { return result_.reasons[i] != RejectReason::None; }),
+                          admissible_index_.end());
   for (std::size_t j = 0; j < m; ++j) {
     const auto raw = result_.raw.col(static_cast<Eigen::Index>(j));
     auto normalized = result_.normalized.col(static_cast<Eigen::Index>(j));
