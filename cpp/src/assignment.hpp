@@ -87,9 +87,8 @@ inline std::vector<int> assign(const Eigen::MatrixXd& cost, const std::vector<do
   // Union-find over rows 0..rows-1 and columns rows..rows+cols-1.
   std::vector<int> parent(static_cast<std::size_t>(rows + cols));
   std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](int x) {
-    while (parent[static_cast<std::size_t>(x)] != x)
-      x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+  const auto root = [&parent](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];  // halving the path on the way
     return x;
   };
   std::vector<bool> linked(static_cast<std::size_t>(rows), false);

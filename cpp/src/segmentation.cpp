@@ -56,6 +56,9 @@ OrientedBox principal_box(const std::vector<Vec2>& points) {
 // Per-point columns fit_disc() reuses from cluster to cluster.
 struct FitScratch {
   std::vector<double> px, py, reach, ux, uy;
+  void resize(std::size_t m) {
+    for (std::vector<double>* column : {&px, &py, &reach, &ux, &uy}) column->resize(m);
+  }
 };
 
 // The disc of least squares distance to the hits, its radius pulled toward
@@ -100,28 +103,20 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
   // first, all together: the square roots and divisions, most of the cost,
   // then run several to a vector.
   const std::size_t m = points.size();
-  std::vector<double>& px = scratch.px;
-  std::vector<double>& py = scratch.py;
-  std::vector<double>& reach = scratch.reach;
-  std::vector<double>& ux = scratch.ux;
-  std::vector<double>& uy = scratch.uy;
-  px.resize(m);
-  py.resize(m);
-  reach.resize(m);
-  ux.resize(m);
-  uy.resize(m);
+  scratch.resize(m);
   for (std::size_t i = 0; i < m; ++i) {
-    px[i] = points[i].x();
-    py[i] = points[i].y();
+    scratch.px[i] = points[i].x();
+    scratch.py[i] = points[i].y();
   }
   for (int iteration = 0; iteration < 20; ++iteration) {
-    detail::radial(px.data(), py.data(), m, x[0], x[1], 1e-9, reach.data(), ux.data(), uy.data());
+    detail::radial(scratch.px.data(), scratch.py.data(), m, x[0], x[1], 1e-9, scratch.reach.data(), scratch.ux.data(),
+                   scratch.uy.data());
     Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
     Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < m; ++i) {
-      const Eigen::Vector3d J(-ux[i], -uy[i], -1.0);
+      const Eigen::Vector3d J(-scratch.ux[i], -scratch.uy[i], -1.0);
       normal += w_point * J * J.transpose();
-      gradient += w_point * J * (reach[i] - x[2]);
+      gradient += w_point * J * (scratch.reach[i] - x[2]);
     }
     normal(2, 2) += w_prior;
     gradient[2] += w_prior * (x[2] - apparent);
