@@ -610,9 +610,14 @@ namespace {
 // half-size h centred on the origin: 0 where they meet; otherwise the nearer
 // of the segment's ends to the square and the square's corners to the segment
 // (two disjoint convex shapes come nearest at a vertex of one of them).
-double segment_square_distance2(const Vec2& a, const Vec2& d, double h) {
+// `apart`: the segment is known to miss the square, and is not clipped.
+// A corner no nearer the segment's line than the least so far, or than
+// `below`, is not projected: its distance cannot lower a result below `below`
+// (the 1e-9 keeps the test on the safe side of the rounding). Clipping and
+// projecting divide; most squares a segment is measured against need neither.
+double segment_square_distance2(const Vec2& a, const Vec2& d, double h, double below, bool apart) {
   double t0, t1;
-  if (clip_segment_to_box(a, a + d, Vec2(-h, -h), Vec2(h, h), t0, t1)) return 0.0;
+  if (!apart && clip_segment_to_box(a, a + d, Vec2(-h, -h), Vec2(h, h), t0, t1)) return 0.0;
   const auto to_square = [h](const Vec2& q) {
     const double dx = std::max(std::abs(q.x()) - h, 0.0), dy = std::max(std::abs(q.y()) - h, 0.0);
     return dx * dx + dy * dy;
@@ -623,11 +628,50 @@ double segment_square_distance2(const Vec2& a, const Vec2& d, double h) {
     for (const double cx : {-h, h})
       for (const double cy : {-h, h}) {
         const Vec2 corner(cx, cy);
-        const double t = std::clamp((corner - a).dot(d) / length2, 0.0, 1.0);
+        const Vec2 to_corner = corner - a;
+        const double cross = d.x() * to_corner.y() - d.y() * to_corner.x();  // |d| times the line's distance
+        if (cross * cross >= std::min(best, below) * length2 * (1.0 + 1e-9)) continue;
+        const double t = std::clamp(to_corner.dot(d) / length2, 0.0, 1.0);
         best = std::min(best, (a + t * d - corner).squaredNorm());
       }
   return best;
 }
+
+// The segment ab measured against obstacle squares of half-size `half`, one
+// after another, each lowering a squared best. A square is measured only when
+// its centre lies nearer the segment than the best's root and the half
+// diagonal together. That test compares squares, with the segment's inverse
+// length taken once: no division or root per square. It is a little generous
+// (1e-9), so that it takes every square the exact test would.
+class SegmentProbe {
+ public:
+  SegmentProbe(const Vec2& a, const Vec2& b, double half)
+      : a_(a), b_(b), d_(b - a), half_(half), diagonal_(M_SQRT2 * half) {
+    const double length2 = d_.squaredNorm();
+    inverse_length2_ = length2 > 0.0 ? 1.0 / length2 : 0.0;
+    // Beyond the half diagonal, a nanometre over for the rounding, the segment misses the square.
+    const double apart = diagonal_ * (1.0 + 1e-9) + 1e-9;
+    apart2_ = apart * apart;
+  }
+
+  void measure(const Vec2& centre, double& best) {
+    if (best != limit_for_) {
+      limit_for_ = best;
+      const double reach = std::sqrt(best) + diagonal_;
+      limit_ = reach * reach * (1.0 + 1e-9);
+    }
+    const Vec2 to_centre = centre - a_;
+    const double t = std::clamp(to_centre.dot(d_) * inverse_length2_, 0.0, 1.0);
+    const double gap2 = (to_centre - t * d_).squaredNorm();
+    if (gap2 < limit_)
+      best = std::min(best, segment_square_distance2(a_ - centre, b_ - a_, half_, best, gap2 > apart2_));
+  }
+
+ private:
+  Vec2 a_, b_, d_;
+  double half_, diagonal_, inverse_length2_ = 0.0, apart2_ = 0.0;
+  double limit_for_ = std::numeric_limits<double>::quiet_NaN(), limit_ = 0.0;
+};
 }  // namespace
 
 inline double DistanceField::cell_square_distance(std::size_t cell, const Vec2& a) const {
@@ -711,15 +755,6 @@ void DistanceField::walk_outward(int lines, double lo, double hi, const std::vec
   }
 }
 
-// Lowers the squared `best` to the distance from the segment ab to the
-// obstacle square centred at `centre`; a square no nearer than `best` by its
-// centre's distance less its half diagonal is skipped.
-inline void DistanceField::segment_to_square(const Vec2& a, const Vec2& b, const Vec2& centre, double& best) const {
-  const double half = 0.5 * grid_.resolution();
-  const double reach = std::max(point_segment_distance(centre, a, b) - M_SQRT2 * half, 0.0);
-  if (reach * reach < best) best = std::min(best, segment_square_distance2(a - centre, b - a, half));
-}
-
 // ab inside the grid (ga, gb: its ends in cells): every point's nearest
 // obstacle is a candidate of its cell.
 inline void DistanceField::segment_inside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const {
@@ -728,6 +763,7 @@ inline void DistanceField::segment_inside(const Vec2& a, const Vec2& b, const Ve
   const int c0 = clamped_cell(std::min(ga.x(), gb.x()), grid_.cols());
   const int c1 = clamped_cell(std::max(ga.x(), gb.x()), grid_.cols());
   double nearest = best;  // a local: the tables' doubles cannot alias it
+  SegmentProbe probe(a, b, 0.5 * grid_.resolution());
   // Neighbouring cells mostly share their nearest obstacles: those the cell
   // before gave are not measured again.
   std::uint32_t last_first = std::numeric_limits<std::uint32_t>::max(), last_second = last_first;
@@ -735,11 +771,11 @@ inline void DistanceField::segment_inside(const Vec2& a, const Vec2& b, const Ve
     for (int c = c0; c <= c1; ++c) {
       const CellCandidates& near = candidates_[grid_.index(r, c)];
       const auto seen = [&](std::uint32_t o) { return o == last_first || o == last_second; };
-      if (!seen(near.first)) segment_to_square(a, b, centre_of(near.first), nearest);
-      if (near.second != near.first && !seen(near.second)) segment_to_square(a, b, centre_of(near.second), nearest);
+      if (!seen(near.first)) probe.measure(centre_of(near.first), nearest);
+      if (near.second != near.first && !seen(near.second)) probe.measure(centre_of(near.second), nearest);
       last_first = near.first, last_second = near.second;
       if (near.more)
-        for (std::uint32_t k = 1; k <= more_[near.more]; ++k) segment_to_square(a, b, centre_of(more_[near.more + k]), nearest);
+        for (std::uint32_t k = 1; k <= more_[near.more]; ++k) probe.measure(centre_of(more_[near.more + k]), nearest);
     }
   best = nearest;
 }
@@ -815,7 +851,8 @@ double DistanceField::segment_distance(const Vec2& a, const Vec2& b) const {
     if (inside(0.5 * (qa + qb))) segment_inside(pa, pb, qa, qb, best);
     else {
       best = std::min(best, outside_start(pa, qa.x(), qa.y()));
-      walk_outside(pa, pb, qa, qb, [&](const Vec2& centre) { segment_to_square(pa, pb, centre, best); }, best);
+      SegmentProbe probe(pa, pb, 0.5 * grid_.resolution());
+      walk_outside(pa, pb, qa, qb, [&](const Vec2& centre) { probe.measure(centre, best); }, best);
     }
   }
   return std::sqrt(best);

@@ -229,9 +229,8 @@ class DistanceField {
   void walk_outward(int lines, double lo, double hi, const std::vector<int>& outermost,
                     const std::vector<int>& block_extreme, const Along& along, const Candidate& candidate,
                     const double& best) const;
-  // segment_distance()'s parts, lowering the squared `best`: one square; a
-  // segment inside the grid (ga, gb: the ends in cells from the origin).
-  void segment_to_square(const Vec2& a, const Vec2& b, const Vec2& centre, double& best) const;
+  // segment_distance()'s part inside the grid (ga, gb: the ends in cells from
+  // the origin), lowering the squared `best`.
   void segment_inside(const Vec2& a, const Vec2& b, const Vec2& ga, const Vec2& gb, double& best) const;
   // The obstacles that can be nearest to a point or segment outside the grid, walked outward.
   template <class Measure>
