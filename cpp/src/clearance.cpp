@@ -272,13 +272,15 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   }
   // An obstacle cell can sit wholly inside a footprint wider than a cell; its
   // centre then lies at least `best` and half a cell inside the outline, which
-  // no point farther in than half the footprint's width can.
-  if (best <= 0.0 || best + 0.5 * res > footprint.half_width() ||
-      field->lower_bound(pose.position()) >= footprint.radius() ||
-      field->distance(pose.position()) >= footprint.radius())
+  // no point farther in than half the footprint's width can. The disc of that
+  // radius around it lies in the footprint, and so in the circumscribed
+  // circle: the centre is within `reach` of the pose, and so is the field's
+  // nearest obstacle (a nanometre over, for the rounding).
+  const double reach = footprint.radius() - best - 0.5 * res + 1e-9;
+  if (best <= 0.0 || best + 0.5 * res > footprint.half_width() || field->lower_bound(pose.position()) > reach ||
+      field->distance(pose.position()) > reach)
     return best;
-  const double r = footprint.radius();
-  const Vec2 lo = pose.position() - Vec2(r, r), hi = pose.position() + Vec2(r, r);
+  const Vec2 lo = pose.position() - Vec2(reach, reach), hi = pose.position() + Vec2(reach, reach);
   // Clamped before the cast: a query far off the grid has no int index.
   const auto index = [&](double coordinate, double origin, int count) {
     return static_cast<int>(std::clamp(std::floor((coordinate - origin) / res), -1.0, static_cast<double>(count)));
