@@ -113,6 +113,44 @@ inline void heading_cos_sin(double theta, double& c, double& s) {
   s = slot.recent.s;
 }
 
+// The cos and sin of a whole trajectory's headings: a control cycle asks for
+// the same n_omega sequences of headings once per speed of the window, since
+// every speed turns alike. Remembered by sequence, so that a hit costs one
+// comparison per pose; the headings are all compared, so a hit gives exactly
+// what heading_cos_sin would (which fills a miss).
+struct HeadingColumns {
+  const double* c;
+  const double* s;
+};
+HeadingColumns trajectory_cos_sin(const Trajectory& poses) {
+  struct Sequence {
+    std::vector<std::uint64_t> bits;
+    std::vector<double> c, s;
+  };
+  thread_local std::array<Sequence, 64> remembered;
+  const std::size_t n = poses.size();
+  if (n == 0) return HeadingColumns{nullptr, nullptr};
+  const auto bits_of = [](double theta) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &theta, sizeof bits);
+    return bits;
+  };
+  const std::uint64_t key = bits_of(poses[0].theta);
+  Sequence& slot = remembered[((key ^ (key >> 31) ^ n) * 0x9E3779B97F4A7C15ull) >> 58];
+  bool hit = slot.bits.size() == n;
+  for (std::size_t k = 0; hit && k < n; ++k) hit = slot.bits[k] == bits_of(poses[k].theta);
+  if (!hit) {
+    slot.bits.resize(n);
+    slot.c.resize(n);
+    slot.s.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      slot.bits[k] = bits_of(poses[k].theta);
+      heading_cos_sin(poses[k].theta, slot.c[k], slot.s[k]);
+    }
+  }
+  return HeadingColumns{slot.c.data(), slot.s.data()};
+}
+
 // A pose with its heading's cosine and sine, worked out once for every field
 // and bound that places a polygon there (a circle needs neither).
 struct Placed {
@@ -121,6 +159,7 @@ struct Placed {
   Placed(const Pose2& p, const Footprint& footprint) : pose(p) {
     if (!footprint.is_circle()) heading_cos_sin(p.theta, c, s);
   }
+  Placed(const Pose2& p, double cos_theta, double sin_theta) : pose(p), c(cos_theta), s(sin_theta) {}
   Vec2 world(const Vec2& q) const { return Vec2(pose.x + c * q.x() - s * q.y(), pose.y + s * q.x() + c * q.y()); }
 };
 
@@ -307,11 +346,11 @@ void ClearanceSource::clearance_lower_bounds(const Footprint& footprint, const T
 void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const {
   const double r = footprint.radius();
   const std::size_t n = poses.size();
-  // Positions (and a polygon's headings) column by column, so that lanes
-  // carry poses; one thread-local look-up per call, and the positions filled
-  // once for the polygon's kernel and the discs' alike.
+  // Positions column by column, so that lanes carry poses; one thread-local
+  // look-up per call, and the positions filled once for the polygon's kernel
+  // and the discs' alike.
   struct Columns {
-    std::vector<double> x, y, c, s;
+    std::vector<double> x, y;
   };
   thread_local Columns columns;
   Columns& in = columns;
@@ -325,14 +364,12 @@ void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& 
     }
   }
   if (!footprint.is_circle()) {
+    const HeadingColumns heading = trajectory_cos_sin(poses);
     // Every point of the polygon lies in one of its cover discs: the map's
     // bounds at the discs, for all poses at once.
     if (polygon_kernel) {
-      in.c.resize(n);
-      in.s.resize(n);
-      for (std::size_t k = 0; k < n; ++k) heading_cos_sin(poses[k].theta, in.c[k], in.s[k]);
       const std::vector<Footprint::CoverDisc>& cover = footprint.cover();
-      detail::cover_lower_bounds(in.x.data(), in.y.data(), in.c.data(), in.s.data(), n, cover.data(), cover.size(),
+      detail::cover_lower_bounds(in.x.data(), in.y.data(), heading.c, heading.s, n, cover.data(), cover.size(),
                                  field_->lower_bounds(), out);
     } else {
       std::fill(out, out + n, std::numeric_limits<double>::infinity());
@@ -343,7 +380,7 @@ void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& 
       const DistanceField::LowerBounds bound = sensed_->lower_bounds();
       for (std::size_t k = 0; k < n; ++k)
         if (bound(poses[k].x, poses[k].y) - r < out[k])
-          out[k] = std::min(out[k], cover_lower_bound(bound, footprint, Placed(poses[k], footprint)));
+          out[k] = std::min(out[k], cover_lower_bound(bound, footprint, Placed(poses[k], heading.c[k], heading.s[k])));
     }
   } else {
     // One field at a time in tight loops: this runs for every pose of every rollout.
