@@ -8,6 +8,7 @@
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/collision.hpp"
+#include "fgdwa/presets.hpp"
 #include "test_support.hpp"
 
 namespace fgdwa {
@@ -148,14 +149,16 @@ INSTANTIATE_TEST_SUITE_P(CircleAndRectangle, ClearanceAgreement, ::testing::Valu
 // The outline's pieces are skipped on bounds from their ends' distances; the
 // clearance must still be the least of the edges' exact distances, over
 // footprints from a sliver to a square and from many poses near obstacles,
-// off the grid included.
+// off the grid included. It is 0 exactly when an obstacle cell's centre lies
+// inside the footprint or an edge touches one (the cells inside are found
+// here by brute force over the outline's bounding box).
 TEST(FieldClearance, PolygonClearanceIsTheLeastEdgeDistance) {
   std::mt19937 rng(515);
   const OccupancyGrid grid = test::random_rectangles(rng, 60, 60, 0.1, Vec2(-1.0, 0.5), 0.12);
   const auto field = std::make_shared<const DistanceField>(grid);
   const FieldClearance fast(field);
   std::uniform_real_distribution<double> side(0.02, 0.9), shift(-0.4, 0.4);  // shift: of the side, keeping the origin in
-  int compared = 0;
+  int compared = 0, enclosed = 0;
   for (int shape = 0; shape < 40; ++shape) {
     const double w = side(rng), h = side(rng), dx = shift(rng) * w, dy = shift(rng) * h;
     const Footprint footprint = Footprint::polygon({{dx - w / 2, dy - h / 2}, {dx + w / 2, dy - h / 2},
@@ -165,14 +168,67 @@ TEST(FieldClearance, PolygonClearanceIsTheLeastEdgeDistance) {
       double least = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < v.size(); ++i) least = std::min(least, field->segment_distance(v[i], v[(i + 1) % v.size()]));
       const double got = fast.clearance(footprint, q.pose, 0.0);
-      if (got <= 0.0) continue;  // an obstacle inside the outline
       SCOPED_TRACE(::testing::Message() << "shape " << shape << " pose " << q.pose.x << "," << q.pose.y << ","
                                         << q.pose.theta);
+      bool cell_inside = false;
+      Vec2 lo = v[0], hi = v[0];
+      for (const Vec2& p : v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+      for (int r = 0; r < grid.rows(); ++r)
+        for (int c = 0; c < grid.cols(); ++c) {
+          const Vec2 centre = grid.cell_center(r, c);
+          if (grid.occupied(r, c) && (centre.array() >= lo.array()).all() && (centre.array() <= hi.array()).all())
+            cell_inside = cell_inside || footprint.contains(q.pose, centre);
+        }
+      if (least > 0.0 && cell_inside) {
+        ASSERT_EQ(got, 0.0);
+        ++enclosed;
+        continue;
+      }
       ASSERT_NEAR(got, least, 1e-12);
       ++compared;
     }
   }
   EXPECT_GE(compared, 9000);
+  EXPECT_GE(enclosed, 20);
+}
+
+// One obstacle cell, the footprint placed all around it: wherever the cell's
+// centre lies inside, the clearance is 0, most of all where the cell sits just
+// inside the outline (the interior check's bound is tightest there); wherever
+// it lies outside, the clearance is the edges' distance.
+TEST(FieldClearance, AnObstacleCellInsideTheFootprintIsContact) {
+  std::vector<std::uint8_t> cells(400, 0);
+  cells[10 * 20 + 10] = 1;  // x and y in [1.0, 1.1]
+  const OccupancyGrid grid(20, 20, 0.1, Vec2::Zero(), cells);
+  const auto field = std::make_shared<const DistanceField>(grid);
+  const FieldClearance world(field);
+  const Vec2 centre = grid.cell_center(10, 10);
+  const Footprint footprints[] = {
+      robot_preset("jackal").footprint,
+      Footprint::polygon({{-0.3, -0.25}, {0.5, -0.25}, {0.5, 0.25}, {-0.3, 0.25}}),
+      Footprint::polygon({{0.6, 0.0}, {-0.3, 0.45}, {-0.3, -0.45}})};
+  std::mt19937 rng(516);
+  std::uniform_real_distribution<double> offset(-0.6, 0.6), heading(-M_PI, M_PI);
+  int inside_near_outline = 0, outside = 0;
+  for (const Footprint& footprint : footprints)
+    for (int i = 0; i < 20000; ++i) {
+      const Pose2 pose{centre.x() + offset(rng), centre.y() + offset(rng), heading(rng)};
+      const std::vector<Vec2> v = test::placed_vertices(footprint, pose);
+      double least = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < v.size(); ++j) least = std::min(least, field->segment_distance(v[j], v[(j + 1) % v.size()]));
+      const bool inside = footprint.contains(pose, centre);
+      const double got = world.clearance(footprint, pose, 0.0);
+      SCOPED_TRACE(::testing::Message() << "pose " << pose.x << "," << pose.y << "," << pose.theta << " least " << least);
+      if (inside) {
+        ASSERT_EQ(got, 0.0);
+        inside_near_outline += least > 0.0 && least < 0.03;
+      } else {
+        ASSERT_NEAR(got, least, 1e-12);
+        ++outside;
+      }
+    }
+  EXPECT_GE(inside_near_outline, 300);
+  EXPECT_GE(outside, 10000);
 }
 
 // The planner's query with a cutoff, which LocalPlanner alone may call.
