@@ -231,13 +231,12 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   if (!field || !field->has_obstacles()) return kInf;
   const Pose2& pose = at.pose;
   if (footprint.is_circle()) return field->distance(pose.position()) - footprint.radius();
-  // The circumscribed circle, then the cover discs, often settle a cutoff at
-  // one look-up or a fifth of the outline's (a field of sensed points far
-  // from the robot nearly always does).
+  // The circumscribed circle often settles a cutoff at one look-up (a field
+  // of sensed points far from the robot nearly always does). The cover discs
+  // are not tried: the planner asks only where their bound is below the
+  // cutoff, and 4 % of its queries were settled by them.
   const DistanceField::LowerBounds bounds = field->lower_bounds();
-  if (cutoff < kInf &&
-      (bounds(pose.x, pose.y) - footprint.radius() >= cutoff || cover_lower_bound(bounds, footprint, at) >= cutoff))
-    return cutoff;
+  if (cutoff < kInf && bounds(pose.x, pose.y) - footprint.radius() >= cutoff) return cutoff;
 
   // Polygon: the distance from its outline, sampled (outline_samples).
   // Exact distances are asked where the table's lower bounds leave it open:
