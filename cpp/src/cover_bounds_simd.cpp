@@ -2,7 +2,7 @@
 // Highway for every instruction set and dispatched at run time like the batch
 // DTW (dtw_simd.cpp). Lanes carry poses; the discs are the outer loop. The
 // placing and the table's arithmetic run in vectors, the table's 16-bit
-// entries are read one lane at a time, and a vector with a lane off the table
+// entries are gathered, and a vector with a lane off the table
 // asks the scalar look-up (which walks off the grid) for every lane.
 // Correctly rounded operations only, without contraction: the same bits as
 // the scalar placing and look-up on every instruction set.
@@ -35,6 +35,14 @@ void CoverLowerBounds(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y
   const auto inverse = hn::Set(d, table.inverse_piece), step = hn::Set(d, table.step);
   const auto cols = hn::Set(d, table.cols), rows = hn::Set(d, table.rows);
   const auto stride = hn::Set(d, static_cast<double>(table.stride)), zero = hn::Zero(d);
+  // The table's entries are gathered in 32-bit lanes at byte offsets, while
+  // those fit in 32 bits; past that (a table of a thousand million pieces)
+  // they are read one lane at a time.
+  const hn::Rebind<std::int32_t, decltype(d)> d32;
+  const bool gather = table.rows * static_cast<double>(table.stride) < 1e9;
+  const std::int32_t* words = reinterpret_cast<const std::int32_t*>(table.pieces);
+  const auto low16 = hn::Set(d32, 0xFFFF);
+  constexpr bool kLittleEndian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
   HWY_ALIGN double px[hn::MaxLanes(d)], py[hn::MaxLanes(d)], read[hn::MaxLanes(d)];
   HWY_ALIGN std::int64_t index[hn::MaxLanes(d)];
   for (std::size_t k = 0; k < vector_end; k += lanes) {
@@ -51,9 +59,17 @@ void CoverLowerBounds(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y
       if (hn::AllTrue(d, on_table)) {
         // Whole pieces below 2^53: the index is exact in a double.
         const auto at = hn::Add(hn::Mul(hn::Trunc(gy), stride), hn::Trunc(gx));
-        hn::Store(hn::ConvertTo(di, at), di, index);
-        for (std::size_t l = 0; l < lanes; ++l) read[l] = static_cast<double>(table.pieces[index[l]]);
-        bound = hn::Mul(step, hn::Load(d, read));
+        if (gather) {
+          // 32 bits from each piece's first byte (the table keeps an entry
+          // past its last); its own 16 are the half the byte order puts first.
+          const auto word = hn::GatherOffset(d32, words, hn::DemoteTo(d32, hn::Add(at, at)));
+          const auto steps = kLittleEndian ? hn::And(word, low16) : hn::And(hn::ShiftRight<16>(word), low16);
+          bound = hn::Mul(step, hn::PromoteTo(d, steps));
+        } else {
+          hn::Store(hn::ConvertTo(di, at), di, index);
+          for (std::size_t l = 0; l < lanes; ++l) read[l] = static_cast<double>(table.pieces[index[l]]);
+          bound = hn::Mul(step, hn::Load(d, read));
+        }
       } else {
         hn::Store(wx, d, px);
         hn::Store(wy, d, py);

@@ -197,7 +197,8 @@ DistanceField::DistanceField(const OccupancyGrid& grid, double edge_margin)
   piece_scratch_.resize(static_cast<std::size_t>(sub) * sub);
   gap_x_.resize(sub);
   gap_y_.resize(sub);
-  piece_lower_bound_.assign(n_cells * sub * sub, kMostSteps);
+  // One entry past the last, never a piece's: a 32-bit read at any piece stays in the table.
+  piece_lower_bound_.assign(n_cells * sub * sub + 1, kMostSteps);
   for (int c = 0; c < cols; ++c) column_pass(c, 0, rows - 1, nullptr);
   for (int r = 0; r < rows; ++r) row_pass(r, nullptr);
   if (occupied_ > 0)

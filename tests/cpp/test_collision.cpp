@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <algorithm>
 #include <cmath>
@@ -270,9 +271,10 @@ TEST(FieldClearance, ClearanceBelowACutoffIsTheClearanceBitForBit) {
   EXPECT_GE(stopped, 500);  // the cutoff saved work
 }
 
-// A polygon's lower bounds over many poses (lanes carrying poses, on the
-// widest instruction set) equal those of each pose asked alone, bit for bit,
-// on the grid, in its margin and beyond it, and never exceed the clearance.
+// A polygon's lower bounds over many poses (lanes carrying poses, the table
+// gathered) equal those of each pose asked alone, bit for bit, on every
+// instruction set the processor runs, on the grid, in its margin and beyond
+// it, and never exceed the clearance.
 TEST(FieldClearance, PolygonBoundsOfManyPosesAreThoseOfEachAlone) {
   const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
   std::mt19937 rng(78);
@@ -282,18 +284,31 @@ TEST(FieldClearance, PolygonBoundsOfManyPosesAreThoseOfEachAlone) {
   FieldClearance both(std::make_shared<const DistanceField>(grid, 1.0));
   both.set_sensed(std::make_shared<const DistanceField>(sensed, 0.0));
   std::uniform_real_distribution<double> x(-4.0, 10.0), y(-2.5, 9.5), heading(-M_PI, M_PI);
-  for (const FieldClearance* source : {&world, &both}) {
-    Trajectory poses(1001);  // not a multiple of any vector's lanes
-    for (Pose2& p : poses) p = Pose2{x(rng), y(rng), heading(rng)};
-    std::vector<double> bounds(poses.size());
-    source->clearance_lower_bounds(rectangle, poses, 0.1, bounds.data());
-    for (std::size_t k = 0; k < poses.size(); ++k) {
-      double alone;
-      source->clearance_lower_bounds(rectangle, Trajectory{poses[k]}, 0.1, &alone);
-      ASSERT_EQ(bounds[k], alone) << "pose " << k;
-      ASSERT_LE(bounds[k], source->clearance(rectangle, poses[k], 0.0) + 1e-12) << "pose " << k;
-    }
+  Trajectory poses(1001);  // not a multiple of any vector's lanes
+  for (Pose2& p : poses) p = Pose2{x(rng), y(rng), heading(rng)};
+  // Poses on the grid alone, so that whole vectors take the gathered path.
+  Trajectory on_grid(1001);
+  std::uniform_real_distribution<double> grid_x(-0.9, 6.9), grid_y(0.6, 6.4);
+  for (Pose2& p : on_grid) p = Pose2{grid_x(rng), grid_y(rng), heading(rng)};
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_FALSE(targets.empty());
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    for (const FieldClearance* source : {&world, &both})
+      for (const Trajectory* set : {&poses, &on_grid}) {
+        std::vector<double> bounds(set->size());
+        source->clearance_lower_bounds(rectangle, *set, 0.1, bounds.data());
+        for (std::size_t k = 0; k < set->size(); ++k) {
+          const Pose2& pose = (*set)[k];
+          double alone;
+          source->clearance_lower_bounds(rectangle, Trajectory{pose}, 0.1, &alone);
+          ASSERT_EQ(bounds[k], alone) << "pose " << k;
+          ASSERT_LE(bounds[k], source->clearance(rectangle, pose, 0.0) + 1e-12) << "pose " << k;
+        }
+      }
   }
+  hwy::SetSupportedTargetsForTest(0);
 }
 
 TEST(CollisionWorld, MovingDiscsMatchTheAnalyticDistance) {

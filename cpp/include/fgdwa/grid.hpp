@@ -161,7 +161,7 @@ class DistanceField {
   // The table behind lower_bound(), copied out so that a loop over many points
   // keeps it in registers. Valid while the field lives and is not updated.
   struct LowerBounds {
-    const std::uint16_t* pieces;  // in steps, rounded down; null: no obstacles
+    const std::uint16_t* pieces;  // in steps, rounded down; null: no obstacles. One more follows the last.
     double step;                  // m per step
     double origin_x, origin_y, inverse_piece;
     double cols, rows;  // pieces across and down the grid
