@@ -195,7 +195,7 @@ double cover_lower_bound(const DistanceField::LowerBounds& bound, const Footprin
 struct OutlineSamples {
   std::vector<Vec2> vertices;
   double resolution = 0.0;
-  std::vector<Vec2> points;
+  std::vector<double> x, y;  // the points, column by column
   std::vector<double> lengths;
 };
 
@@ -205,7 +205,8 @@ const OutlineSamples& outline_samples(const Footprint& footprint, double resolut
   if (last.resolution == resolution && last.vertices == vertices) return last;
   last.vertices = vertices;
   last.resolution = resolution;
-  last.points.clear();
+  last.x.clear();
+  last.y.clear();
   last.lengths.clear();
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     const Vec2 a = vertices[i], b = vertices[(i + 1) % vertices.size()];
@@ -214,7 +215,9 @@ const OutlineSamples& outline_samples(const Footprint& footprint, double resolut
     // a piece's bound from cutting one that holds the minimum.
     const double length = (b - a).norm() / pieces * (1.0 + 1e-12) + 1e-15;
     for (int k = 0; k < pieces; ++k) {
-      last.points.push_back(a + (b - a) * (double(k) / pieces));
+      const Vec2 point = a + (b - a) * (double(k) / pieces);
+      last.x.push_back(point.x());
+      last.y.push_back(point.y());
       last.lengths.push_back(length);
     }
   }
@@ -245,68 +248,74 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   // (piece_lower_bound) could still be below it are measured whole, inside
   // the grid or out.
   const double res = field->grid().resolution();
-  struct Sample {
-    Vec2 point;
-    double low;     // the table's lower bound
-    double exact;   // NaN until asked
-    double length;  // of the piece to the next sample, a little over
-  };
   const OutlineSamples& outline = outline_samples(footprint, res);
-  const std::size_t n = outline.points.size();
-  // On the stack for the usual footprint; this runs thousands of times per control cycle.
+  const std::size_t n = outline.x.size();
+  // Columns on the stack for the usual footprint; this runs thousands of
+  // times per control cycle. The samples' world points (wx, wy), the table's
+  // bounds there (low), their exact distances (NaN until asked), and the
+  // pieces left open by the first pass (open).
   constexpr std::size_t kOnStack = 96;
-  Sample on_stack[kOnStack];
-  std::vector<Sample> spilled;
-  Sample* samples = on_stack;
+  double on_stack[4 * kOnStack];
+  std::uint32_t open_on_stack[kOnStack];
+  std::vector<double> spilled;
+  std::vector<std::uint32_t> open_spilled;
+  double* columns = on_stack;
+  std::uint32_t* open = open_on_stack;
+  const std::size_t m = std::max(n, kOnStack);
   if (n > kOnStack) {
-    spilled.resize(n);
-    samples = spilled.data();
+    spilled.resize(4 * m);
+    open_spilled.resize(n);
+    columns = spilled.data();
+    open = open_spilled.data();
   }
+  double* const wx = columns;
+  double* const wy = columns + m;
+  double* const low = columns + 2 * m;
+  double* const exact_at = columns + 3 * m;
+  detail::outline_lower_bounds(pose.x, pose.y, at.c, at.s, outline.x.data(), outline.y.data(), n, bounds, wx, wy, low);
+  std::fill(exact_at, exact_at + n, std::numeric_limits<double>::quiet_NaN());
   // Placing the samples rounds their coordinates: a few units in the last
   // place of the largest one, which the pieces' lengths must allow for.
   const double placing_slack =
       8.0 * std::numeric_limits<double>::epsilon() * (std::abs(pose.x) + std::abs(pose.y) + footprint.radius());
-  for (std::size_t j = 0; j < n; ++j) {
-    const Vec2 q = at.world(outline.points[j]);
-    samples[j] = Sample{q, bounds(q.x(), q.y()), std::numeric_limits<double>::quiet_NaN(), outline.lengths[j] + placing_slack};
-  }
-  // The lowest bound's sample (the first of equals) once the look-ups are
-  // all under way: in the loop above, each comparison waited on its own.
+  // The lowest bound's sample (the first of equals).
   std::size_t lowest = 0;
-  double lowest_low = samples[0].low;
-  for (std::size_t j = 1; j < n; ++j)
-    if (samples[j].low < lowest_low) {
-      lowest_low = samples[j].low;
-      lowest = j;
-    }
+  for (std::size_t j = 1; j < n; ++j) lowest = low[j] < low[lowest] ? j : lowest;
   const OccupancyGrid& grid = field->grid();
   const Vec2 grid_lo = grid.origin(), grid_hi = grid.origin() + res * Vec2(grid.cols(), grid.rows());
-  const auto on_grid = [&](const Vec2& p) {
-    return p.x() >= grid_lo.x() && p.y() >= grid_lo.y() && p.x() <= grid_hi.x() && p.y() <= grid_hi.y();
+  const auto on_grid = [&](std::size_t j) {
+    return wx[j] >= grid_lo.x() && wy[j] >= grid_lo.y() && wx[j] <= grid_hi.x() && wy[j] <= grid_hi.y();
   };
-  const auto exact = [&](Sample& sample) {
-    if (std::isnan(sample.exact)) sample.exact = field->distance(sample.point);
-    return sample.exact;
+  const auto exact = [&](std::size_t j) {
+    if (std::isnan(exact_at[j])) exact_at[j] = field->distance(Vec2(wx[j], wy[j]));
+    return exact_at[j];
   };
-  double best = samples[lowest].low < cutoff ? std::min(cutoff, exact(samples[lowest])) : cutoff;
+  const auto known = [&](std::size_t j) { return std::isnan(exact_at[j]) ? low[j] : exact_at[j]; };
+  double best = low[lowest] < cutoff ? std::min(cutoff, exact(lowest)) : cutoff;
   for (std::size_t j = 0; j < n; ++j)
-    if (samples[j].low < best) best = std::min(best, exact(samples[j]));
+    if (low[j] < best) best = std::min(best, exact(j));
+  // The field's Lipschitz bound settles most pieces, those far from the
+  // nearest obstacle: a first pass without branches keeps the others. What
+  // it settles stays settled, the best only falling and what is known at the
+  // ends only rising; the others are taken in turn as before.
+  std::size_t opened = 0;
   for (std::size_t j = 0; j < n; ++j) {
-    Sample& from = samples[j];
-    Sample& to = samples[(j + 1) % n];
-    const double length = from.length;
-    const auto known = [](const Sample& sample) { return std::isnan(sample.exact) ? sample.low : sample.exact; };
-    const double da = known(from), db = known(to);
-    // The field's Lipschitz bound first: it settles most pieces, those far
-    // from the nearest obstacle, without a division or a square root.
+    const std::size_t next = j + 1 == n ? 0 : j + 1;
+    open[opened] = static_cast<std::uint32_t>(j);
+    opened += 0.5 * (known(j) + known(next) - (outline.lengths[j] + placing_slack)) < best;
+  }
+  for (std::size_t i = 0; i < opened; ++i) {
+    const std::size_t j = open[i], next = j + 1 == n ? 0 : j + 1;
+    const double length = outline.lengths[j] + placing_slack;
+    const double da = known(j), db = known(next);
     if (0.5 * (da + db - length) >= best || piece_lower_bound(da, db, length) >= best) continue;
-    if (!on_grid(from.point) || !on_grid(to.point)) {
+    if (!on_grid(j) || !on_grid(next)) {
       // Off the grid (always so for a small field of sensed cells) a segment
       // walks rows or columns; the exact distances at its ends often settle it.
-      best = std::min({best, exact(from), exact(to)});
-      if (piece_lower_bound(from.exact, to.exact, length) >= best) continue;
+      best = std::min({best, exact(j), exact(next)});
+      if (piece_lower_bound(exact_at[j], exact_at[next], length) >= best) continue;
     }
-    best = std::min(best, field->segment_distance(from.point, to.point));
+    best = std::min(best, field->segment_distance(Vec2(wx[j], wy[j]), Vec2(wx[next], wy[next])));
   }
   // An obstacle cell can sit wholly inside a footprint wider than a cell; its
   // centre then lies at least `best` and half a cell inside the outline, which

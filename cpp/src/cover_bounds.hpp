@@ -1,6 +1,7 @@
 #pragma once
-// A polygon footprint's lower bounds at many poses from one field's table,
-// vectorised (cover_bounds_simd.cpp).
+// A polygon footprint's lower bounds from one field's table, vectorised
+// (cover_bounds_simd.cpp): its cover discs' at many poses, its outline's
+// samples' at one.
 #include <cstddef>
 
 #include "fgdwa/grid.hpp"
@@ -17,6 +18,13 @@ namespace detail {
 void cover_lower_bounds(const double* x, const double* y, const double* c, const double* s, std::size_t n,
                         const Footprint::CoverDisc* cover, std::size_t m, const DistanceField::LowerBounds& table,
                         double* out);
+
+// At one pose (x, y, heading cosine c and sine s), the n points (qx[j], qy[j])
+// of the robot's frame placed in the world, (wx[j], wy[j]), and the table's
+// bound there, low[j]. The same bits as Placed::world and the table's
+// operator() one point at a time.
+void outline_lower_bounds(double x, double y, double c, double s, const double* qx, const double* qy, std::size_t n,
+                          const DistanceField::LowerBounds& table, double* wx, double* wy, double* low);
 
 }  // namespace detail
 }  // namespace fgdwa
