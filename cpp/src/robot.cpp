@@ -151,9 +151,19 @@ double Footprint::signed_distance(const Pose2& pose, const Vec2& p) const {
 double Footprint::signed_distance_in_frame(const Vec2& q) const {
   detail::require_query_point("point", q);
   if (is_circle()) return q.norm() - radius_;
-  double d = std::numeric_limits<double>::infinity();
+  // The least squared distance to an edge, then one root: the root is
+  // monotonic and correctly rounded, so the least root is the root of the least.
+  double d2 = std::numeric_limits<double>::infinity();
   const size_t n = vertices_.size();
-  for (size_t i = 0; i < n; ++i) d = std::min(d, point_segment_distance(q, vertices_[i], vertices_[(i + 1) % n]));
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2& a = vertices_[i];
+    const Vec2 ab = vertices_[i + 1 == n ? 0 : i + 1] - a;
+    const double length2 = ab.squaredNorm();
+    // As point_segment_distance() places the foot.
+    const double t = length2 == 0.0 ? 0.0 : std::clamp((q - a).dot(ab) / length2, 0.0, 1.0);
+    d2 = std::min(d2, length2 == 0.0 ? (q - a).squaredNorm() : (q - (a + t * ab)).squaredNorm());
+  }
+  const double d = std::sqrt(d2);
   return polygon_contains(q) ? -d : d;
 }
 

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstring>
@@ -117,6 +118,30 @@ TEST(Footprint, HalfWidthBoundsHowDeepAPointLiesInside) {
     const Vec2 p(u(rng), u(rng));
     EXPECT_GE(triangle.signed_distance(Pose2{}, p), -triangle.half_width() - 1e-15);
   }
+}
+
+// The signed distance is the least edge distance, to the bit (one root of
+// the least square), negative inside: for a rectangle, a triangle and a
+// pentagon.
+TEST(Footprint, SignedDistanceIsTheLeastEdgeDistanceToTheBit) {
+  const Footprint shapes[] = {Footprint::polygon({{-0.21, -0.165}, {0.21, -0.165}, {0.21, 0.165}, {-0.21, 0.165}}),
+                              Footprint::polygon({{0.6, 0.0}, {-0.3, 0.45}, {-0.3, -0.45}}),
+                              Footprint::polygon({{0.4, -0.2}, {0.5, 0.0}, {0.4, 0.2}, {-0.3, 0.25}, {-0.35, -0.1}})};
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int inside = 0;
+  for (const Footprint& shape : shapes) {
+    const std::vector<Vec2>& v = shape.vertices();
+    for (int i = 0; i < 20000; ++i) {
+      const Vec2 q(u(rng), u(rng));
+      double least = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < v.size(); ++j) least = std::min(least, point_segment_distance(q, v[j], v[(j + 1) % v.size()]));
+      const bool in = shape.contains(Pose2{}, q);
+      ASSERT_EQ(shape.signed_distance_in_frame(q), in ? -least : least) << q.transpose();
+      inside += in;
+    }
+  }
+  EXPECT_GT(inside, 3000);
 }
 
 TEST(Footprint, SignedDistanceOfCircleAndPolygon) {
