@@ -272,15 +272,17 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   double* const wy = columns + m;
   double* const low = columns + 2 * m;
   double* const exact_at = columns + 3 * m;
-  detail::outline_lower_bounds(pose.x, pose.y, at.c, at.s, outline.x.data(), outline.y.data(), n, bounds, wx, wy, low);
+  const double lowest_low =
+      detail::outline_lower_bounds(pose.x, pose.y, at.c, at.s, outline.x.data(), outline.y.data(), n, bounds, wx, wy, low);
   std::fill(exact_at, exact_at + n, std::numeric_limits<double>::quiet_NaN());
   // Placing the samples rounds their coordinates: a few units in the last
   // place of the largest one, which the pieces' lengths must allow for.
   const double placing_slack =
       8.0 * std::numeric_limits<double>::epsilon() * (std::abs(pose.x) + std::abs(pose.y) + footprint.radius());
-  // The lowest bound's sample (the first of equals).
+  // The lowest bound's sample (the first of equals): its value came from
+  // the kernel, where a search by index waited on a load per sample.
   std::size_t lowest = 0;
-  for (std::size_t j = 1; j < n; ++j) lowest = low[j] < low[lowest] ? j : lowest;
+  while (lowest + 1 < n && low[lowest] != lowest_low) ++lowest;
   const OccupancyGrid& grid = field->grid();
   const Vec2 grid_lo = grid.origin(), grid_hi = grid.origin() + res * Vec2(grid.cols(), grid.rows());
   const auto on_grid = [&](std::size_t j) {

@@ -22,9 +22,10 @@ void cover_lower_bounds(const double* x, const double* y, const double* c, const
 // At one pose (x, y, heading cosine c and sine s), the n points (qx[j], qy[j])
 // of the robot's frame placed in the world, (wx[j], wy[j]), and the table's
 // bound there, low[j]. The same bits as Placed::world and the table's
-// operator() one point at a time.
-void outline_lower_bounds(double x, double y, double c, double s, const double* qx, const double* qy, std::size_t n,
-                          const DistanceField::LowerBounds& table, double* wx, double* wy, double* low);
+// operator() one point at a time. Returns the least of the bounds (+inf for
+// n = 0), found in vectors.
+double outline_lower_bounds(double x, double y, double c, double s, const double* qx, const double* qy, std::size_t n,
+                            const DistanceField::LowerBounds& table, double* wx, double* wy, double* low);
 
 }  // namespace detail
 }  // namespace fgdwa

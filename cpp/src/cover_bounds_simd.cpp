@@ -84,26 +84,32 @@ void CoverLowerBounds(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y
   }
 }
 
-void OutlineLowerBounds(double x, double y, double c, double s, const double* HWY_RESTRICT qx,
-                        const double* HWY_RESTRICT qy, std::size_t n, const DistanceField::LowerBounds& table,
-                        double* HWY_RESTRICT wx, double* HWY_RESTRICT wy, double* HWY_RESTRICT low) {
+double OutlineLowerBounds(double x, double y, double c, double s, const double* HWY_RESTRICT qx,
+                          const double* HWY_RESTRICT qy, std::size_t n, const DistanceField::LowerBounds& table,
+                          double* HWY_RESTRICT wx, double* HWY_RESTRICT wy, double* HWY_RESTRICT low) {
   const hn::ScalableTag<double> d;
   const std::size_t lanes = hn::Lanes(d);
   const std::size_t vector_end = table.pieces ? n - n % lanes : 0;
   const auto X = hn::Set(d, x), Y = hn::Set(d, y), C = hn::Set(d, c), S = hn::Set(d, s);
+  auto least = hn::Set(d, std::numeric_limits<double>::infinity());
   for (std::size_t j = 0; j < vector_end; j += lanes) {
     const auto Qx = hn::LoadU(d, qx + j), Qy = hn::LoadU(d, qy + j);
     const auto Wx = hn::Sub(hn::Add(X, hn::Mul(C, Qx)), hn::Mul(S, Qy));
     const auto Wy = hn::Add(hn::Add(Y, hn::Mul(S, Qx)), hn::Mul(C, Qy));
     hn::StoreU(Wx, d, wx + j);
     hn::StoreU(Wy, d, wy + j);
-    hn::StoreU(TableBounds(d, Wx, Wy, table), d, low + j);
+    const auto bound = TableBounds(d, Wx, Wy, table);
+    hn::StoreU(bound, d, low + j);
+    least = hn::Min(least, bound);
   }
+  double lowest = hn::GetLane(hn::MinOfLanes(d, least));
   for (std::size_t j = vector_end; j < n; ++j) {
     wx[j] = x + c * qx[j] - s * qy[j];
     wy[j] = y + s * qx[j] + c * qy[j];
     low[j] = table(wx[j], wy[j]);
+    lowest = std::min(lowest, low[j]);
   }
+  return lowest;
 }
 
 }  // namespace HWY_NAMESPACE
@@ -123,9 +129,9 @@ void cover_lower_bounds(const double* x, const double* y, const double* c, const
   HWY_DYNAMIC_DISPATCH(CoverLowerBounds)(x, y, c, s, n, cover, m, table, out);
 }
 
-void outline_lower_bounds(double x, double y, double c, double s, const double* qx, const double* qy, std::size_t n,
-                          const DistanceField::LowerBounds& table, double* wx, double* wy, double* low) {
-  HWY_DYNAMIC_DISPATCH(OutlineLowerBounds)(x, y, c, s, qx, qy, n, table, wx, wy, low);
+double outline_lower_bounds(double x, double y, double c, double s, const double* qx, const double* qy, std::size_t n,
+                            const DistanceField::LowerBounds& table, double* wx, double* wy, double* low) {
+  return HWY_DYNAMIC_DISPATCH(OutlineLowerBounds)(x, y, c, s, qx, qy, n, table, wx, wy, low);
 }
 
 }  // namespace detail
