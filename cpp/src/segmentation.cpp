@@ -111,13 +111,23 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
   for (int iteration = 0; iteration < 20; ++iteration) {
     detail::radial(scratch.px.data(), scratch.py.data(), m, x[0], x[1], 1e-9, scratch.reach.data(), scratch.ux.data(),
                    scratch.uy.data());
-    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-    Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
+    // normal += w J J^T and gradient += w J (reach - r), J = (-ux, -uy, -1),
+    // term by term in plain doubles: Eigen's 3 x 3 sums went through the
+    // stack, each load waiting on stores it could not be forwarded from.
+    double n00 = 0.0, n01 = 0.0, n02 = 0.0, n10 = 0.0, n11 = 0.0, n12 = 0.0, n20 = 0.0, n21 = 0.0, n22 = 0.0;
+    double g0 = 0.0, g1 = 0.0, g2 = 0.0;
     for (std::size_t i = 0; i < m; ++i) {
-      const Eigen::Vector3d J(-scratch.ux[i], -scratch.uy[i], -1.0);
-      normal += w_point * J * J.transpose();
-      gradient += w_point * J * (scratch.reach[i] - x[2]);
+      const double j0 = -scratch.ux[i], j1 = -scratch.uy[i], j2 = -1.0;
+      const double w0 = w_point * j0, w1 = w_point * j1, w2 = w_point * j2;
+      n00 += j0 * w0, n01 += j1 * w0, n02 += j2 * w0;
+      n10 += j0 * w1, n11 += j1 * w1, n12 += j2 * w1;
+      n20 += j0 * w2, n21 += j1 * w2, n22 += j2 * w2;
+      const double residual = scratch.reach[i] - x[2];
+      g0 += w0 * residual, g1 += w1 * residual, g2 += w2 * residual;
     }
+    Eigen::Matrix3d normal;
+    normal << n00, n01, n02, n10, n11, n12, n20, n21, n22;
+    Eigen::Vector3d gradient(g0, g1, g2);
     normal(2, 2) += w_prior;
     gradient[2] += w_prior * (x[2] - apparent);
     const Eigen::Vector3d step = normal.ldlt().solve(-gradient);
