@@ -292,7 +292,9 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
     if (std::isnan(exact_at[j])) exact_at[j] = field->distance(Vec2(wx[j], wy[j]));
     return exact_at[j];
   };
-  const auto known = [&](std::size_t j) { return std::isnan(exact_at[j]) ? low[j] : exact_at[j]; };
+  // The exact distance where asked, else the bound, without a branch: the
+  // bound never exceeds the distance, and max(low, NaN) is low.
+  const auto known = [&](std::size_t j) { return std::max(low[j], exact_at[j]); };
   double best = low[lowest] < cutoff ? std::min(cutoff, exact(lowest)) : cutoff;
   for (std::size_t j = 0; j < n; ++j)
     if (low[j] < best) best = std::min(best, exact(j));
