@@ -2,6 +2,7 @@
 // Plain value types of the plane: poses, velocity commands, trajectories.
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace fgdwa {
@@ -29,14 +30,19 @@ double wrap_angle(double angle);
 // Smallest signed difference a - b, in (-pi, pi].
 double angle_difference(double a, double b);
 
-// Inline: both run in the clearance queries' inner loops.
-// Distance from p to the segment a-b (to a when the segment is a point).
-inline double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+// Inline: these run in the clearance queries' inner loops.
+// Squared distance from p to the segment a-b (to a when the segment is a point).
+inline double point_segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double length2 = ab.squaredNorm();
-  if (length2 == 0.0) return (p - a).norm();
+  if (length2 == 0.0) return (p - a).squaredNorm();
   const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
+  return (p - (a + t * ab)).squaredNorm();
+}
+
+// Distance from p to the segment a-b: the root of the square, as norm() takes it.
+inline double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  return std::sqrt(point_segment_distance2(p, a, b));
 }
 
 // The part [t0, t1] of the segment a + t (b - a), t in [0, 1], inside the box
