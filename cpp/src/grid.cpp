@@ -646,8 +646,7 @@ double segment_square_distance2(const Vec2& a, const Vec2& d, double h, double b
 // (1e-9), so that it takes every square the exact test would.
 class SegmentProbe {
  public:
-  SegmentProbe(const Vec2& a, const Vec2& b, double half)
-      : a_(a), b_(b), d_(b - a), half_(half), diagonal_(M_SQRT2 * half) {
+  SegmentProbe(const Vec2& a, const Vec2& b, double half) : a_(a), d_(b - a), half_(half), diagonal_(M_SQRT2 * half) {
     const double length2 = d_.squaredNorm();
     inverse_length2_ = length2 > 0.0 ? 1.0 / length2 : 0.0;
     // Beyond the half diagonal, a nanometre over for the rounding, the segment misses the square.
@@ -665,11 +664,11 @@ class SegmentProbe {
     const double t = std::clamp(to_centre.dot(d_) * inverse_length2_, 0.0, 1.0);
     const double gap2 = (to_centre - t * d_).squaredNorm();
     if (gap2 < limit_)
-      best = std::min(best, segment_square_distance2(a_ - centre, b_ - a_, half_, best, gap2 > apart2_));
+      best = std::min(best, segment_square_distance2(a_ - centre, d_, half_, best, gap2 > apart2_));
   }
 
  private:
-  Vec2 a_, b_, d_;
+  Vec2 a_, d_;  // d_ = b - a
   double half_, diagonal_, inverse_length2_ = 0.0, apart2_ = 0.0;
   double limit_for_ = std::numeric_limits<double>::quiet_NaN(), limit_ = 0.0;
 };
