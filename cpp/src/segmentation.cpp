@@ -114,19 +114,20 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
     // normal += w J J^T and gradient += w J (reach - r), J = (-ux, -uy, -1),
     // term by term in plain doubles: Eigen's 3 x 3 sums went through the
     // stack, each load waiting on stores it could not be forwarded from.
-    double n00 = 0.0, n01 = 0.0, n02 = 0.0, n10 = 0.0, n11 = 0.0, n12 = 0.0, n20 = 0.0, n21 = 0.0, n22 = 0.0;
+    // The lower triangle alone, the one the LDLT reads.
+    double n00 = 0.0, n10 = 0.0, n11 = 0.0, n20 = 0.0, n21 = 0.0, n22 = 0.0;
     double g0 = 0.0, g1 = 0.0, g2 = 0.0;
     for (std::size_t i = 0; i < m; ++i) {
       const double j0 = -scratch.ux[i], j1 = -scratch.uy[i], j2 = -1.0;
       const double w0 = w_point * j0, w1 = w_point * j1, w2 = w_point * j2;
-      n00 += j0 * w0, n01 += j1 * w0, n02 += j2 * w0;
-      n10 += j0 * w1, n11 += j1 * w1, n12 += j2 * w1;
+      n00 += j0 * w0;
+      n10 += j0 * w1, n11 += j1 * w1;
       n20 += j0 * w2, n21 += j1 * w2, n22 += j2 * w2;
       const double residual = scratch.reach[i] - x[2];
       g0 += w0 * residual, g1 += w1 * residual, g2 += w2 * residual;
     }
     Eigen::Matrix3d normal;
-    normal << n00, n01, n02, n10, n11, n12, n20, n21, n22;
+    normal << n00, n10, n20, n10, n11, n21, n20, n21, n22;
     Eigen::Vector3d gradient(g0, g1, g2);
     normal(2, 2) += w_prior;
     gradient[2] += w_prior * (x[2] - apparent);
