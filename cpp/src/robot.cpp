@@ -155,7 +155,7 @@ double Footprint::signed_distance_in_frame(const Vec2& q) const {
   // monotonic and correctly rounded, so the least root is the root of the least.
   double d2 = std::numeric_limits<double>::infinity();
   const size_t n = vertices_.size();
-  for (size_t i = 0; i < n; ++i) d2 = std::min(d2, point_segment_distance2(q, vertices_[i], vertices_[i + 1 == n ? 0 : i + 1]));
+  for (size_t i = 0; i < n; ++i) d2 = std::min(d2, detail::point_segment_distance2(q, vertices_[i], vertices_[i + 1 == n ? 0 : i + 1]));
   const double d = std::sqrt(d2);
   return polygon_contains(q) ? -d : d;
 }

@@ -31,7 +31,9 @@ double wrap_angle(double angle);
 double angle_difference(double a, double b);
 
 // Inline: these run in the clearance queries' inner loops.
-// Squared distance from p to the segment a-b (to a when the segment is a point).
+namespace detail {
+// Squared distance from p to the segment a-b (to a when the segment is a
+// point): the library's polygon takes one root of the least of its edges'.
 inline double point_segment_distance2(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double length2 = ab.squaredNorm();
@@ -39,10 +41,12 @@ inline double point_segment_distance2(const Vec2& p, const Vec2& a, const Vec2& 
   const double t = std::clamp((p - a).dot(ab) / length2, 0.0, 1.0);
   return (p - (a + t * ab)).squaredNorm();
 }
+}  // namespace detail
 
-// Distance from p to the segment a-b: the root of the square, as norm() takes it.
+// Distance from p to the segment a-b (to a when the segment is a point): the
+// root of the square, as norm() takes it.
 inline double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  return std::sqrt(point_segment_distance2(p, a, b));
+  return std::sqrt(detail::point_segment_distance2(p, a, b));
 }
 
 // The part [t0, t1] of the segment a + t (b - a), t in [0, 1], inside the box
