@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 
 HWY_BEFORE_NAMESPACE();
@@ -65,6 +66,8 @@ void DtwBatchF32(const float* HWY_RESTRICT ax, const float* HWY_RESTRICT ay, std
   std::copy(previous + (m - 1) * K, previous + m * K, out);
 }
 
+std::size_t VectorBytes() { return hn::Lanes(hn::ScalableTag<std::uint8_t>()); }
+
 }  // namespace HWY_NAMESPACE
 }  // namespace fgdwa
 HWY_AFTER_NAMESPACE();
@@ -79,6 +82,7 @@ HWY_AFTER_NAMESPACE();
 namespace fgdwa {
 
 HWY_EXPORT(DtwBatchF32);
+HWY_EXPORT(VectorBytes);
 
 void DtwWorkspace::distance_batch_f32(const float* ax, const float* ay, std::size_t n, std::size_t count,
                                       const float* bx, const float* by, std::size_t m, float* out) {
@@ -97,6 +101,8 @@ void DtwWorkspace::distance_batch_f32_unchecked(const float* ax, const float* ay
   float* previous = rows_f32_.data();
   HWY_DYNAMIC_DISPATCH(DtwBatchF32)(ax, ay, n, count, bx, by, m, previous, previous + m * count, out);
 }
+
+std::size_t dtw_vector_bytes() { return HWY_DYNAMIC_DISPATCH(VectorBytes)(); }
 
 const char* dtw_instruction_set() {
   // Highway orders its targets best first.

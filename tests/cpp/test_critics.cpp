@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <string>
+#include <vector>
 
 #include <hwy/targets.h>
 
@@ -137,6 +139,30 @@ TEST(DtwSingle, MatchesDoubleAndGivesTheSameBitsOnEveryInstructionSet) {
   }
   std::printf("DTW batch checked on %zu instruction sets; dispatched: %s\n", targets.size(), dtw_instruction_set());
   EXPECT_THROW(workspace.distance_batch_f32(nullptr, nullptr, 0, 1, nullptr, nullptr, 1, nullptr), Error);
+}
+
+// The vectors' width reported for each instruction set the processor runs is
+// that set's: what the benchmarks' floors divide the work by.
+TEST(DtwSingle, ReportsTheVectorWidthOfEachInstructionSet) {
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_FALSE(targets.empty());
+  std::vector<std::size_t> widths;
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    const std::string name = hwy::TargetName(target);
+    SCOPED_TRACE(name);
+    const std::size_t bytes = dtw_vector_bytes();
+    widths.push_back(bytes);
+    EXPECT_EQ(bytes & (bytes - 1), 0u) << bytes << " is not a power of two";
+    if (name.rfind("AVX3", 0) == 0) EXPECT_EQ(bytes, 64u);
+    else if (name == "AVX2") EXPECT_EQ(bytes, 32u);
+    else if (name.rfind("SSE", 0) == 0 || name == "SSSE3" || name == "EMU128" || name == "NEON") EXPECT_EQ(bytes, 16u);
+    else if (name == "SCALAR") EXPECT_EQ(bytes, 1u);
+    else EXPECT_GE(bytes, 16u);
+  }
+  // Without a test's choice, the widest the processor has (Highway lists it first).
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_EQ(dtw_vector_bytes(), widths.front());
 }
 
 // With the similarity critic in single precision, a rollout scores alike alone

@@ -55,6 +55,8 @@ class DtwWorkspace {
 // The instruction set distance_batch_f32 runs with on this processor ("AVX2",
 // "NEON", ...).
 const char* dtw_instruction_set();
+// The bytes of its vectors (16 for SSE4 and NEON, 32 for AVX2, 64 for AVX-512).
+std::size_t dtw_vector_bytes();
 
 // One-off DTW; throws fgdwa::Error on an empty sequence or a non-finite point.
 double dtw(const std::vector<Vec2>& a, const std::vector<Vec2>& b, int band = kNoBand);
