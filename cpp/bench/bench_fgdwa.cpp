@@ -62,7 +62,8 @@
 //
 //   build/cmake/cpp/bench/bench_fgdwa      (about 25 s; the target for BM_Cycle is a median <= 0.15 ms)
 //
-// A summary table follows the benchmarks. ("Library was built as DEBUG" in the
+// A summary table follows the benchmarks, then the whole cycle next to its
+// arithmetic floor (bench_floor.hpp). ("Library was built as DEBUG" in the
 // output is about Debian's libbenchmark itself; fgdwa builds as Release.)
 #include <benchmark/benchmark.h>
 
@@ -89,6 +90,7 @@
 #include "fgdwa/presets.hpp"
 #include "fgdwa/weights.hpp"
 #include "fgdwa/window.hpp"
+#include "bench_floor.hpp"
 #include "bench_maps.hpp"
 
 namespace {
@@ -489,6 +491,26 @@ void print_summary(const SummaryReporter& reporter) {
     row("Navigator::step (same cycle)", get("BM_NavigatorCycle", n));
   }
   std::printf("target: whole cycle median <= 150 us; DTW instruction set: %s\n", dtw_instruction_set());
+
+  // The floor counts the planner's work (every rollout's poses stepped and
+  // bounded, the DTW of every admissible rollout against the reference), not
+  // the simulated scan nor the critics: the positions' mean.
+  const bench::Machine machine = bench::measured_machine();
+  bench::print_floor_header(machine);
+  const Scene& s = scene();
+  const double steps = s.preset.params.n_steps();
+  for (int n : {1, kPositions}) {
+    double samples = 0, admissible = 0;
+    for (int i = 0; i < n; ++i) {
+      samples += s.positions[static_cast<std::size_t>(i)].samples;
+      admissible += static_cast<double>(s.positions[static_cast<std::size_t>(i)].admissible.size());
+    }
+    const std::vector<bench::Work> work = {
+        {"poses", samples / n * steps, bench::kPoseStepOps + bench::kTableBoundOps + bench::kPoseTestOps, false},
+        {"DTW cells", admissible / n * steps * steps, bench::kDtwCellOps, true}};
+    bench::print_floor("whole cycle, " + std::to_string(n) + (n > 1 ? " positions" : " position"),
+                       get("BM_Cycle", n).median, work, 150, machine);
+  }
 }
 
 }  // namespace

@@ -14,7 +14,8 @@
 // Arg 0: map known (obstacles the map lacks still come from the scans);
 // arg 1: map built from the scans. A table of medians and 95th percentiles
 // follows the benchmarks (the targets: a median <= 0.5 ms for the circle robot
-// and <= 1 ms for the Jackal; before those, 1 ms and 2 ms with the map built from scans).
+// and <= 1 ms for the Jackal; before those, 1 ms and 2 ms with the map built from scans),
+// then each median next to its arithmetic floor (bench_floor.hpp).
 //
 //   build/cmake/cpp/bench/bench_navigator      (about 10 s)
 #include <benchmark/benchmark.h>
@@ -28,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_floor.hpp"
 #include "bench_maps.hpp"
 #include "fgdwa/navigator.hpp"
 #include "fgdwa/perception.hpp"
@@ -136,6 +138,10 @@ std::map<std::string, std::vector<double>>& samples() {
 struct Stages {
   double tracking = 0, map = 0, global = 0, perception = 0, plan = 0;
   int replans = 0;
+  // For the floor: the cycles, and over those that planned, the samples and
+  // the admissible ones; a rollout's poses, a pose's bound, the beams.
+  double cycles = 0, samples = 0, admissible = 0;
+  double steps = 0, bound_ops = 0, beams = 0;
 };
 std::map<std::string, Stages>& stages() {
   static std::map<std::string, Stages> all;
@@ -168,7 +174,16 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
     sum.plan += r.times.plan;
     sum.replans += r.path_version != path_version;
     path_version = r.path_version;
+    ++sum.cycles;
+    if (r.planned) {
+      sum.samples += static_cast<double>(loop.navigator->plan_result().samples.size());
+      sum.admissible += loop.navigator->plan_result().admissible_count();
+    }
   }
+  sum.steps = loop.preset.params.n_steps();
+  sum.bound_ops = loop.footprint.is_circle() ? bench::kTableBoundOps
+                                             : static_cast<double>(loop.footprint.cover().size()) * bench::kCoverDiscOps;
+  sum.beams = loop.lidar.beams;
 }
 
 BENCHMARK_CAPTURE(BM_NavigatorStep, circle, std::string("circle"))->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMicrosecond)->Iterations(3000);
@@ -198,6 +213,24 @@ int main(int argc, char** argv) {
                 1e3 * fgdwa::percentile(times, 0.5), 1e3 * fgdwa::percentile(times, 0.95),
                 1e3 * *std::max_element(times.begin(), times.end()), 1e3 * s.tracking / n, 1e3 * s.map / n,
                 1e3 * s.global / n, 1e3 * s.perception / n, 1e3 * s.plan / n, s.replans);
+  }
+  // The floor counts a cycle's planning (every rollout stepped and bounded,
+  // the DTW of the admissible ones) and the scan's beams marked in the map:
+  // the means over the cycles. Tracking, the map's ray tracing and its field
+  // are left out.
+  const fgdwa::bench::Machine machine = fgdwa::bench::measured_machine();
+  fgdwa::bench::print_floor_header(machine);
+  for (const auto& [name, times] : fgdwa::samples()) {
+    if (times.empty()) continue;
+    const fgdwa::Stages& s = fgdwa::stages()[name];
+    const std::vector<fgdwa::bench::Work> work = {
+        {"poses", s.samples / s.cycles * s.steps, fgdwa::bench::kPoseStepOps + s.bound_ops + fgdwa::bench::kPoseTestOps,
+         false},
+        {"DTW cells", s.admissible / s.cycles * s.steps * s.steps, fgdwa::bench::kDtwCellOps, true},
+        {"beams", s.beams, fgdwa::bench::kBeamOps, false}};
+    const bool circle = name.rfind("circle", 0) == 0;
+    fgdwa::bench::print_floor("Navigator::step, " + name, 1e6 * fgdwa::percentile(times, 0.5), work,
+                              circle ? 500 : 1000, machine);
   }
   return 0;
 }

@@ -14,12 +14,15 @@
 //   the targets: the field variant with the circle <= 30 us, the Jackal's
 //   rectangle <= 300 us, the PythonRobotics case <= 150 us; the Jackal's
 //   rectangle costs more, its exact clearance being an outline's, not a point's)
+// A table of those figures next to their arithmetic floor follows (bench_floor.hpp).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "fgdwa/clearance.hpp"
@@ -27,6 +30,7 @@
 #include "fgdwa/grid.hpp"
 #include "fgdwa/planner.hpp"
 #include "fgdwa/presets.hpp"
+#include "bench_floor.hpp"
 #include "bench_maps.hpp"
 
 namespace {
@@ -68,8 +72,24 @@ struct Scene {
   }
 };
 
+// Per benchmark (its name with its argument), the work of one cycle, for the floor.
+std::map<std::string, std::vector<bench::Work>>& cycle_work() {
+  static std::map<std::string, std::vector<bench::Work>> all;
+  return all;
+}
+
+// A cycle's work: every sample's rollout stepped and bounded pose by pose,
+// a circle from one table bound, a polygon from its cover discs'.
+std::vector<bench::Work> rollout_work(const LocalPlanner& planner) {
+  const double poses = static_cast<double>(planner.last_result().samples.size()) * planner.params().n_steps();
+  const Footprint& footprint = planner.footprint();
+  const double bound = footprint.is_circle() ? bench::kTableBoundOps
+                                             : static_cast<double>(footprint.cover().size()) * bench::kCoverDiscOps;
+  return {bench::Work{"poses", poses, bench::kPoseStepOps + bound + bench::kPoseTestOps}};
+}
+
 // Plans from the first `starts` of the seeded starts in turn.
-void plan_cycles(benchmark::State& bench, Scene& scene, const ClearanceSource& world) {
+void plan_cycles(benchmark::State& bench, const std::string& name, Scene& scene, const ClearanceSource& world) {
   const std::size_t starts = static_cast<std::size_t>(bench.range(0));
   std::size_t i = 0, admissible = 0, cycles = 0;
   for (auto _ : bench) {
@@ -81,12 +101,13 @@ void plan_cycles(benchmark::State& bench, Scene& scene, const ClearanceSource& w
   }
   bench.counters["samples"] = static_cast<double>(scene.planner.last_result().samples.size());
   bench.counters["admissible"] = static_cast<double>(admissible) / static_cast<double>(cycles);
+  cycle_work()[name + "/" + std::to_string(bench.range(0))] = rollout_work(scene.planner);
 }
 
 void BM_PlanFieldClearance(benchmark::State& bench) {
   Scene scene;
   const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
-  plan_cycles(bench, scene, world);
+  plan_cycles(bench, "BM_PlanFieldClearance", scene, world);
 }
 
 // The same cycle for a rectangle: the Jackal's 0.42 m x 0.33 m (robot preset
@@ -94,21 +115,21 @@ void BM_PlanFieldClearance(benchmark::State& bench) {
 void BM_PlanFieldClearanceJackal(benchmark::State& bench) {
   Scene scene(robot_preset("jackal").footprint);
   const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
-  plan_cycles(bench, scene, world);
+  plan_cycles(bench, "BM_PlanFieldClearanceJackal", scene, world);
 }
 
 // A circle near the map's edge, its rollouts leaving the grid.
 void BM_PlanFieldClearanceAtEdge(benchmark::State& bench) {
   Scene scene(Footprint::circle(0.25), true);
   const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
-  plan_cycles(bench, scene, world);
+  plan_cycles(bench, "BM_PlanFieldClearanceAtEdge", scene, world);
 }
 
 // The Jackal near the map's edge, its rollouts leaving the grid.
 void BM_PlanFieldClearanceJackalAtEdge(benchmark::State& bench) {
   Scene scene(robot_preset("jackal").footprint, true);
   const FieldClearance world(std::make_shared<const DistanceField>(scene.grid));
-  plan_cycles(bench, scene, world);
+  plan_cycles(bench, "BM_PlanFieldClearanceJackalAtEdge", scene, world);
 }
 
 // The same starts at the edge with the map padded by 4 m of free cells on
@@ -128,19 +149,19 @@ DistanceField padded_field(const OccupancyGrid& grid, double margin) {
 void BM_PlanFieldClearanceAtEdgePadded(benchmark::State& bench) {
   Scene scene(Footprint::circle(0.25), true);
   const FieldClearance world(std::make_shared<const DistanceField>(padded_field(scene.grid, 4.0)));
-  plan_cycles(bench, scene, world);
+  plan_cycles(bench, "BM_PlanFieldClearanceAtEdgePadded", scene, world);
 }
 
 void BM_PlanFieldClearanceJackalAtEdgePadded(benchmark::State& bench) {
   Scene scene(robot_preset("jackal").footprint, true);
   const FieldClearance world(std::make_shared<const DistanceField>(padded_field(scene.grid, 4.0)));
-  plan_cycles(bench, scene, world);
+  plan_cycles(bench, "BM_PlanFieldClearanceJackalAtEdgePadded", scene, world);
 }
 
 void BM_PlanCollisionWorld(benchmark::State& bench) {
   Scene scene;
   const CollisionWorld world(scene.grid);
-  plan_cycles(bench, scene, world);
+  plan_cycles(bench, "BM_PlanCollisionWorld", scene, world);
 }
 
 // PythonRobotics' DWA example (PathPlanning/DynamicWindowApproach, the peer
@@ -196,7 +217,7 @@ struct PeerScene {
   }
 };
 
-void plan_peer(benchmark::State& bench, const ClearanceSource& world) {
+void plan_peer(benchmark::State& bench, const std::string& name, const ClearanceSource& world) {
   static const PeerScene scene;
   LocalPlanner planner = scene.make_planner();
   std::size_t i = 0;
@@ -206,16 +227,21 @@ void plan_peer(benchmark::State& bench, const ClearanceSource& world) {
   }
   bench.counters["samples"] = static_cast<double>(planner.last_result().samples.size());
   bench.counters["cycles"] = static_cast<double>(scene.states.size());
+  // Against the points one by one, with one square root per pose (all radii equal).
+  const double poses = static_cast<double>(planner.last_result().samples.size()) * planner.params().n_steps();
+  cycle_work()[name] = {bench::Work{
+      "poses", poses,
+      bench::kPoseStepOps + static_cast<double>(scene.points.size()) * bench::kPointDistanceOps + 1 + bench::kPoseTestOps}};
 }
 
 void BM_PeerPointObstacles(benchmark::State& bench) {
   const PeerScene scene;
-  plan_peer(bench, FieldClearance(nullptr, scene.points));
+  plan_peer(bench, "BM_PeerPointObstacles", FieldClearance(nullptr, scene.points));
 }
 
 void BM_PeerRasterised(benchmark::State& bench) {
   const PeerScene scene;
-  plan_peer(bench, FieldClearance(std::make_shared<const DistanceField>(scene.rasterised())));
+  plan_peer(bench, "BM_PeerRasterised", FieldClearance(std::make_shared<const DistanceField>(scene.rasterised())));
 }
 
 // Building the clearance sources is a per-map cost, not a per-cycle one.
@@ -263,6 +289,48 @@ BENCHMARK(BM_BuildDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)
 BENCHMARK(BM_UpdateDistanceField)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 BENCHMARK(BM_BuildCollisionWorld)->Unit(benchmark::kMicrosecond)->Repetitions(10)->ReportAggregatesOnly(true);
 
+// Keeps every benchmark's median (microseconds) for the floor table.
+class MedianReporter : public benchmark::ConsoleReporter {
+ public:
+  std::map<std::string, double> medians;  // by the run's name without its aggregate
+
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& run : runs)
+      if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median")
+        medians[run.run_name.function_name + (run.run_name.args.empty() ? "" : "/" + run.run_name.args)] =
+            run.GetAdjustedRealTime();
+    ConsoleReporter::ReportRuns(runs);
+  }
+};
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  MedianReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  const struct {
+    const char* figure;
+    std::string run;  // the benchmark and its argument
+    double target_us;
+  } figures[] = {
+      {"classic DWA, circle, 1 start", "BM_PlanFieldClearance/1", 30},
+      {"classic DWA, circle, 32 starts", "BM_PlanFieldClearance/32", 30},
+      {"Jackal rectangle, 1 start", "BM_PlanFieldClearanceJackal/1", 300},
+      {"Jackal rectangle, 32 starts", "BM_PlanFieldClearanceJackal/32", 300},
+      {"PythonRobotics case, points", "BM_PeerPointObstacles", 150},
+  };
+  const bench::Machine machine = bench::measured_machine();
+  bool header = false;
+  for (const auto& f : figures) {
+    const auto median = reporter.medians.find(f.run);
+    const auto work = cycle_work().find(f.run);
+    if (median == reporter.medians.end() || work == cycle_work().end()) continue;
+    if (!header) bench::print_floor_header(machine);
+    header = true;
+    bench::print_floor(f.figure, median->second, work->second, f.target_us, machine);
+  }
+  return 0;
+}
