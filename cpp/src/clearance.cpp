@@ -426,26 +426,55 @@ namespace {
 // moving_disc_clearance() without the checks, for callers that made them.
 double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose,
                                        double t) {
-  double best = std::numeric_limits<double>::infinity();
-  double c = std::numeric_limits<double>::quiet_NaN(), s = 0.0;  // the heading's, once a disc needs them
-  for (const Disc& disc : discs) {
-    if (!disc.moves()) continue;
-    const Vec2 centre = disc.center_at(t);
-    const double radius = disc.radius_at(t);
-    Vec2 q = centre - pose.position();
-    const double gap = q.norm();
-    // The circumscribed circle settles the far ones, once there is a best to beat.
-    if (best < std::numeric_limits<double>::infinity() && gap - radius - footprint.radius() >= best) continue;
-    if (footprint.is_circle()) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double best = kInf;
+  if (footprint.is_circle()) {
+    for (const Disc& disc : discs) {
+      if (!disc.moves()) continue;
+      const double radius = disc.radius_at(t);
+      const double gap = (disc.center_at(t) - pose.position()).norm();
+      // The circumscribed circle settles the far ones, once there is a best to beat.
+      if (best < kInf && gap - radius - footprint.radius() >= best) continue;
       // As signed_distance_in_frame(q) would give it, from the norm already taken.
       best = std::min(best, (gap - footprint.radius()) - radius);
-      continue;
     }
-    // In the robot's frame.
-    if (std::isnan(c)) heading_cos_sin(pose.theta, c, s);
-    q = Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
-    best = std::min(best, footprint.signed_distance_in_frame(q) - radius);
+    return best;
   }
+  // A polygon: the disc nearest by the circumscribed circle is measured first,
+  // so that its clearance settles the others by that circle alone (taken in
+  // turn, the first disc was measured wherever it lay). The least is the same
+  // whichever order the measured ones come in.
+  struct Near {
+    Vec2 q;  // the centre from the pose
+    double radius, low;  // the disc's radius at t; the circumscribed circle's bound
+  };
+  constexpr std::size_t kOnStack = 16;
+  Near on_stack[kOnStack];
+  std::vector<Near> spilled;
+  Near* near = on_stack;
+  if (discs.size() > kOnStack) {
+    spilled.resize(discs.size());
+    near = spilled.data();
+  }
+  std::size_t count = 0, nearest = 0;
+  for (const Disc& disc : discs) {
+    if (!disc.moves()) continue;
+    const Vec2 q = disc.center_at(t) - pose.position();
+    const double radius = disc.radius_at(t);
+    near[count] = Near{q, radius, q.norm() - radius - footprint.radius()};
+    if (near[count].low < near[nearest].low) nearest = count;
+    ++count;
+  }
+  double c = 0.0, s = 0.0;
+  if (count > 0) heading_cos_sin(pose.theta, c, s);
+  const auto measure = [&](const Near& n) {
+    // In the robot's frame.
+    const Vec2 q(c * n.q.x() + s * n.q.y(), -s * n.q.x() + c * n.q.y());
+    best = std::min(best, footprint.signed_distance_in_frame(q) - n.radius);
+  };
+  if (count > 0) measure(near[nearest]);
+  for (std::size_t j = 0; j < count; ++j)
+    if (j != nearest && near[j].low < best) measure(near[j]);
   return best;
 }
 }  // namespace

@@ -426,5 +426,37 @@ TEST(FieldClearance, StillAndMovingDiscsGiveThePlainMinimumOverEveryDisc) {
   }
 }
 
+// A polygon against many movers: the nearest by the circumscribed circle is
+// measured first and settles the others; the result is the least of each
+// disc's clearance alone, bit for bit, with the discs in any order and more
+// of them than fit on the stack.
+TEST(FieldClearance, MovingDiscsGiveTheLeastOfEachAloneBitForBit) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-4.0, 4.0), radius(0.0, 0.5), speed(-1.0, 1.0), when(0.0, 3.0);
+  const std::vector<Footprint> shapes = {
+      Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}}),
+      Footprint::polygon({{-0.2, -0.2}, {0.4, 0.0}, {-0.2, 0.2}})};
+  for (int world = 0; world < 60; ++world) {
+    std::vector<Disc> discs;
+    for (int j = 0; j < 1 + world % 30; ++j) {
+      Disc d{Vec2(u(rng), u(rng)), radius(rng), Vec2(speed(rng), speed(rng))};
+      if (j % 3 == 2) d.growth = 0.1;
+      if (j % 5 == 4) d.velocity = Vec2::Zero();  // still ones are not movers
+      discs.push_back(d);
+    }
+    std::vector<Disc> reversed(discs.rbegin(), discs.rend());
+    for (int trial = 0; trial < 50; ++trial) {
+      const Pose2 pose{u(rng), u(rng), M_PI * u(rng) / 4.0};
+      const double t = when(rng);
+      for (const Footprint& fp : shapes) {
+        double alone = std::numeric_limits<double>::infinity();
+        for (const Disc& d : discs) alone = std::min(alone, moving_disc_clearance({d}, fp, pose, t));
+        EXPECT_EQ(moving_disc_clearance(discs, fp, pose, t), alone);
+        EXPECT_EQ(moving_disc_clearance(reversed, fp, pose, t), alone);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fgdwa
