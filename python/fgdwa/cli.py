@@ -92,7 +92,7 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 
 def cmd_experiment(args: argparse.Namespace, argv) -> int:
-    from fgdwa.experiments import EXPERIMENTS, run_experiments
+    from fgdwa.experiments import EXPERIMENTS, run_experiments, run_tasks
     from fgdwa.report import save_experiment, terminal_report, write_results
 
     names = list(EXPERIMENTS) if args.name == "all" else [args.name]
@@ -106,23 +106,34 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
                               scheduler=args.scheduler, workers=args.workers, progress=not args.no_progress,
                               options=options)
     trials_wall = time.perf_counter() - tic
-    for result in results:
-        paths = {}
-        if not args.no_figures:
-            from fgdwa.figures import experiment_figures
+    drawn = [{} for _ in results]
+    surfaces = None
+    if not args.no_figures:
+        from fgdwa.figures import CONTROL_SURFACES, FigureJob, draw_figures
 
-            directory = out / result.spec.name
-            directory.mkdir(parents=True, exist_ok=True)
-            paths = experiment_figures(result, directory)
+        jobs = []
+        for result in results:
+            (out / result.spec.name).mkdir(parents=True, exist_ok=True)
+            jobs.append(FigureJob(str(out / result.spec.name), result))
+        if any("fgdwa" in r.spec.planners for r in results):
+            out.mkdir(parents=True, exist_ok=True)
+            jobs.append(FigureJob(str(out)))
+        # Drawn side by side by the local pool; a dask cluster would take longer to start than the figures take.
+        # The box plots' p-values and the reports both need scipy's tests: loaded here (0.7 s) before the
+        # pool starts, so that its forked workers share them instead of each loading them again.
+        import scipy.stats  # noqa: F401
+
+        figures_executor = "local" if args.executor == "local" else "serial"
+        figures = run_tasks(jobs, executor=figures_executor, workers=args.workers, progress=not args.no_progress,
+                            runner=draw_figures, unit="figures")
+        drawn = figures[:len(results)]
+        if len(figures) > len(results):
+            surfaces = figures[-1][CONTROL_SURFACES]
+    for result, paths in zip(results, drawn):
         d = save_experiment(result, out, paths)
         print()
         print(terminal_report(d))
         print(f"files: {out / result.spec.name}/")
-    surfaces = None
-    if not args.no_figures and any("fgdwa" in r.spec.planners for r in results):
-        from fgdwa.figures import control_surfaces_figure
-
-        surfaces = control_surfaces_figure(out / "control_surfaces.png")
     written = []
     if len(names) > 1:
         written.append(write_results(out, names, command, out / "report.md", surfaces))

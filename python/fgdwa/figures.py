@@ -4,7 +4,9 @@ the fuzzy weights over time (the paper's Figure 20) and the control surfaces."""
 from __future__ import annotations
 
 import textwrap
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Optional
 
 import matplotlib
 
@@ -169,3 +171,22 @@ def control_surfaces_figure(path: Path) -> Path:
     from fgdwa.fuzzy import plot_control_surfaces
 
     return _save(plot_control_surfaces("paper", None, points=41), path)
+
+
+CONTROL_SURFACES = "control surfaces"
+
+
+@dataclass(frozen=True)
+class FigureJob:
+    """Figures one worker draws: an experiment's into ``directory`` (which exists), or without a
+    result the fuzzy controller's control surfaces as ``directory``/control_surfaces.png."""
+
+    directory: str
+    result: Optional[ExperimentResult] = None
+
+
+def draw_figures(job: FigureJob) -> dict:
+    """A job's figures, as {caption: path} ({CONTROL_SURFACES: path} for the surfaces)."""
+    if job.result is None:
+        return {CONTROL_SURFACES: control_surfaces_figure(Path(job.directory) / "control_surfaces.png")}
+    return experiment_figures(job.result, Path(job.directory))
