@@ -443,38 +443,30 @@ double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Foo
   // A polygon: the disc nearest by the circumscribed circle is measured first,
   // so that its clearance settles the others by that circle alone (taken in
   // turn, the first disc was measured wherever it lay). The least is the same
-  // whichever order the measured ones come in.
-  struct Near {
-    Vec2 q;  // the centre from the pose
-    double radius, low;  // the disc's radius at t; the circumscribed circle's bound
+  // whichever order the measured ones come in. Nothing is kept between the
+  // passes: a centre and a norm again cost less than storing them.
+  const auto circumscribed = [&](const Disc& disc) {
+    return (disc.center_at(t) - pose.position()).norm() - disc.radius_at(t) - footprint.radius();
   };
-  constexpr std::size_t kOnStack = 16;
-  Near on_stack[kOnStack];
-  std::vector<Near> spilled;
-  Near* near = on_stack;
-  if (discs.size() > kOnStack) {
-    spilled.resize(discs.size());
-    near = spilled.data();
-  }
-  std::size_t count = 0, nearest = 0;
+  const Disc* nearest = nullptr;
+  double nearest_low = kInf;
   for (const Disc& disc : discs) {
     if (!disc.moves()) continue;
-    const Vec2 q = disc.center_at(t) - pose.position();
-    const double radius = disc.radius_at(t);
-    near[count] = Near{q, radius, q.norm() - radius - footprint.radius()};
-    if (near[count].low < near[nearest].low) nearest = count;
-    ++count;
+    const double low = circumscribed(disc);
+    if (!nearest || low < nearest_low) nearest = &disc, nearest_low = low;
   }
+  if (!nearest) return best;
   double c = 0.0, s = 0.0;
-  if (count > 0) heading_cos_sin(pose.theta, c, s);
-  const auto measure = [&](const Near& n) {
+  heading_cos_sin(pose.theta, c, s);
+  const auto measure = [&](const Disc& disc) {
     // In the robot's frame.
-    const Vec2 q(c * n.q.x() + s * n.q.y(), -s * n.q.x() + c * n.q.y());
-    best = std::min(best, footprint.signed_distance_in_frame(q) - n.radius);
+    const Vec2 q = disc.center_at(t) - pose.position();
+    best = std::min(best, footprint.signed_distance_in_frame(Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y())) -
+                              disc.radius_at(t));
   };
-  if (count > 0) measure(near[nearest]);
-  for (std::size_t j = 0; j < count; ++j)
-    if (j != nearest && near[j].low < best) measure(near[j]);
+  measure(*nearest);
+  for (const Disc& disc : discs)
+    if (disc.moves() && &disc != nearest && circumscribed(disc) < best) measure(disc);
   return best;
 }
 }  // namespace
