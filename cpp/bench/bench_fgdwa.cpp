@@ -506,7 +506,7 @@ void print_summary(const SummaryReporter& reporter) {
       admissible += static_cast<double>(s.positions[static_cast<std::size_t>(i)].admissible.size());
     }
     const std::vector<bench::Work> work = {
-        {"poses", samples / n * steps, bench::kPoseStepOps + bench::kTableBoundOps + bench::kPoseTestOps, false},
+        {"poses", samples / n * steps, bench::pose_operations(s.footprint), false},
         {"DTW cells", admissible / n * steps * steps, bench::kDtwCellOps, true}};
     bench::print_floor("whole cycle, " + std::to_string(n) + (n > 1 ? " positions" : " position"),
                        get("BM_Cycle", n).median, work, 150, machine);

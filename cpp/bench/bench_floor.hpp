@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "fgdwa/dtw.hpp"
+#include "fgdwa/robot.hpp"
 
 namespace fgdwa {
 namespace bench {
@@ -47,6 +48,14 @@ inline constexpr double kDtwCellOps = 9;
 // A lidar beam marked in the map: its end placed (two multiplications and two
 // additions) and the end's cell (as a table bound's index).
 inline constexpr double kBeamOps = 10;
+
+// A rollout's pose: its step, its bound (a circle's from one table look-up, a
+// polygon's from its cover discs') and the planner's tests.
+inline double pose_operations(const Footprint& footprint) {
+  const double bound =
+      footprint.is_circle() ? kTableBoundOps : static_cast<double>(footprint.cover().size()) * kCoverDiscOps;
+  return kPoseStepOps + bound + kPoseTestOps;
+}
 
 // One kind of work in a cycle: how many items, and the operations of each.
 struct Work {

@@ -139,9 +139,9 @@ struct Stages {
   double tracking = 0, map = 0, global = 0, perception = 0, plan = 0;
   int replans = 0;
   // For the floor: the cycles, and over those that planned, the samples and
-  // the admissible ones; a rollout's poses, a pose's bound, the beams.
+  // the admissible ones; a rollout's poses, a pose's operations, the beams.
   double cycles = 0, samples = 0, admissible = 0;
-  double steps = 0, bound_ops = 0, beams = 0;
+  double steps = 0, pose_ops = 0, beams = 0;
 };
 std::map<std::string, Stages>& stages() {
   static std::map<std::string, Stages> all;
@@ -181,8 +181,7 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
     }
   }
   sum.steps = loop.preset.params.n_steps();
-  sum.bound_ops = loop.footprint.is_circle() ? bench::kTableBoundOps
-                                             : static_cast<double>(loop.footprint.cover().size()) * bench::kCoverDiscOps;
+  sum.pose_ops = bench::pose_operations(loop.footprint);
   sum.beams = loop.lidar.beams;
 }
 
@@ -224,8 +223,7 @@ int main(int argc, char** argv) {
     if (times.empty()) continue;
     const fgdwa::Stages& s = fgdwa::stages()[name];
     const std::vector<fgdwa::bench::Work> work = {
-        {"poses", s.samples / s.cycles * s.steps, fgdwa::bench::kPoseStepOps + s.bound_ops + fgdwa::bench::kPoseTestOps,
-         false},
+        {"poses", s.samples / s.cycles * s.steps, s.pose_ops, false},
         {"DTW cells", s.admissible / s.cycles * s.steps * s.steps, fgdwa::bench::kDtwCellOps, true},
         {"beams", s.beams, fgdwa::bench::kBeamOps, false}};
     const bool circle = name.rfind("circle", 0) == 0;

@@ -78,14 +78,10 @@ std::map<std::string, std::vector<bench::Work>>& cycle_work() {
   return all;
 }
 
-// A cycle's work: every sample's rollout stepped and bounded pose by pose,
-// a circle from one table bound, a polygon from its cover discs'.
+// A cycle's work: every sample's rollout stepped and bounded pose by pose.
 std::vector<bench::Work> rollout_work(const LocalPlanner& planner) {
   const double poses = static_cast<double>(planner.last_result().samples.size()) * planner.params().n_steps();
-  const Footprint& footprint = planner.footprint();
-  const double bound = footprint.is_circle() ? bench::kTableBoundOps
-                                             : static_cast<double>(footprint.cover().size()) * bench::kCoverDiscOps;
-  return {bench::Work{"poses", poses, bench::kPoseStepOps + bound + bench::kPoseTestOps}};
+  return {bench::Work{"poses", poses, bench::pose_operations(planner.footprint())}};
 }
 
 // Plans from the first `starts` of the seeded starts in turn.
