@@ -125,7 +125,7 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
 
         figures_executor = "local" if args.executor == "local" else "serial"
         figures = run_tasks(jobs, executor=figures_executor, workers=args.workers, progress=not args.no_progress,
-                            runner=draw_figures, unit="figures")
+                            runner=draw_figures, label="figures")
         drawn = figures[:len(results)]
         if len(figures) > len(results):
             surfaces = figures[-1][CONTROL_SURFACES]

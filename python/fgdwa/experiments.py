@@ -243,15 +243,16 @@ def trial_tasks(spec: ExperimentSpec, trials: int, base_seed: int = 0, options: 
             for i in range(int(trials)) for planner in spec.planners]
 
 
-def run_tasks(tasks: Sequence[TrialTask], executor: str = "local", scheduler: Optional[str] = None,
+def run_tasks(tasks: Sequence, executor: str = "local", scheduler: Optional[str] = None,
               workers: int = DEFAULT_WORKERS, progress: bool = True, runner: Callable = run_trial,
-              unit: str = "trials") -> list:
+              label: str = "trials") -> list:
     """Run the tasks and return their records in the tasks' order.
 
     executor "local": a ProcessPoolExecutor of ``workers`` processes; "dask": a
     dask.distributed Client at ``scheduler``, or a LocalCluster of ``workers``
     single-threaded processes when no address is given; "serial": one after
-    another in this process. A progress bar (tqdm, on stderr) counts the tasks as ``unit``."""
+    another in this process. A progress bar (tqdm, on stderr) labelled ``label`` counts the tasks
+    (TrialTask by default, or whatever ``runner`` takes)."""
     if executor not in EXECUTORS:
         raise FgdwaError(f"executor = {executor!r}: expected one of {', '.join(EXECUTORS)}")
     if scheduler is not None and executor != "dask":
@@ -264,7 +265,7 @@ def run_tasks(tasks: Sequence[TrialTask], executor: str = "local", scheduler: Op
     from tqdm import tqdm
 
     results = [None] * len(tasks)
-    with tqdm(total=len(tasks), desc=unit, unit="run", disable=not progress, leave=False,
+    with tqdm(total=len(tasks), desc=label, unit="run", disable=not progress, leave=False,
               dynamic_ncols=True) as bar:
         if executor == "serial":
             for i, task in enumerate(tasks):
