@@ -356,55 +356,62 @@ void ClearanceSource::clearance_lower_bounds(const Footprint& footprint, const T
 }
 
 void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const {
+  rollouts_lower_bounds(footprint, &poses, 1, poses.size(), dt, out);
+}
+
+void FieldClearance::rollouts_lower_bounds(const Footprint& footprint, const Trajectory* rollouts, std::size_t count,
+                                           std::size_t steps, double dt, double* out) const {
   const double r = footprint.radius();
-  const std::size_t n = poses.size();
-  // Positions column by column, so that lanes carry poses; one thread-local
-  // look-up per call, and the positions filled once for the polygon's kernel
-  // and the discs' alike.
+  const std::size_t n = count * steps;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // Positions (and a polygon's headings) column by column, every rollout's
+  // poses in one run, so that lanes carry poses across rollouts; one
+  // thread-local look-up per call, the columns filled once for every kernel.
   struct Columns {
-    std::vector<double> x, y;
+    std::vector<double> x, y, c, s;
   };
   thread_local Columns columns;
   Columns& in = columns;
-  const bool polygon_kernel = !footprint.is_circle() && field_;
-  if (polygon_kernel || !static_discs_.x.empty()) {
-    in.x.resize(n);
-    in.y.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      in.x[k] = poses[k].x;
-      in.y[k] = poses[k].y;
+  in.x.resize(n);
+  in.y.resize(n);
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t k = 0; k < steps; ++k) {
+      in.x[i * steps + k] = rollouts[i][k].x;
+      in.y[i * steps + k] = rollouts[i][k].y;
     }
-  }
   if (!footprint.is_circle()) {
-    const HeadingColumns heading = trajectory_cos_sin(poses);
+    in.c.resize(n);
+    in.s.resize(n);
+    for (std::size_t i = 0; i < count; ++i) {
+      const HeadingColumns heading = trajectory_cos_sin(rollouts[i]);
+      std::copy(heading.c, heading.c + steps, in.c.begin() + static_cast<std::ptrdiff_t>(i * steps));
+      std::copy(heading.s, heading.s + steps, in.s.begin() + static_cast<std::ptrdiff_t>(i * steps));
+    }
     // Every point of the polygon lies in one of its cover discs: the map's
     // bounds at the discs, for all poses at once.
-    if (polygon_kernel) {
+    if (field_) {
       const std::vector<Footprint::CoverDisc>& cover = footprint.cover();
-      detail::cover_lower_bounds(in.x.data(), in.y.data(), heading.c, heading.s, n, cover.data(), cover.size(),
+      detail::cover_lower_bounds(in.x.data(), in.y.data(), in.c.data(), in.s.data(), n, cover.data(), cover.size(),
                                  field_->lower_bounds(), out);
     } else {
-      std::fill(out, out + n, std::numeric_limits<double>::infinity());
+      std::fill(out, out + n, kInf);
     }
     // The sensed points are mostly far: their circumscribed circle's bound,
     // one look-up, then leaves the least unchanged.
     if (sensed_) {
       const DistanceField::LowerBounds bound = sensed_->lower_bounds();
       for (std::size_t k = 0; k < n; ++k)
-        if (bound(poses[k].x, poses[k].y) - r < out[k])
-          out[k] = std::min(out[k], cover_lower_bound(bound, footprint, Placed(poses[k], heading.c[k], heading.s[k])));
+        if (bound(in.x[k], in.y[k]) - r < out[k])
+          out[k] = std::min(out[k], cover_lower_bound(bound, footprint,
+                                                      Placed(rollouts[k / steps][k % steps], in.c[k], in.s[k])));
     }
   } else {
     // One field at a time in tight loops: this runs for every pose of every rollout.
-    if (field_) {
-      const DistanceField::LowerBounds bound = field_->lower_bounds();
-      for (std::size_t k = 0; k < n; ++k) out[k] = bound(poses[k].x, poses[k].y) - r;
-    } else {
-      std::fill(out, out + n, std::numeric_limits<double>::infinity());
-    }
+    if (field_) detail::point_lower_bounds(in.x.data(), in.y.data(), n, field_->lower_bounds(), r, out);
+    else std::fill(out, out + n, kInf);
     if (sensed_) {
       const DistanceField::LowerBounds bound = sensed_->lower_bounds();
-      for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], bound(poses[k].x, poses[k].y) - r);
+      for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], bound(in.x[k], in.y[k]) - r);
     }
   }
   if (!static_discs_.x.empty()) {
@@ -412,9 +419,12 @@ void FieldClearance::lower_bounds(const Footprint& footprint, const Trajectory& 
     detail::lower_to_discs(in.x.data(), in.y.data(), n, d.x.data(), d.y.data(), d.radius.data(), d.x.size(), r, out);
   }
   for (const Disc& disc : moving_)
-    for (std::size_t k = 0; k < n; ++k)
-      out[k] = std::min(out[k], ((disc.center_at(static_cast<double>(k + 1) * dt) - poses[k].position()).norm() - r) -
-                                    disc.radius_at(static_cast<double>(k + 1) * dt));
+    for (std::size_t i = 0; i < count; ++i)
+      for (std::size_t k = 0; k < steps; ++k) {
+        const double t = static_cast<double>(k + 1) * dt;
+        double& bound = out[i * steps + k];
+        bound = std::min(bound, ((disc.center_at(t) - rollouts[i][k].position()).norm() - r) - disc.radius_at(t));
+      }
 }
 
 bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {

@@ -1,7 +1,7 @@
 #pragma once
-// A polygon footprint's lower bounds from one field's table, vectorised
-// (cover_bounds_simd.cpp): its cover discs' at many poses, its outline's
-// samples' at one.
+// A footprint's lower bounds from one field's table, vectorised
+// (cover_bounds_simd.cpp): a circle's at many poses, a polygon's cover discs'
+// at many poses, its outline's samples' at one.
 #include <cstddef>
 
 #include "fgdwa/grid.hpp"
@@ -9,6 +9,11 @@
 
 namespace fgdwa {
 namespace detail {
+
+// out[k] = table(x[k], y[k]) - inflate, k < n: a circle's bounds at its
+// centres. The same bits as the table's operator() one point at a time.
+void point_lower_bounds(const double* x, const double* y, std::size_t n, const DistanceField::LowerBounds& table,
+                        double inflate, double* out);
 
 // out[k] = min over j of table(world point of cover[j]'s centre at pose k) -
 // cover[j].radius: the poses (x[k], y[k]) with their heading's cosine c[k] and

@@ -1,6 +1,7 @@
-// The table's lower bounds at a polygon's points: its cover discs at many
-// poses (lanes carry poses, the discs are the outer loop) and its outline's
-// samples at one (lanes carry samples). Compiled by Highway for every
+// The table's lower bounds at many points (a circle's centres, lanes carrying
+// poses), at a polygon's cover discs at many poses (lanes carry poses, the
+// discs are the outer loop) and at its outline's samples at one pose (lanes
+// carry samples). Compiled by Highway for every
 // instruction set and dispatched at run time like the batch DTW
 // (dtw_simd.cpp). The placing and the table's arithmetic run in vectors, the
 // table's 16-bit entries are gathered, and a vector with a lane off the table
@@ -53,6 +54,21 @@ HWY_INLINE hn::Vec<D> TableBounds(D d, hn::Vec<D> wx, hn::Vec<D> wy, const Dista
   hn::Store(wy, d, py);
   for (std::size_t l = 0; l < hn::Lanes(d); ++l) read[l] = table(px[l], py[l]);
   return hn::Load(d, read);
+}
+
+void PointLowerBounds(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y, std::size_t n,
+                      const DistanceField::LowerBounds& table, double inflate, double* HWY_RESTRICT out) {
+  const hn::ScalableTag<double> d;
+  const std::size_t lanes = hn::Lanes(d);
+  if (!table.pieces) {
+    std::fill(out, out + n, std::numeric_limits<double>::infinity());
+    return;
+  }
+  const auto R = hn::Set(d, inflate);
+  std::size_t k = 0;
+  for (; k + lanes <= n; k += lanes)
+    hn::StoreU(hn::Sub(TableBounds(d, hn::LoadU(d, x + k), hn::LoadU(d, y + k), table), R), d, out + k);
+  for (; k < n; ++k) out[k] = table(x[k], y[k]) - inflate;
 }
 
 void CoverLowerBounds(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y, const double* HWY_RESTRICT c,
@@ -120,8 +136,14 @@ HWY_AFTER_NAMESPACE();
 namespace fgdwa {
 namespace detail {
 
+HWY_EXPORT(PointLowerBounds);
 HWY_EXPORT(CoverLowerBounds);
 HWY_EXPORT(OutlineLowerBounds);
+
+void point_lower_bounds(const double* x, const double* y, std::size_t n, const DistanceField::LowerBounds& table,
+                        double inflate, double* out) {
+  HWY_DYNAMIC_DISPATCH(PointLowerBounds)(x, y, n, table, inflate, out);
+}
 
 void cover_lower_bounds(const double* x, const double* y, const double* c, const double* s, std::size_t n,
                         const Footprint::CoverDisc* cover, std::size_t m, const DistanceField::LowerBounds& table,

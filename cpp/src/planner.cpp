@@ -308,7 +308,8 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const double start_clearance = clearance_now - margin;
   const double obstacle_travel = fixed.obstacle_speed() * params_.dt;
   const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
-  bounds_.resize(static_cast<std::size_t>(n_steps_));
+  const std::size_t steps = static_cast<std::size_t>(n_steps_);
+  bounds_.resize(n * steps);
   exact_.resize(static_cast<std::size_t>(n_steps_));
   at_least_.resize(static_cast<std::size_t>(n_steps_));
   // A footprint already over grade-4 cells may still leave: only its centre is held to them then.
@@ -322,17 +323,18 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     headings_[j].assign(state.pose.theta, cos_start, sin_start, result_.samples[j].omega, params_.dt, n_steps_);
     rollouts_sharing(state.pose, j, n_omega);
   }
+  // Cheap lower bounds first, for every pose of every rollout at once; exact
+  // clearances only where a bound cannot settle contact or the minimum. The
+  // result is the same as evaluating every pose exactly.
+  fixed.rollouts_lower_bounds(footprint_, rollouts_.data(), n, steps, params_.dt, bounds_.data());
   for (std::size_t i = 0; i < n; ++i) {
     const Twist& cmd = result_.samples[i];
     const Trajectory& poses = rollouts_[i];
     // Every step of the rollout turns and drives alike.
     const detail::StepSweep step(footprint_, margin, cmd.omega * params_.dt, cmd.v * params_.dt, obstacle_travel);
-    // Cheap lower bounds first; exact clearances only where a bound cannot
-    // settle contact or the minimum. The result is the same as evaluating
-    // every pose exactly.
-    fixed.lower_bounds(footprint_, poses, params_.dt, bounds_.data());
+    const double* const bounds = bounds_.data() + i * steps;
     if (bounds_exact)
-      for (int k = 0; k < n_steps_; ++k) exact_[static_cast<std::size_t>(k)] = bounds_[static_cast<std::size_t>(k)] - margin;
+      for (int k = 0; k < n_steps_; ++k) exact_[static_cast<std::size_t>(k)] = bounds[static_cast<std::size_t>(k)] - margin;
     else
       std::fill(exact_.begin(), exact_.end(), std::numeric_limits<double>::quiet_NaN());
     std::fill(at_least_.begin(), at_least_.end(), -inf);
@@ -367,7 +369,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     if (start_clearance > 0.0) {
       double previous = start_clearance;
       while (settled < n_steps_) {
-        const double bound = bounds_[static_cast<std::size_t>(settled)] - margin;
+        const double bound = bounds[static_cast<std::size_t>(settled)] - margin;
         if (!step.clear_by_bounds(previous, bound)) break;
         previous = bound;
         ++settled;
@@ -375,8 +377,8 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     }
     for (int k = settled; k < n_steps_; ++k) {
       // Bounds and clearances count from the margin.
-      const double bound = bounds_[static_cast<std::size_t>(k)] - margin;
-      const double previous_bound = k == 0 ? start_clearance : bounds_[static_cast<std::size_t>(k - 1)] - margin;
+      const double bound = bounds[static_cast<std::size_t>(k)] - margin;
+      const double previous_bound = k == 0 ? start_clearance : bounds[static_cast<std::size_t>(k - 1)] - margin;
       const bool leaving_contact = k == 0 && start_clearance <= 0.0;
       if (bound > 0.0 && (leaving_contact || step.covered(previous_bound, bound)))
         continue;  // clear at pose k and on the way there
@@ -404,15 +406,15 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     // The smallest clearance over poses 0..last: start from the pose with the
     // smallest bound, then visit only poses whose bound is below the best so far.
     int first_guess = 0;
-    double lowest = bounds_[0];
+    double lowest = bounds[0];
     for (int k = 1; k <= last; ++k) {
-      const double b = bounds_[static_cast<std::size_t>(k)];
+      const double b = bounds[static_cast<std::size_t>(k)];
       first_guess = b < lowest ? k : first_guess;
       lowest = std::min(b, lowest);
     }
     double min_clearance = exact(first_guess);
     for (int k = 0; k <= last; ++k)
-      if (bounds_[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = below(k, min_clearance);
+      if (bounds[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = below(k, min_clearance);
     result_.min_clearance[i] = min_clearance + margin;
     result_.free_distance[i] = free_distance;
     RejectReason reason = detail::is_admissible_unchecked(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;

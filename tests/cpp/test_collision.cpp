@@ -318,6 +318,63 @@ TEST(FieldClearance, PolygonBoundsOfManyPosesAreThoseOfEachAlone) {
   for (std::size_t t = 1; t < clearances.size(); ++t) EXPECT_EQ(clearances[t], clearances[0]) << hwy::TargetName(targets[t]);
 }
 
+// The planner asks for every rollout's bounds at once (lanes carrying poses
+// across rollouts): they equal each rollout's asked alone, bit for bit, for
+// a circle and a polygon, from a map, sensed cells, still and moving discs,
+// on every instruction set the processor runs; pose k of every rollout is
+// (k + 1) dt ahead.
+struct AllRolloutsAtOnce : FieldClearance {
+  using FieldClearance::FieldClearance;
+  using FieldClearance::rollouts_lower_bounds;
+};
+
+TEST(FieldClearance, BoundsOfAllRolloutsAtOnceAreThoseOfEachAlone) {
+  const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
+  std::mt19937 rng(79);
+  const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.12);
+  const OccupancyGrid sensed = test::random_cells(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.01);
+  const std::vector<Disc> discs = {Disc{Vec2(2.0, 3.0), 0.0, Vec2::Zero()}, Disc{Vec2(4.0, 1.5), 0.3, Vec2::Zero()},
+                                   Disc{Vec2(1.0, 1.0), 0.25, Vec2(0.5, 0.2)}};
+  const AllRolloutsAtOnce mapped(std::make_shared<const DistanceField>(grid, 1.0));
+  AllRolloutsAtOnce with_all(std::make_shared<const DistanceField>(grid, 1.0), discs);
+  with_all.set_sensed(std::make_shared<const DistanceField>(sensed, 0.0));
+  const AllRolloutsAtOnce& everything = with_all;
+  const AllRolloutsAtOnce discs_alone(nullptr, discs);
+  // 37 rollouts of 23 poses (neither a multiple of any vector's lanes), some
+  // running off the grid.
+  std::uniform_real_distribution<double> x(-2.0, 8.0), y(-0.5, 7.5), heading(-M_PI, M_PI), v(0.0, 1.0), w(-1.0, 1.0);
+  std::vector<Trajectory> rollouts;
+  for (int i = 0; i < 37; ++i) rollouts.push_back(rollout(Pose2{x(rng), y(rng), heading(rng)}, Twist{v(rng), w(rng)}, 0.1, 23));
+  const std::size_t steps = 23;
+  for (int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    for (const AllRolloutsAtOnce* source : {&mapped, &everything, &discs_alone})
+      for (const Footprint& fp : {Footprint::circle(0.25), rectangle}) {
+        std::vector<double> at_once(rollouts.size() * steps, std::numeric_limits<double>::quiet_NaN());
+        source->rollouts_lower_bounds(fp, rollouts.data(), rollouts.size(), steps, 0.1, at_once.data());
+        std::size_t finite = 0;
+        for (std::size_t i = 0; i < rollouts.size(); ++i) {
+          std::vector<double> alone(steps);
+          source->clearance_lower_bounds(fp, rollouts[i], 0.1, alone.data());
+          for (std::size_t k = 0; k < steps; ++k) {
+            ASSERT_EQ(at_once[i * steps + k], alone[k]) << "rollout " << i << " pose " << k;
+            finite += std::isfinite(alone[k]);
+            // Without movers a pose's bound does not depend on its time: asked
+            // alone it takes the scalar look-up, not the vector one.
+            if (source == &mapped) {
+              double one = 0.0;
+              source->clearance_lower_bounds(fp, Trajectory{rollouts[i][k]}, 0.1, &one);
+              ASSERT_EQ(at_once[i * steps + k], one) << "rollout " << i << " pose " << k;
+            }
+          }
+        }
+        EXPECT_EQ(finite, at_once.size());
+      }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+}
+
 TEST(CollisionWorld, MovingDiscsMatchTheAnalyticDistance) {
   std::mt19937 rng(77);
   std::uniform_real_distribution<double> pos(-3.0, 3.0), vel(-1.0, 1.0), rad(0.0, 0.5), angle(-M_PI, M_PI),

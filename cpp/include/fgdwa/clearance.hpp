@@ -71,6 +71,14 @@ class ClearanceSource {
     (void)footprint, (void)dt;
     std::fill(out, out + poses.size(), -std::numeric_limits<double>::infinity());
   }
+  // lower_bounds() for `count` rollouts of `steps` poses each (pose k of a
+  // rollout predicted (k + 1) dt ahead), rollout i's into out[i * steps, ...).
+  // The planner asks for all of a cycle's at once, so that a source may
+  // look them up in vectors across rollouts; by default one rollout at a time.
+  virtual void rollouts_lower_bounds(const Footprint& footprint, const Trajectory* rollouts, std::size_t count,
+                                     std::size_t steps, double dt, double* out) const {
+    for (std::size_t i = 0; i < count; ++i) lower_bounds(footprint, rollouts[i], dt, out + i * steps);
+  }
   // clearance() without the checks, bit for bit where it is below `cutoff`;
   // elsewhere any value from cutoff up to the clearance. The planner often
   // needs to know only that a pose is at least so clear, which a source may
@@ -110,6 +118,8 @@ class FieldClearance : public ClearanceSource {
 
  protected:
   void lower_bounds(const Footprint& footprint, const Trajectory& poses, double dt, double* out) const override;
+  void rollouts_lower_bounds(const Footprint& footprint, const Trajectory* rollouts, std::size_t count,
+                             std::size_t steps, double dt, double* out) const override;
   double clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const override;
 
  private:
