@@ -350,6 +350,12 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       double& c = exact_[static_cast<std::size_t>(k)];
       double& reached = at_least_[static_cast<std::size_t>(k)];
       if (std::isnan(c) && reached < cutoff) {
+        // The bound may reach the cutoff already (the previous pose's exact
+        // clearance lowered the cutoff below what the bound was held to).
+        if (bounds[static_cast<std::size_t>(k)] - margin >= cutoff) {
+          reached = cutoff;
+          return cutoff;
+        }
         // A nanometre above the cutoff, so that a value the source stops at
         // still reaches the cutoff after the margin is taken off.
         const double raw_cutoff = cutoff + margin + 1e-9;
@@ -526,8 +532,11 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
         const double t = (k + 1) * params_.dt;
         const double c = world.moving_clearance(footprint_, pose, t);
         room = std::min(room, c);
+        // Only whether the fixed world's clearance reaches the margin
+        // matters: a source may settle that from its bounds (the same
+        // answer, clearance_below being exact below its cutoff).
         if (c - moving_margin <= half_step_motion(twist, world.obstacle_speed()) ||
-            fixed.clearance(footprint_, pose, t) - margin_ <= 0.0) {
+            fixed.clearance_below(footprint_, pose, t, margin_ + 1e-9) - margin_ <= 0.0) {
           contact = t;
           break;
         }
