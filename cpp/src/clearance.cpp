@@ -433,9 +433,10 @@ bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {
 }
 
 namespace {
-// moving_disc_clearance() without the checks, for callers that made them.
+// moving_disc_clearance() without the checks, for callers that made them;
+// bit for bit below `cutoff`, elsewhere a value from cutoff up to it.
 double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose,
-                                       double t) {
+                                       double t, double cutoff = std::numeric_limits<double>::infinity()) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   double best = kInf;
   if (footprint.is_circle()) {
@@ -466,6 +467,8 @@ double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Foo
     if (!nearest || low < nearest_low) nearest = &disc, nearest_low = low;
   }
   if (!nearest) return best;
+  // No disc comes within the cutoff: the circumscribed circle's clearance is all that is asked.
+  if (nearest_low >= cutoff) return nearest_low;
   double c = 0.0, s = 0.0;
   heading_cos_sin(pose.theta, c, s);
   const auto measure = [&](const Disc& disc) {
@@ -476,8 +479,10 @@ double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Foo
   };
   measure(*nearest);
   for (const Disc& disc : discs)
-    if (disc.moves() && &disc != nearest && circumscribed(disc) < best) measure(disc);
-  return best;
+    if (disc.moves() && &disc != nearest && circumscribed(disc) < std::min(best, cutoff)) measure(disc);
+  // At or above the cutoff, the discs passed over may hold a lower clearance,
+  // though none below the cutoff.
+  return std::min(best, cutoff);
 }
 }  // namespace
 
@@ -491,6 +496,11 @@ double FieldClearance::moving_clearance(const Footprint& footprint, const Pose2&
   detail::require_query_pose("pose", pose);
   detail::require_magnitude("t", t, limits::kMaxHorizon);
   return moving_disc_clearance_unchecked(moving_, footprint, pose, t);
+}
+
+double FieldClearance::moving_clearance_below(const Footprint& footprint, const Pose2& pose, double t,
+                                              double cutoff) const {
+  return moving_disc_clearance_unchecked(moving_, footprint, pose, t, cutoff);
 }
 
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {

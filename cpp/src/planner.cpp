@@ -308,6 +308,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   const double start_clearance = clearance_now - margin;
   const double obstacle_travel = fixed.obstacle_speed() * params_.dt;
   const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
+  const double moving_at_start = moving_world ? world.moving_clearance(footprint_, state.pose, 0.0) : inf;
   const std::size_t steps = static_cast<std::size_t>(n_steps_);
   bounds_.resize(n * steps);
   exact_.resize(static_cast<std::size_t>(n_steps_));
@@ -436,8 +437,8 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     result_.moving_contact[i] = std::numeric_limits<double>::infinity();
     if (reason == RejectReason::None && moving_world) {
       double closest = std::numeric_limits<double>::infinity();
-      result_.moving_contact[i] =
-          first_moving_contact(state.pose, cmd, poses, world, std::max(margin, 0.0), last, closest, escape_[i]);
+      result_.moving_contact[i] = first_moving_contact(cmd, poses, world, std::max(margin, 0.0), last,
+                                                       moving_at_start, result_.min_clearance[i], closest, escape_[i]);
       // An evasion must not trade the mover for a wall.
       escape_[i] = std::min(escape_[i], result_.min_clearance[i]);
       result_.min_clearance[i] = std::min(result_.min_clearance[i], closest);
@@ -448,17 +449,21 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   }
 }
 
-double LocalPlanner::first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
-                                          const ClearanceSource& world, double margin, int last,
+double LocalPlanner::first_moving_contact(const Twist& cmd, const Trajectory& poses, const ClearanceSource& world,
+                                          double margin, int last, double at_start, double fixed_clearance,
                                           double& closest, double& escape) const {
   const double half_step = half_step_motion(cmd, world.obstacle_speed());
   double contact = std::numeric_limits<double>::infinity();
-  closest = world.moving_clearance(footprint_, start, 0.0);
+  closest = at_start;
   escape = closest;
   if (closest - margin <= 0.0) contact = 0.0;
+  // A clearance from here up decides no contact (a nanometre over, for the
+  // sums' rounding) and, taken the least of with fixed_clearance, changes
+  // nothing: the source may stop short of it there.
+  const double cutoff = std::max(fixed_clearance, margin + half_step) + 1e-9;
   for (int k = 0; k <= last; ++k) {
     const double t = (k + 1) * params_.dt;
-    const double c = world.moving_clearance(footprint_, poses[static_cast<std::size_t>(k)], t);
+    const double c = world.moving_clearance_below(footprint_, poses[static_cast<std::size_t>(k)], t, cutoff);
     closest = std::min(closest, c);
     if (t - params_.dt < params_.moving_horizon) {
       escape = c;

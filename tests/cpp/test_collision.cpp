@@ -318,28 +318,31 @@ TEST(FieldClearance, PolygonBoundsOfManyPosesAreThoseOfEachAlone) {
   for (std::size_t t = 1; t < clearances.size(); ++t) EXPECT_EQ(clearances[t], clearances[0]) << hwy::TargetName(targets[t]);
 }
 
+// The source as the planner asks it: the queries it makes without checks.
+struct AsThePlannerAsks : FieldClearance {
+  using FieldClearance::FieldClearance;
+  using FieldClearance::moving_clearance_below;
+  using FieldClearance::rollouts_lower_bounds;
+};
+
 // The planner asks for every rollout's bounds at once (lanes carrying poses
 // across rollouts): they equal each rollout's asked alone, bit for bit, for
 // a circle and a polygon, from a map, sensed cells, still and moving discs,
 // on every instruction set the processor runs; pose k of every rollout is
 // (k + 1) dt ahead.
-struct AllRolloutsAtOnce : FieldClearance {
-  using FieldClearance::FieldClearance;
-  using FieldClearance::rollouts_lower_bounds;
-};
 
-TEST(FieldClearance, BoundsOfAllRolloutsAtOnceAreThoseOfEachAlone) {
+TEST(FieldClearance, BoundsOfAsThePlannerAsksAreThoseOfEachAlone) {
   const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
   std::mt19937 rng(79);
   const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.12);
   const OccupancyGrid sensed = test::random_cells(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.01);
   const std::vector<Disc> discs = {Disc{Vec2(2.0, 3.0), 0.0, Vec2::Zero()}, Disc{Vec2(4.0, 1.5), 0.3, Vec2::Zero()},
                                    Disc{Vec2(1.0, 1.0), 0.25, Vec2(0.5, 0.2)}};
-  const AllRolloutsAtOnce mapped(std::make_shared<const DistanceField>(grid, 1.0));
-  AllRolloutsAtOnce with_all(std::make_shared<const DistanceField>(grid, 1.0), discs);
+  const AsThePlannerAsks mapped(std::make_shared<const DistanceField>(grid, 1.0));
+  AsThePlannerAsks with_all(std::make_shared<const DistanceField>(grid, 1.0), discs);
   with_all.set_sensed(std::make_shared<const DistanceField>(sensed, 0.0));
-  const AllRolloutsAtOnce& everything = with_all;
-  const AllRolloutsAtOnce discs_alone(nullptr, discs);
+  const AsThePlannerAsks& everything = with_all;
+  const AsThePlannerAsks discs_alone(nullptr, discs);
   // 37 rollouts of 23 poses (neither a multiple of any vector's lanes), some
   // running off the grid.
   std::uniform_real_distribution<double> x(-2.0, 8.0), y(-0.5, 7.5), heading(-M_PI, M_PI), v(0.0, 1.0), w(-1.0, 1.0);
@@ -349,7 +352,7 @@ TEST(FieldClearance, BoundsOfAllRolloutsAtOnceAreThoseOfEachAlone) {
   for (int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
     SCOPED_TRACE(hwy::TargetName(target));
-    for (const AllRolloutsAtOnce* source : {&mapped, &everything, &discs_alone})
+    for (const AsThePlannerAsks* source : {&mapped, &everything, &discs_alone})
       for (const Footprint& fp : {Footprint::circle(0.25), rectangle}) {
         std::vector<double> at_once(rollouts.size() * steps, std::numeric_limits<double>::quiet_NaN());
         source->rollouts_lower_bounds(fp, rollouts.data(), rollouts.size(), steps, 0.1, at_once.data());
@@ -513,6 +516,45 @@ TEST(FieldClearance, MovingDiscsGiveTheLeastOfEachAloneBitForBit) {
       }
     }
   }
+}
+
+// The movers' clearance with a cutoff: the same bits below it, else a value
+// from the cutoff up to the clearance; for a polygon it often stops short.
+TEST(FieldClearance, MovingClearanceBelowACutoffIsExactThere) {
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> u(-4.0, 4.0), radius(0.0, 0.5), speed(-1.0, 1.0), when(0.0, 3.0),
+      cutoff(-0.2, 2.0);
+  const std::vector<Footprint> shapes = {
+      Footprint::circle(0.25), Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}}),
+      Footprint::polygon({{-0.2, -0.2}, {0.4, 0.0}, {-0.2, 0.2}})};
+  int below = 0, stopped = 0;
+  for (int world = 0; world < 60; ++world) {
+    std::vector<Disc> discs;
+    for (int j = 0; j < 1 + world % 20; ++j) {
+      Disc d{Vec2(u(rng), u(rng)), radius(rng), Vec2(speed(rng), speed(rng))};
+      if (j % 3 == 2) d.growth = 0.1;
+      discs.push_back(d);
+    }
+    const AsThePlannerAsks source(nullptr, discs);
+    for (int trial = 0; trial < 50; ++trial) {
+      const Pose2 pose{u(rng), u(rng), M_PI * u(rng) / 4.0};
+      const double t = when(rng), c = cutoff(rng);
+      for (const Footprint& fp : shapes) {
+        const double exact = source.moving_clearance(fp, pose, t);
+        const double answer = source.moving_clearance_below(fp, pose, t, c);
+        if (exact < c) {
+          ASSERT_EQ(answer, exact);
+          ++below;
+        } else {
+          ASSERT_GE(answer, c);
+          ASSERT_LE(answer, exact);
+          stopped += answer < exact;
+        }
+      }
+    }
+  }
+  EXPECT_GE(below, 1000);
+  EXPECT_GE(stopped, 500);
 }
 
 }  // namespace

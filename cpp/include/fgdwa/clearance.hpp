@@ -79,6 +79,14 @@ class ClearanceSource {
                                      std::size_t steps, double dt, double* out) const {
     for (std::size_t i = 0; i < count; ++i) lower_bounds(footprint, rollouts[i], dt, out + i * steps);
   }
+  // moving_clearance() without the checks, bit for bit where it is below
+  // `cutoff`; elsewhere any value from cutoff up to it. The planner needs the
+  // movers' clearance only where it could decide contact or lower a
+  // rollout's least clearance.
+  virtual double moving_clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const {
+    (void)cutoff;
+    return moving_clearance(footprint, pose, t);
+  }
   // clearance() without the checks, bit for bit where it is below `cutoff`;
   // elsewhere any value from cutoff up to the clearance. The planner often
   // needs to know only that a pose is at least so clear, which a source may
@@ -121,6 +129,7 @@ class FieldClearance : public ClearanceSource {
   void rollouts_lower_bounds(const Footprint& footprint, const Trajectory* rollouts, std::size_t count,
                              std::size_t steps, double dt, double* out) const override;
   double clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const override;
+  double moving_clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const override;
 
  private:
   std::shared_ptr<const DistanceField> field_;

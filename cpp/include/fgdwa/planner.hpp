@@ -210,12 +210,16 @@ class LocalPlanner {
   int first_terrain_contact(const Trajectory& poses, bool centre_only) const;
   // The smallest of `below` and the footprint's clearance to grade-4 terrain over poses 0..last.
   double impassable_clearance(const Trajectory& poses, int last, double below) const;
-  // Time (s) at which the rollout from `start` first comes into contact with a
-  // moving obstacle of `world`, within moving_horizon; +inf if it does not.
-  // `closest`: its smallest clearance to them over poses 0..last; `escape`:
-  // its clearance to them at the last pose within moving_horizon.
-  double first_moving_contact(const Pose2& start, const Twist& cmd, const Trajectory& poses,
-                              const ClearanceSource& world, double margin, int last, double& closest,
+  // Time (s) at which the rollout first comes into contact with a moving
+  // obstacle of `world`, within moving_horizon; +inf if it does not.
+  // `at_start`: the start's clearance to them. `closest`: its smallest
+  // clearance to them over the start and poses 0..last; `escape`: its
+  // clearance to them at the last pose within moving_horizon. Both are exact
+  // below `fixed_clearance` (the rollout's least clearance to the fixed
+  // world, which the caller takes the least of with each) and elsewhere at
+  // least that.
+  double first_moving_contact(const Twist& cmd, const Trajectory& poses, const ClearanceSource& world,
+                              double margin, int last, double at_start, double fixed_clearance, double& closest,
                               double& escape) const;
   // A contact between two poses a period apart leaves one of them within half
   // the relative motion of the step: the robot's drive and turn at `twist` and
