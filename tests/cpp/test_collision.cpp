@@ -233,9 +233,29 @@ TEST(FieldClearance, AnObstacleCellInsideTheFootprintIsContact) {
 }
 
 // The planner's query with a cutoff, which LocalPlanner alone may call.
-struct CutoffQueries : FieldClearance {
+// The source as the planner asks it: the queries it makes without checks.
+struct PlannerQueries : FieldClearance {
   using FieldClearance::clearance_below;
   using FieldClearance::FieldClearance;
+  using FieldClearance::moving_clearance_below;
+  using FieldClearance::rollouts_lower_bounds;
+};
+
+// A query with a cutoff: below it the exact value's bits, at or above it a
+// value from the cutoff up to the exact one. Counts the answers below the
+// cutoff, and those the cutoff let stop short of the exact value.
+struct CutoffTally {
+  int below = 0, stopped = 0;
+  void check(double exact, double answer, double cutoff) {
+    if (exact < cutoff) {
+      EXPECT_EQ(answer, exact);
+      ++below;
+    } else {
+      EXPECT_GE(answer, cutoff);
+      EXPECT_LE(answer, exact);
+      stopped += answer < exact;
+    }
+  }
 };
 
 // Below the cutoff the same bits as clearance(); at or above it, a value
@@ -246,10 +266,10 @@ TEST(FieldClearance, ClearanceBelowACutoffIsTheClearanceBitForBit) {
   std::mt19937 rng(77);
   const OccupancyGrid grid = test::random_rectangles(rng, 80, 80, 0.1, Vec2::Zero(), 0.12);
   const OccupancyGrid sensed = test::random_cells(rng, 80, 80, 0.1, Vec2::Zero(), 0.01);
-  CutoffQueries world(std::make_shared<const DistanceField>(grid));
+  PlannerQueries world(std::make_shared<const DistanceField>(grid));
   world.set_sensed(std::make_shared<const DistanceField>(sensed));
   std::uniform_real_distribution<double> cutoff(-0.05, 0.4);
-  int below = 0, stopped = 0;
+  CutoffTally tally;
   for (const Query& q : random_queries(rng, grid, 2000)) {
     for (const Footprint& fp : {rectangle, Footprint::circle(0.2)}) {
       const double exact = world.clearance(fp, q.pose, 0.0);
@@ -257,18 +277,12 @@ TEST(FieldClearance, ClearanceBelowACutoffIsTheClearanceBitForBit) {
       const double answer = world.clearance_below(fp, q.pose, 0.0, c);
       SCOPED_TRACE(::testing::Message() << "pose " << q.pose.x << "," << q.pose.y << "," << q.pose.theta << " cutoff "
                                         << c << " exact " << exact << " answer " << answer);
-      if (exact < c) {
-        ASSERT_EQ(answer, exact);
-        ++below;
-      } else {
-        ASSERT_GE(answer, c);
-        ASSERT_LE(answer, exact);
-        stopped += answer < exact;
-      }
+      tally.check(exact, answer, c);
+      if (::testing::Test::HasFailure()) return;
     }
   }
-  EXPECT_GE(below, 500);
-  EXPECT_GE(stopped, 500);  // the cutoff saved work
+  EXPECT_GE(tally.below, 500);
+  EXPECT_GE(tally.stopped, 500);  // the cutoff saved work
 }
 
 // A polygon's lower bounds over many poses (lanes carrying poses, the table
@@ -318,31 +332,24 @@ TEST(FieldClearance, PolygonBoundsOfManyPosesAreThoseOfEachAlone) {
   for (std::size_t t = 1; t < clearances.size(); ++t) EXPECT_EQ(clearances[t], clearances[0]) << hwy::TargetName(targets[t]);
 }
 
-// The source as the planner asks it: the queries it makes without checks.
-struct AsThePlannerAsks : FieldClearance {
-  using FieldClearance::FieldClearance;
-  using FieldClearance::moving_clearance_below;
-  using FieldClearance::rollouts_lower_bounds;
-};
-
 // The planner asks for every rollout's bounds at once (lanes carrying poses
 // across rollouts): they equal each rollout's asked alone, bit for bit, for
 // a circle and a polygon, from a map, sensed cells, still and moving discs,
 // on every instruction set the processor runs; pose k of every rollout is
 // (k + 1) dt ahead.
 
-TEST(FieldClearance, BoundsOfAsThePlannerAsksAreThoseOfEachAlone) {
+TEST(FieldClearance, BoundsOfAllRolloutsAtOnceAreThoseOfEachAlone) {
   const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
   std::mt19937 rng(79);
   const OccupancyGrid grid = test::random_rectangles(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.12);
   const OccupancyGrid sensed = test::random_cells(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.01);
   const std::vector<Disc> discs = {Disc{Vec2(2.0, 3.0), 0.0, Vec2::Zero()}, Disc{Vec2(4.0, 1.5), 0.3, Vec2::Zero()},
                                    Disc{Vec2(1.0, 1.0), 0.25, Vec2(0.5, 0.2)}};
-  const AsThePlannerAsks mapped(std::make_shared<const DistanceField>(grid, 1.0));
-  AsThePlannerAsks with_all(std::make_shared<const DistanceField>(grid, 1.0), discs);
+  const PlannerQueries mapped(std::make_shared<const DistanceField>(grid, 1.0));
+  PlannerQueries with_all(std::make_shared<const DistanceField>(grid, 1.0), discs);
   with_all.set_sensed(std::make_shared<const DistanceField>(sensed, 0.0));
-  const AsThePlannerAsks& everything = with_all;
-  const AsThePlannerAsks discs_alone(nullptr, discs);
+  const PlannerQueries& everything = with_all;
+  const PlannerQueries discs_alone(nullptr, discs);
   // 37 rollouts of 23 poses (neither a multiple of any vector's lanes), some
   // running off the grid.
   std::uniform_real_distribution<double> x(-2.0, 8.0), y(-0.5, 7.5), heading(-M_PI, M_PI), v(0.0, 1.0), w(-1.0, 1.0);
@@ -352,7 +359,7 @@ TEST(FieldClearance, BoundsOfAsThePlannerAsksAreThoseOfEachAlone) {
   for (int64_t target : hwy::SupportedAndGeneratedTargets()) {
     hwy::SetSupportedTargetsForTest(target);
     SCOPED_TRACE(hwy::TargetName(target));
-    for (const AsThePlannerAsks* source : {&mapped, &everything, &discs_alone})
+    for (const PlannerQueries* source : {&mapped, &everything, &discs_alone})
       for (const Footprint& fp : {Footprint::circle(0.25), rectangle}) {
         std::vector<double> at_once(rollouts.size() * steps, std::numeric_limits<double>::quiet_NaN());
         source->rollouts_lower_bounds(fp, rollouts.data(), rollouts.size(), steps, 0.1, at_once.data());
@@ -527,7 +534,7 @@ TEST(FieldClearance, MovingClearanceBelowACutoffIsExactThere) {
   const std::vector<Footprint> shapes = {
       Footprint::circle(0.25), Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}}),
       Footprint::polygon({{-0.2, -0.2}, {0.4, 0.0}, {-0.2, 0.2}})};
-  int below = 0, stopped = 0;
+  CutoffTally tally;
   for (int world = 0; world < 60; ++world) {
     std::vector<Disc> discs;
     for (int j = 0; j < 1 + world % 20; ++j) {
@@ -535,26 +542,21 @@ TEST(FieldClearance, MovingClearanceBelowACutoffIsExactThere) {
       if (j % 3 == 2) d.growth = 0.1;
       discs.push_back(d);
     }
-    const AsThePlannerAsks source(nullptr, discs);
+    const PlannerQueries source(nullptr, discs);
     for (int trial = 0; trial < 50; ++trial) {
       const Pose2 pose{u(rng), u(rng), M_PI * u(rng) / 4.0};
       const double t = when(rng), c = cutoff(rng);
       for (const Footprint& fp : shapes) {
         const double exact = source.moving_clearance(fp, pose, t);
         const double answer = source.moving_clearance_below(fp, pose, t, c);
-        if (exact < c) {
-          ASSERT_EQ(answer, exact);
-          ++below;
-        } else {
-          ASSERT_GE(answer, c);
-          ASSERT_LE(answer, exact);
-          stopped += answer < exact;
-        }
+        SCOPED_TRACE(::testing::Message() << "world " << world << " trial " << trial << " cutoff " << c);
+        tally.check(exact, answer, c);
+        if (::testing::Test::HasFailure()) return;
       }
     }
   }
-  EXPECT_GE(below, 1000);
-  EXPECT_GE(stopped, 500);
+  EXPECT_GE(tally.below, 1000);
+  EXPECT_GE(tally.stopped, 500);
 }
 
 }  // namespace
