@@ -233,7 +233,15 @@ double field_clearance(const DistanceField* field, const Footprint& footprint, c
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!field || !field->has_obstacles()) return kInf;
   const Pose2& pose = at.pose;
-  if (footprint.is_circle()) return field->distance(pose.position()) - footprint.radius();
+  if (footprint.is_circle()) {
+    // The table's bound often settles a cutoff at one look-up (the planner's
+    // evasion asks only whether the margin is reached).
+    if (cutoff < kInf) {
+      const double low = field->lower_bounds()(pose.x, pose.y) - footprint.radius();
+      if (low >= cutoff) return low;
+    }
+    return field->distance(pose.position()) - footprint.radius();
+  }
   // The circumscribed circle often settles a cutoff at one look-up (a field
   // of sensed points far from the robot nearly always does). The cover discs
   // are not tried: the planner asks only where their bound is below the
