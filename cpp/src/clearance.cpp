@@ -377,6 +377,7 @@ void FieldClearance::rollouts_lower_bounds(const Footprint& footprint, const Tra
   // thread-local look-up per call, the columns filled once for every kernel.
   struct Columns {
     std::vector<double> x, y, c, s;
+    std::vector<double> sensed;  // the sensed field's bounds for the circumscribed circle
   };
   thread_local Columns columns;
   Columns& in = columns;
@@ -404,35 +405,41 @@ void FieldClearance::rollouts_lower_bounds(const Footprint& footprint, const Tra
     } else {
       std::fill(out, out + n, kInf);
     }
-    // The sensed points are mostly far: their circumscribed circle's bound,
-    // one look-up, then leaves the least unchanged.
-    if (sensed_) {
-      const DistanceField::LowerBounds bound = sensed_->lower_bounds();
-      for (std::size_t k = 0; k < n; ++k)
-        if (bound(in.x[k], in.y[k]) - r < out[k])
-          out[k] = std::min(out[k], cover_lower_bound(bound, footprint,
-                                                      Placed(rollouts[k / steps][k % steps], in.c[k], in.s[k])));
-    }
   } else {
-    // One field at a time in tight loops: this runs for every pose of every rollout.
     if (field_) detail::point_lower_bounds(in.x.data(), in.y.data(), n, field_->lower_bounds(), r, out);
     else std::fill(out, out + n, kInf);
-    if (sensed_) {
-      const DistanceField::LowerBounds bound = sensed_->lower_bounds();
-      for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], bound(in.x[k], in.y[k]) - r);
+  }
+  // The sensed cells: the circumscribed circle's bound at every pose, which
+  // is a circle's bound itself; a polygon's, being mostly far from them,
+  // then leaves the least unchanged, else its cover discs are asked.
+  if (sensed_) {
+    const DistanceField::LowerBounds bound = sensed_->lower_bounds();
+    in.sensed.resize(n);
+    detail::point_lower_bounds(in.x.data(), in.y.data(), n, bound, r, in.sensed.data());
+    if (footprint.is_circle()) {
+      for (std::size_t k = 0; k < n; ++k) out[k] = std::min(out[k], in.sensed[k]);
+    } else {
+      for (std::size_t k = 0; k < n; ++k)
+        if (in.sensed[k] < out[k])
+          out[k] = std::min(out[k], cover_lower_bound(bound, footprint,
+                                                      Placed(rollouts[k / steps][k % steps], in.c[k], in.s[k])));
     }
   }
   if (!static_discs_.x.empty()) {
     const StaticDiscs& d = static_discs_;
     detail::lower_to_discs(in.x.data(), in.y.data(), n, d.x.data(), d.y.data(), d.radius.data(), d.x.size(), r, out);
   }
+  // A mover's place and size at each step serve every rollout.
   for (const Disc& disc : moving_)
-    for (std::size_t i = 0; i < count; ++i)
-      for (std::size_t k = 0; k < steps; ++k) {
-        const double t = static_cast<double>(k + 1) * dt;
+    for (std::size_t k = 0; k < steps; ++k) {
+      const double t = static_cast<double>(k + 1) * dt;
+      const Vec2 centre = disc.center_at(t);
+      const double radius = disc.radius_at(t);
+      for (std::size_t i = 0; i < count; ++i) {
         double& bound = out[i * steps + k];
-        bound = std::min(bound, ((disc.center_at(t) - rollouts[i][k].position()).norm() - r) - disc.radius_at(t));
+        bound = std::min(bound, ((centre - rollouts[i][k].position()).norm() - r) - radius);
       }
+    }
 }
 
 bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {
