@@ -153,7 +153,7 @@ def _along_step(before, after, spacing: float, other_travel: float = 0.0):
 
 
 def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, after, t: float, dt: float,
-                         spacing: float = 0.05, discs_at=None) -> bool:
+                         spacing: float = 0.05, discs_at=None, start_clearance: Optional[float] = None) -> bool:
     """Whether the footprint touches an obstacle anywhere along one step,
     whoever moves into whom.
 
@@ -167,15 +167,19 @@ def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, af
     position lies on the segment from ``before`` to ``after``, and the discs are
     where ``discs_at(time)`` puts them (the truth's own discs are restored
     afterwards) or, without it, the truth's discs moved at their velocities.
+    ``start_clearance``, when given, is the truth's clearance of the footprint
+    at ``before`` at time ``t`` (as ``truth.clearance`` gives it): the turn's
+    sweep starts from it instead of measuring it again.
     """
     if discs_at is None:
         discs = truth.discs
-        return _step_collides(truth, footprint, before, after, t, dt, spacing, _disc_travel(discs, dt), None)
+        return _step_collides(truth, footprint, before, after, t, dt, spacing, _disc_travel(discs, dt), None,
+                              start_clearance)
     # Copies: the truth hands out views of its own discs, which setting new ones overwrites.
     kept = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
     try:
         travel = max(_disc_travel(discs_at(t), dt), _disc_travel(discs_at(t + dt), dt))
-        return _step_collides(truth, footprint, before, after, t, dt, spacing, travel, discs_at)
+        return _step_collides(truth, footprint, before, after, t, dt, spacing, travel, discs_at, start_clearance)
     finally:
         truth.discs = kept
 
@@ -185,7 +189,7 @@ def _disc_travel(discs, dt: float) -> float:
     return max((float(np.hypot(*d.velocity)) * dt for d in discs), default=0.0)
 
 
-def _step_collides(truth, footprint, before, after, t, dt, spacing, disc_travel, discs_at) -> bool:
+def _step_collides(truth, footprint, before, after, t, dt, spacing, disc_travel, discs_at, start_clearance) -> bool:
     def clock(time: float) -> float:
         """The time to query the truth at for the discs to be where they are at ``time``."""
         if discs_at is None:
@@ -193,7 +197,7 @@ def _step_collides(truth, footprint, before, after, t, dt, spacing, disc_travel,
         truth.discs = discs_at(time)
         return 0.0
 
-    if not footprint.is_circle and _turn_collides(truth, footprint, before, after[2], clock(t)):
+    if not footprint.is_circle and _turn_collides(truth, footprint, before, after[2], clock(t), start_clearance):
         return True
     return any(truth.in_collision(footprint, (x, y, after[2]), clock(t + f * dt))
                for f, x, y in _along_step(before, after, spacing, disc_travel))
@@ -202,11 +206,15 @@ def _step_collides(truth, footprint, before, after, t, dt, spacing, disc_travel,
 TURN_RESOLUTION = 1e-3  # rad, the smallest heading step of the referee's turn sweep
 
 
-def _turn_collides(truth: CollisionWorld, footprint: Footprint, before, heading: float, t: float) -> bool:
+def _turn_collides(truth: CollisionWorld, footprint: Footprint, before, heading: float, t: float,
+                   start_clearance: Optional[float] = None) -> bool:
     turn = wrap_angle(heading - before[2])
     turned = 0.0
     while True:
-        clearance = truth.clearance(footprint, (before[0], before[1], before[2] + np.copysign(turned, turn)), t)
+        if turned == 0.0 and start_clearance is not None:
+            clearance = start_clearance
+        else:
+            clearance = truth.clearance(footprint, (before[0], before[1], before[2] + np.copysign(turned, turn)), t)
         if clearance <= 0.0:
             return True
         if turned >= abs(turn):
@@ -411,8 +419,10 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         if world.has_moving:
             truth.discs = world.discs_at(t + dt)
         clearances.append(truth.clearance(footprint, pose, 0.0))
+        # In a world that stands still the clearance at the step's start is the one measured a step ago.
         if collides_during_step(truth, footprint, poses[-2], poses[-1], t, dt,
-                                discs_at=world.discs_at if world.has_moving else None):
+                                discs_at=world.discs_at if world.has_moving else None,
+                                start_clearance=None if world.has_moving else clearances[-2]):
             outcome = "collision"
             break
         if world.terrain is not None and _falls(world, poses[-2], poses[-1]):

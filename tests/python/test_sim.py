@@ -72,6 +72,13 @@ def test_a_rectangle_turning_in_place_beside_a_post_is_a_collision():
     # A smaller turn stops short of it; a circle turns anywhere.
     assert not collides_during_step(truth, rectangle, before, (1.0, 1.0, np.radians(30)), 0.0, 0.1)
     assert not collides_during_step(truth, fgdwa.Footprint.circle(0.2), before, after, 0.0, 0.1)
+    # The clearance at the start, when the caller has it, gives the same verdicts, and is what the sweep starts from.
+    start = truth.clearance(rectangle, before, 0.0)
+    for heading in (np.pi / 2, np.radians(30), -np.pi / 2):
+        assert collides_during_step(truth, rectangle, before, (1.0, 1.0, heading), 0.0, 0.1,
+                                    start_clearance=start) == \
+            collides_during_step(truth, rectangle, before, (1.0, 1.0, heading), 0.0, 0.1)
+    assert collides_during_step(truth, rectangle, before, (1.0, 1.0, np.radians(30)), 0.0, 0.1, start_clearance=0.0)
     # The planner agrees: from that pose it never commands the turn that sweeps the post.
     params = fgdwa.PlannerParams(dt=0.1, n_v=5, n_omega=41)
     planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(omega_max=16.0, acc_omega=200.0), rectangle, params)
