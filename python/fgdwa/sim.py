@@ -171,6 +171,11 @@ def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, af
     at ``before`` at time ``t`` (as ``truth.clearance`` gives it): the turn's
     sweep starts from it instead of measuring it again.
     """
+    if start_clearance is not None and (isinstance(start_clearance, bool) or
+                                        not isinstance(start_clearance, (int, float, np.floating, np.integer))
+                                        or np.isnan(start_clearance)):
+        raise FgdwaError(f"start_clearance = {start_clearance!r}: must be a number (m, +inf when nothing is near) "
+                         "or None")
     if discs_at is None:
         discs = truth.discs
         return _step_collides(truth, footprint, before, after, t, dt, spacing, _disc_travel(discs, dt), None,

@@ -79,6 +79,9 @@ def test_a_rectangle_turning_in_place_beside_a_post_is_a_collision():
                                     start_clearance=start) == \
             collides_during_step(truth, rectangle, before, (1.0, 1.0, heading), 0.0, 0.1)
     assert collides_during_step(truth, rectangle, before, (1.0, 1.0, np.radians(30)), 0.0, 0.1, start_clearance=0.0)
+    for bad in (float("nan"), "0.1", True):
+        with pytest.raises(fgdwa.FgdwaError, match="start_clearance"):
+            collides_during_step(truth, rectangle, before, after, 0.0, 0.1, start_clearance=bad)
     # The planner agrees: from that pose it never commands the turn that sweeps the post.
     params = fgdwa.PlannerParams(dt=0.1, n_v=5, n_omega=41)
     planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(omega_max=16.0, acc_omega=200.0), rectangle, params)
