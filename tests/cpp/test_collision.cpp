@@ -337,7 +337,6 @@ TEST(FieldClearance, PolygonBoundsOfManyPosesAreThoseOfEachAlone) {
 // a circle and a polygon, from a map, sensed cells, still and moving discs,
 // on every instruction set the processor runs; pose k of every rollout is
 // (k + 1) dt ahead.
-
 TEST(FieldClearance, BoundsOfAllRolloutsAtOnceAreThoseOfEachAlone) {
   const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
   std::mt19937 rng(79);
