@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "bind_params.hpp"
 #include "convert.hpp"
 #include "fgdwa/error.hpp"
 #include "fgdwa/mapping.hpp"
@@ -14,53 +15,8 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_mapping(py::module_& m) {
-  py::class_<OccupancyParams>(m, "OccupancyParams",
-                              "The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).")
-      .def(py::init([](FloatArg hit, FloatArg miss, FloatArg clamp_min, FloatArg clamp_max, FloatArg occupied,
-                       FloatArg free, FloatArg range_std, FloatArg clear_range, FloatArg hit_share, bool clear, FloatArg edge_margin) {
-             OccupancyParams p;
-             p.hit = to_float(hit, "hit");
-             p.miss = to_float(miss, "miss");
-             p.clamp_min = to_float(clamp_min, "clamp_min");
-             p.clamp_max = to_float(clamp_max, "clamp_max");
-             p.occupied = to_float(occupied, "occupied");
-             p.free = to_float(free, "free");
-             p.range_std = to_float(range_std, "range_std");
-             p.clear_range = to_float(clear_range, "clear_range");
-             p.hit_share = to_float(hit_share, "hit_share");
-             p.clear = clear;
-             p.edge_margin = to_float(edge_margin, "edge_margin");
-             p.validate();
-             return p;
-           }),
-           py::arg("hit") = 0.85, py::arg("miss") = -0.4, py::arg("clamp_min") = -2.0, py::arg("clamp_max") = 3.5,
-           py::arg("occupied") = 0.5, py::arg("free") = -0.5, py::arg("range_std") = 0.0,
-           py::arg("clear_range") = std::numeric_limits<double>::infinity(), py::arg("hit_share") = 0.2,
-           py::arg("clear") = true, py::arg("edge_margin") = DistanceField::kDefaultEdgeMargin,
-           "hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the "
-           "range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; "
-           "range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std "
-           "short); clear_range (m): the farthest a beam clears; hit_share: a cell some beams of a scan end in and "
-           "others pass is hit when at least this share end in it; clear=False: hits only, nothing clears; "
-           "edge_margin (m): the free margin the map's field keeps past the grid's edge (DistanceField).")
-      .def_readonly("hit", &OccupancyParams::hit)
-      .def_readonly("miss", &OccupancyParams::miss)
-      .def_readonly("clamp_min", &OccupancyParams::clamp_min)
-      .def_readonly("clamp_max", &OccupancyParams::clamp_max)
-      .def_readonly("occupied", &OccupancyParams::occupied)
-      .def_readonly("free", &OccupancyParams::free)
-      .def_readonly("range_std", &OccupancyParams::range_std)
-      .def_readonly("clear_range", &OccupancyParams::clear_range)
-      .def_readonly("hit_share", &OccupancyParams::hit_share)
-      .def_readonly("clear", &OccupancyParams::clear)
-      .def_readonly("edge_margin", &OccupancyParams::edge_margin)
-      .def("__repr__", [](const OccupancyParams& p) {
-        std::ostringstream s;
-        s << "OccupancyParams(hit=" << p.hit << ", miss=" << p.miss << ", clamp=[" << p.clamp_min << ", "
-          << p.clamp_max << "], occupied=" << p.occupied << ", free=" << p.free << ", range_std=" << p.range_std
-          << ", clear=" << (p.clear ? "True" : "False") << ", edge_margin=" << p.edge_margin << ")";
-        return s.str();
-      });
+  bind_params<OccupancyParams>(m, "OccupancyParams",
+                               "The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).");
 
   py::class_<ScanMap>(m, "ScanMap",
                       "A map built from lidar scans: log-odds per cell, beams ray-traced (the cells they pass are "

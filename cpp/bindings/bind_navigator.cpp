@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "bind_params.hpp"
 #include "convert.hpp"
 #include "fgdwa/navigator.hpp"
 
@@ -44,105 +45,8 @@ void init_navigator(py::module_& m) {
       .value("RecoveriesExhausted", FailureReason::RecoveriesExhausted);
   refuse_unnamed_values(failure_reason_enum);
 
-  py::class_<NavigatorParams>(m, "NavigatorParams", "Replanning and recovery settings of a Navigator (SPEC 13).")
-      .def(py::init([](FloatArg path_margin, FloatArg replan_period, FloatArg stall_time, FloatArg stall_distance,
-                       FloatArg give_up_length, FloatArg keep_clear, FloatArg sensed_close_radius,
-                       FloatArg backup_distance, FloatArg backup_speed, FloatArg rotate_limit_deg, FloatArg wait_time,
-                       FloatArg wait_radius, IntArg max_recoveries, FloatArg progress_reset, IntArg record_top_k,
-                       const OccupancyParams& occupancy, FloatArg unknown_cost, bool track_moving,
-                       const SegmentParams& segment, const TrackerParams& tracker, bool learn_obstacles,
-                       FloatArg mover_margin, bool route_around_movers, FloatArg mover_route_horizon,
-                       FloatArg mover_route_lookahead) {
-             NavigatorParams p;
-             p.path_margin = to_float(path_margin, "path_margin");
-             p.replan_period = to_float(replan_period, "replan_period");
-             p.stall_time = to_float(stall_time, "stall_time");
-             p.stall_distance = to_float(stall_distance, "stall_distance");
-             p.give_up_length = to_float(give_up_length, "give_up_length");
-             p.keep_clear = to_float(keep_clear, "keep_clear");
-             p.sensed_close_radius = to_float(sensed_close_radius, "sensed_close_radius");
-             p.backup_distance = to_float(backup_distance, "backup_distance");
-             p.backup_speed = to_float(backup_speed, "backup_speed");
-             p.rotate_limit =
-                 radians_from_degrees("rotate_limit_deg", to_float(rotate_limit_deg, "rotate_limit_deg"), 0.0, 36000.0);
-             p.wait_time = to_float(wait_time, "wait_time");
-             p.wait_radius = to_float(wait_radius, "wait_radius");
-             p.max_recoveries =
-                 to_int<int>(max_recoveries, "max_recoveries", 0, static_cast<int>(limits::kMaxEventCount));
-             p.progress_reset = to_float(progress_reset, "progress_reset");
-             p.record_top_k =
-                 to_int<int>(record_top_k, "record_top_k", 0, static_cast<int>(limits::kMaxWindowSamples));
-             p.occupancy = occupancy;
-             p.unknown_cost = to_float(unknown_cost, "unknown_cost");
-             p.track_moving = track_moving;
-             p.segment = segment;
-             p.tracker = tracker;
-             p.learn_obstacles = learn_obstacles;
-             p.mover_margin = to_float(mover_margin, "mover_margin");
-             p.route_around_movers = route_around_movers;
-             p.mover_route_horizon = to_float(mover_route_horizon, "mover_route_horizon");
-             p.mover_route_lookahead = to_float(mover_route_lookahead, "mover_route_lookahead");
-             p.validate();
-             return p;
-           }),
-           py::arg("path_margin") = 0.3, py::arg("replan_period") = 0.5, py::arg("stall_time") = 3.0,
-           py::arg("stall_distance") = 0.1, py::arg("give_up_length") = 0.6, py::arg("keep_clear") = 0.3,
-           py::arg("sensed_close_radius") = 2.0, py::arg("backup_distance") = 0.3, py::arg("backup_speed") = 0.2,
-           py::arg("rotate_limit_deg") = 360.0,
-           py::arg("wait_time") = 2.0, py::arg("wait_radius") = 1.5, py::arg("max_recoveries") = 6,
-           py::arg("progress_reset") = 1.0, py::arg("record_top_k") = 5,
-           py::arg("occupancy") = OccupancyParams(), py::arg("unknown_cost") = 0.0, py::arg("track_moving") = true,
-           py::arg("segment") = SegmentParams(), py::arg("tracker") = TrackerParams(), py::arg("learn_obstacles") = true,
-           py::arg("mover_margin") = 0.0, py::arg("route_around_movers") = true, py::arg("mover_route_horizon") = 1.0,
-           py::arg("mover_route_lookahead") = 3.0,
-           "path_margin: m kept beyond the footprint's radius by the global path where the map allows; "
-           "replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance "
-           "(m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after "
-           "a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the "
-           "scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed "
-           "(m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle "
-           "within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; "
-           "record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std "
-           "is at least the lidar's noise_std); unknown_cost: extra cost per metre of the global path through cells the "
-           "scans have not observed (0: unknown is free); track_moving: segment and track moving obstacles in the scans, "
-           "predict them in the planner and keep their hits out of the map (False: every hit is static where it is, "
-           "the ablation); segment, tracker: their settings; learn_obstacles: with a known map, obstacles the scans find "
-           "that it lacks join it (False: they reach only the local planner, and the global one at a stall); mover_margin "
-           "(m): added to a tracked mover's radius; route_around_movers: the global path keeps off the floor each "
-           "moving obstacle sweeps over the next mover_route_horizon (s) at its predicted velocity, and a sweep within "
-           "the footprint's inscribed radius of the path's next mover_route_lookahead (m) asks for a new path (False: "
-           "movers reach only the local planner).")
-      .def_readonly("path_margin", &NavigatorParams::path_margin)
-      .def_readonly("replan_period", &NavigatorParams::replan_period)
-      .def_readonly("stall_time", &NavigatorParams::stall_time)
-      .def_readonly("stall_distance", &NavigatorParams::stall_distance)
-      .def_readonly("give_up_length", &NavigatorParams::give_up_length)
-      .def_readonly("keep_clear", &NavigatorParams::keep_clear)
-      .def_readonly("sensed_close_radius", &NavigatorParams::sensed_close_radius)
-      .def_readonly("backup_distance", &NavigatorParams::backup_distance)
-      .def_readonly("backup_speed", &NavigatorParams::backup_speed)
-      .def_property_readonly("rotate_limit_deg", [](const NavigatorParams& p) { return p.rotate_limit * 180.0 / M_PI; })
-      .def_readonly("wait_time", &NavigatorParams::wait_time)
-      .def_readonly("wait_radius", &NavigatorParams::wait_radius)
-      .def_readonly("max_recoveries", &NavigatorParams::max_recoveries)
-      .def_readonly("progress_reset", &NavigatorParams::progress_reset)
-      .def_readonly("record_top_k", &NavigatorParams::record_top_k)
-      .def_readonly("occupancy", &NavigatorParams::occupancy)
-      .def_readonly("unknown_cost", &NavigatorParams::unknown_cost)
-      .def_readonly("track_moving", &NavigatorParams::track_moving)
-      .def_readonly("segment", &NavigatorParams::segment)
-      .def_readonly("tracker", &NavigatorParams::tracker)
-      .def_readonly("learn_obstacles", &NavigatorParams::learn_obstacles)
-      .def_readonly("mover_margin", &NavigatorParams::mover_margin)
-      .def_readonly("route_around_movers", &NavigatorParams::route_around_movers)
-      .def_readonly("mover_route_horizon", &NavigatorParams::mover_route_horizon)
-      .def_readonly("mover_route_lookahead", &NavigatorParams::mover_route_lookahead)
-      .def("__repr__", [](const NavigatorParams& p) {
-        std::ostringstream s;
-        s << "NavigatorParams(stall_time=" << p.stall_time << ", backup_distance=" << p.backup_distance
-          << ", max_recoveries=" << p.max_recoveries << ", replan_period=" << p.replan_period << ")";
-        return s.str();
-      });
+  bind_params<NavigatorParams>(m, "NavigatorParams",
+                                "Replanning, recovery, the map from scans and moving obstacles of a Navigator.");
 
   py::class_<ScoredRollout>(m, "ScoredRollout", "A rollout the planner scored: its sample, command, total, poses.")
       .def_readonly("sample", &ScoredRollout::sample)

@@ -34,7 +34,7 @@ void init_path(py::module_& m) {
         return points_array(out);
       },
       py::arg("path"), py::arg("robot"), py::arg("v_ref"), py::arg("dt"), py::arg("n"), py::arg("sampling") = "polyline",
-      "(n, 2) reference samples E of the similarity cost (SPEC 4, Eq. 9): from the robot's projection onto the "
+      "(n, 2) reference samples E of the similarity cost (Eq. 9): from the robot's projection onto the "
       "path, i * v_ref * dt further along the current segment ('segment') or along the path ('polyline').");
 
   py::class_<PathProjection>(m, "PathProjection", "The nearest point of a path to a query point.")

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "bind_params.hpp"
 #include "convert.hpp"
 #include "fgdwa/perception.hpp"
 
@@ -13,34 +14,12 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_perception(py::module_& m) {
-  py::class_<LidarParams>(m, "LidarParams", "A planar lidar: field of view (deg), beams, max range (m), range noise (m), "
-                                        "the probability a beam returns nothing (reads +inf).")
-      .def(py::init([](FloatArg fov_deg, IntArg beams, FloatArg max_range, FloatArg noise_std, FloatArg dropout) {
-             LidarParams p{radians_from_degrees("fov_deg", to_float(fov_deg, "fov_deg"), 0.0, 360.0),
-                           to_int<int>(beams, "lidar beams", 1, static_cast<int>(limits::kMaxBeams)),
-                           to_float(max_range, "max_range"), to_float(noise_std, "noise_std"),
-                           to_float(dropout, "dropout")};
-             p.validate();
-             return p;
-           }),
-           py::arg("fov_deg") = 270.0, py::arg("beams") = 541, py::arg("max_range") = 10.0, py::arg("noise_std") = 0.0,
-           py::arg("dropout") = 0.0)
-      .def_property_readonly("fov_deg", [](const LidarParams& p) { return p.fov * 180.0 / M_PI; })
-      .def_readonly("beams", &LidarParams::beams)
-      .def_readonly("max_range", &LidarParams::max_range)
-      .def_readonly("noise_std", &LidarParams::noise_std)
-      .def_readonly("dropout", &LidarParams::dropout)
+  bind_params<LidarParams>(m, "LidarParams", "A planar lidar.")
       .def_property_readonly("angles", [](const LidarParams& p) {
         py::array_t<double> out(p.beams);
         for (int i = 0; i < p.beams; ++i) out.mutable_data()[i] = p.angle(i);
         return out;
-      }, "Beam angles relative to the heading, rad.")
-      .def("__repr__", [](const LidarParams& p) {
-        std::ostringstream s;
-        s << "LidarParams(fov_deg=" << p.fov * 180.0 / M_PI << ", beams=" << p.beams << ", max_range=" << p.max_range
-          << ", noise_std=" << p.noise_std << ", dropout=" << p.dropout << ")";
-        return s.str();
-      });
+      }, "Beam angles relative to the heading, rad.");
 
   py::class_<Scan>(m, "Scan", "One lidar scan: ranges (m, +inf for no hit) of beams from angle_min by angle_increment.")
       // Scans measured elsewhere (a real lidar, another simulator) enter here;
@@ -114,18 +93,7 @@ void init_perception(py::module_& m) {
           "One scan at pose; discs placed t seconds ahead; noise and dropped beams drawn from a generator "
           "seeded with seed.");
 
-  py::class_<DetectWindowParams>(m, "DetectWindowParams", "The detect window: +-half_angle_deg about the heading, radius R (m), base c of Eq. 13.")
-      .def(py::init([](FloatArg half_angle_deg, FloatArg radius, FloatArg base) {
-             DetectWindowParams p{
-                 radians_from_degrees("half_angle_deg", to_float(half_angle_deg, "half_angle_deg"), 0.0, 180.0),
-                 to_float(radius, "radius"), to_float(base, "base")};
-             p.validate();
-             return p;
-           }),
-           py::arg("half_angle_deg") = 60.0, py::arg("radius") = 2.0, py::arg("base") = 0.5)
-      .def_property_readonly("half_angle_deg", [](const DetectWindowParams& p) { return p.half_angle * 180.0 / M_PI; })
-      .def_readonly("radius", &DetectWindowParams::radius)
-      .def_readonly("base", &DetectWindowParams::base);
+  bind_params<DetectWindowParams>(m, "DetectWindowParams", "The detect window ahead of the robot, over which the density I is measured.");
 
   py::class_<DensityReading>(m, "DensityReading", "Obstacle density I of the detect window and its parts.")
       .def_readonly("density", &DensityReading::density)

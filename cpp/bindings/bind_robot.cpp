@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "bind_params.hpp"
 #include "convert.hpp"
 #include "fgdwa/robot.hpp"
 
@@ -12,38 +13,9 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_robot(py::module_& m) {
-  py::class_<RobotLimits> limits_class(m, "RobotLimits",
-                                       "Velocity and acceleration limits of a differential-drive robot (SI units). "
-                                       "brake_v / brake_omega of 0 mean: equal to the accelerations.");
-  float_fields(limits_class, {{"v_min", &RobotLimits::v_min},
-                              {"v_max", &RobotLimits::v_max},
-                              {"omega_max", &RobotLimits::omega_max},
-                              {"acc_v", &RobotLimits::acc_v},
-                              {"acc_omega", &RobotLimits::acc_omega},
-                              {"brake_v", &RobotLimits::brake_v},
-                              {"brake_omega", &RobotLimits::brake_omega}});
-  limits_class
-      .def(py::init([](FloatArg v_min, FloatArg v_max, FloatArg omega_max, FloatArg acc_v, FloatArg acc_omega,
-                       FloatArg brake_v, FloatArg brake_omega) {
-             RobotLimits l{to_float(v_min, "v_min"),     to_float(v_max, "v_max"),
-                           to_float(omega_max, "omega_max"), to_float(acc_v, "acc_v"),
-                           to_float(acc_omega, "acc_omega"), to_float(brake_v, "brake_v"),
-                           to_float(brake_omega, "brake_omega")};
-             l.validate();
-             return l;
-           }),
-           py::arg("v_min") = 0.0, py::arg("v_max") = 1.2, py::arg("omega_max") = 1.0, py::arg("acc_v") = 1.0,
-           py::arg("acc_omega") = 2.0, py::arg("brake_v") = 0.0, py::arg("brake_omega") = 0.0)
+  bind_params<RobotLimits>(m, "RobotLimits", "Velocity and acceleration limits of a differential-drive robot.")
       .def("braking_v", &RobotLimits::braking_v)
-      .def("braking_omega", &RobotLimits::braking_omega)
-      .def("validate", &RobotLimits::validate, "Raise FgdwaError naming the first bad field.")
-      .def("__repr__", [](const RobotLimits& l) {
-        std::ostringstream s;
-        s << "RobotLimits(v_min=" << l.v_min << ", v_max=" << l.v_max << ", omega_max=" << l.omega_max
-          << ", acc_v=" << l.acc_v << ", acc_omega=" << l.acc_omega << ", brake_v=" << l.brake_v
-          << ", brake_omega=" << l.brake_omega << ")";
-        return s.str();
-      });
+      .def("braking_omega", &RobotLimits::braking_omega);
 
   py::class_<RobotState>(m, "RobotState", "Pose and velocity of the robot.")
       .def(py::init([](py::handle pose, py::handle twist) {

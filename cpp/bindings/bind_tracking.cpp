@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "bind_params.hpp"
 #include "convert.hpp"
 #include "fgdwa/tracking.hpp"
 
@@ -19,37 +20,7 @@ py::tuple pair(const Vec2& v) { return py::make_tuple(v.x(), v.y()); }
 
 void init_tracking(py::module_& m) {
   const SegmentParams sd;
-  py::class_<SegmentParams>(m, "SegmentParams",
-                            "How segment_scan cuts a scan into clusters: breakpoint gap (m, growing by "
-                            "range_gap_factor m per m of range), min_points, max_size (m), min_radius (m) of a "
-                            "fitted disc, range_noise (m) the disc fit assumes.")
-      .def(py::init([](FloatArg base_gap, FloatArg range_gap_factor, IntArg min_points, FloatArg max_size,
-                       FloatArg min_radius, FloatArg range_noise) {
-             SegmentParams p{to_float(base_gap, "base_gap"),
-                             to_float(range_gap_factor, "range_gap_factor"),
-                             to_int<int>(min_points, "segment min_points", 1, static_cast<int>(limits::kMaxBeams)),
-                             to_float(max_size, "max_size"),
-                             to_float(min_radius, "min_radius"),
-                             to_float(range_noise, "range_noise")};
-             p.validate();
-             return p;
-           }),
-           py::arg("base_gap") = sd.base_gap, py::arg("range_gap_factor") = sd.range_gap_factor,
-           py::arg("min_points") = sd.min_points, py::arg("max_size") = sd.max_size,
-           py::arg("min_radius") = sd.min_radius, py::arg("range_noise") = sd.range_noise)
-      .def_readonly("base_gap", &SegmentParams::base_gap)
-      .def_readonly("range_gap_factor", &SegmentParams::range_gap_factor)
-      .def_readonly("min_points", &SegmentParams::min_points)
-      .def_readonly("max_size", &SegmentParams::max_size)
-      .def_readonly("min_radius", &SegmentParams::min_radius)
-      .def_readonly("range_noise", &SegmentParams::range_noise)
-      .def("__repr__", [](const SegmentParams& p) {
-        std::ostringstream s;
-        s << "SegmentParams(base_gap=" << p.base_gap << ", range_gap_factor=" << p.range_gap_factor
-          << ", min_points=" << p.min_points << ", max_size=" << p.max_size << ", min_radius=" << p.min_radius
-          << ", range_noise=" << p.range_noise << ")";
-        return s.str();
-      });
+  bind_params<SegmentParams>(m, "SegmentParams", "How a scan's hits are split into clusters (objects to track).");
 
   py::class_<OrientedBox>(m, "OrientedBox", "A box along the principal axes of a cluster's hits.")
       .def_property_readonly("center", [](const OrientedBox& b) { return pair(b.center); })
@@ -113,63 +84,7 @@ void init_tracking(py::module_& m) {
   refuse_unnamed_values(track_status_enum);
 
   const TrackerParams td;
-  py::class_<TrackerParams>(m, "TrackerParams",
-                            "Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), "
-                            "confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, "
-                            "moving_window s, free_margin m), prediction_window (s, velocity fit for prediction), max_speed (m/s), "
-                            "uncertainty_sigmas, max_uncertainty (m).")
-      .def(py::init([](FloatArg gate, FloatArg gate_sigmas, FloatArg accel_std, FloatArg measurement_std,
-                       IntArg confirm_hits, FloatArg lost_time, FloatArg moving_speed, FloatArg moving_sigmas,
-                       FloatArg moving_window, FloatArg free_margin, FloatArg max_speed, FloatArg uncertainty_sigmas,
-                       FloatArg max_uncertainty, FloatArg prediction_window) {
-             TrackerParams p{to_float(gate, "gate"),
-                             to_float(gate_sigmas, "gate_sigmas"),
-                             to_float(accel_std, "accel_std"),
-                             to_float(measurement_std, "measurement_std"),
-                             to_int<int>(confirm_hits, "tracker confirm_hits", 1, static_cast<int>(limits::kMaxEventCount)),
-                             to_float(lost_time, "lost_time"),
-                             to_float(moving_speed, "moving_speed"),
-                             to_float(moving_sigmas, "moving_sigmas"),
-                             to_float(moving_window, "moving_window"),
-                             to_float(prediction_window, "prediction_window"),
-                             to_float(free_margin, "free_margin"),
-                             to_float(max_speed, "max_speed"),
-                             to_float(uncertainty_sigmas, "uncertainty_sigmas"),
-                             to_float(max_uncertainty, "max_uncertainty")};
-             p.validate();
-             return p;
-           }),
-           py::arg("gate") = td.gate, py::arg("gate_sigmas") = td.gate_sigmas, py::arg("accel_std") = td.accel_std,
-           py::arg("measurement_std") = td.measurement_std, py::arg("confirm_hits") = td.confirm_hits,
-           py::arg("lost_time") = td.lost_time, py::arg("moving_speed") = td.moving_speed,
-           py::arg("moving_sigmas") = td.moving_sigmas, py::arg("moving_window") = td.moving_window,
-           py::arg("free_margin") = td.free_margin, py::arg("max_speed") = td.max_speed, py::arg("uncertainty_sigmas") = td.uncertainty_sigmas,
-           py::arg("max_uncertainty") = td.max_uncertainty, py::arg("prediction_window") = td.prediction_window)
-      .def_readonly("gate", &TrackerParams::gate)
-      .def_readonly("gate_sigmas", &TrackerParams::gate_sigmas)
-      .def_readonly("accel_std", &TrackerParams::accel_std)
-      .def_readonly("measurement_std", &TrackerParams::measurement_std)
-      .def_readonly("confirm_hits", &TrackerParams::confirm_hits)
-      .def_readonly("lost_time", &TrackerParams::lost_time)
-      .def_readonly("moving_speed", &TrackerParams::moving_speed)
-      .def_readonly("moving_sigmas", &TrackerParams::moving_sigmas)
-      .def_readonly("moving_window", &TrackerParams::moving_window)
-      .def_readonly("prediction_window", &TrackerParams::prediction_window)
-      .def_readonly("free_margin", &TrackerParams::free_margin)
-      .def_readonly("max_speed", &TrackerParams::max_speed)
-      .def_readonly("uncertainty_sigmas", &TrackerParams::uncertainty_sigmas)
-      .def_readonly("max_uncertainty", &TrackerParams::max_uncertainty)
-      .def("__repr__", [](const TrackerParams& p) {
-        std::ostringstream s;
-        s << "TrackerParams(gate=" << p.gate << ", gate_sigmas=" << p.gate_sigmas << ", accel_std=" << p.accel_std
-          << ", measurement_std=" << p.measurement_std << ", confirm_hits=" << p.confirm_hits
-          << ", lost_time=" << p.lost_time << ", moving_speed=" << p.moving_speed
-          << ", moving_sigmas=" << p.moving_sigmas << ", moving_window=" << p.moving_window
-          << ", prediction_window=" << p.prediction_window
-          << ", free_margin=" << p.free_margin
-          << ", max_speed=" << p.max_speed << ", uncertainty_sigmas=" << p.uncertainty_sigmas << ")";
-        return s.str();
-      });
+  bind_params<TrackerParams>(m, "TrackerParams", "Tracks of moving obstacles: association, Kalman filter, moving label.");
 
   py::class_<Track>(m, "Track", "One followed object: constant-velocity Kalman state and its moving label.")
       .def_readonly("id", &Track::id)

@@ -1,6 +1,8 @@
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include "fgdwa/error.hpp"
+#include "fgdwa/params.hpp"
 
 namespace py = pybind11;
 
@@ -44,4 +46,7 @@ PYBIND11_MODULE(_core, m) {
   init_mapping(m);
   init_tracking(m);
   init_navigator(m);
+  m.def("nearest_names", &fgdwa::nearest_names, py::arg("name"), py::arg("known"), py::arg("count") = 3,
+        "The names among `known` closest to `name` (edit distance, a dotted or '/'-joined name matched on its "
+        "last part too), best first: the 'did you mean' of every lookup by name.");
 }

@@ -6,10 +6,12 @@
 #include <set>
 #include <sstream>
 
+#include <ros/console.h>
 #include <ros/param.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
 #include "fgdwa/error.hpp"
+#include "fgdwa/params.hpp"
 #include "fgdwa/presets.hpp"
 
 namespace fgdwa_ros {
@@ -113,8 +115,7 @@ Entry choice(const std::string& name, Enum& field, std::vector<Enum> values) {
 }
 
 // ~planner/critics: a list of {name: heading, weight: 0.5, params: {key: number or word}}.
-Entry critics(std::vector<fgdwa::CriticConfig>& field) {
-  const std::string name = "planner/critics";
+Entry critics(const std::string& name, std::vector<fgdwa::CriticConfig>& field) {
   auto set = [name, &field](const XmlRpcValue& v) {
     if (v.getType() != XmlRpcValue::TypeArray || v.size() == 0)
       refuse(name, v, "must be a non-empty list of {name: ..., weight: ..., params: {...}}");
@@ -209,78 +210,63 @@ Entry footprint_radius(fgdwa::Footprint& field) {
   return {name, set, json};
 }
 
+// Entries for every field of a parameter struct, named "<prefix><field>" with
+// nested sets '/'-joined, as its schema lists them (fgdwa/params.hpp).
+template <class P>
+struct EntryCollector {
+  P& p;
+  std::string prefix;
+  std::vector<Entry>& out;
+
+  void real(const char* name, double P::*member, const char*, fgdwa::Bounds, const char*) {
+    out.push_back(number(prefix + name, p.*member));
+  }
+  void integer(const char* name, int P::*member, const char*, fgdwa::Bounds, const char*) {
+    out.push_back(fgdwa_ros::integer(prefix + name, p.*member));
+  }
+  void flag(const char* name, bool P::*member, const char*) { out.push_back(fgdwa_ros::flag(prefix + name, p.*member)); }
+  template <class E>
+  void choice(const char* name, E P::*member, const char*) {
+    const auto values = enum_values(E{});
+    out.push_back(fgdwa_ros::choice(prefix + name, p.*member, std::vector<E>(values.begin(), values.end())));
+  }
+  void text(const char* name, std::string P::*member, const char*) {
+    out.push_back(fgdwa_ros::text(prefix + name, p.*member));
+  }
+  template <class L>
+  void critics(const char* name, L P::*member, const char*) {
+    out.push_back(fgdwa_ros::critics(prefix + name, p.*member));
+  }
+  template <class G>
+  void group(const char* name, G P::*member, const char*) {
+    EntryCollector<G> nested{p.*member, prefix + name + "/", out};
+    G::fields(nested);
+  }
+};
+
+template <class P>
+void add_entries(P& params, std::vector<Entry>& out) {
+  EntryCollector<P> collector{params, std::string(P::kName) + "/", out};
+  P::fields(collector);
+}
+
 std::vector<Entry> entries(NodeConfig& c) {
   NodeParams& n = c.node;
-  fgdwa::RobotLimits& l = c.limits;
-  fgdwa::PlannerParams& p = c.planner;
-  fgdwa::NavigatorParams& g = c.navigator;
-  fgdwa::OccupancyParams& o = g.occupancy;
-  fgdwa::SegmentParams& s = g.segment;
-  fgdwa::TrackerParams& t = g.tracker;
-  fgdwa::DetectWindowParams& w = c.detect_window;
-  return {
+  std::vector<Entry> out = {
       text("preset", n.preset), text("robot", n.robot), text("scan_topic", n.scan_topic),
       text("odom_topic", n.odom_topic), text("cmd_vel_topic", n.cmd_vel_topic), text("map_topic", n.map_topic),
       text("global_frame", n.global_frame), text("base_frame", n.base_frame), text("mapping", n.mapping),
       number("map_resolution", n.map_resolution), number("map_margin", n.map_margin),
       integer("occupied_threshold", n.occupied_threshold), number("scan_timeout", n.scan_timeout),
       number("odom_timeout", n.odom_timeout), number("transform_timeout", n.transform_timeout),
-      footprint(c.footprint), footprint_radius(c.footprint),
-      number("limits/v_min", l.v_min), number("limits/v_max", l.v_max), number("limits/omega_max", l.omega_max),
-      number("limits/acc_v", l.acc_v), number("limits/acc_omega", l.acc_omega), number("limits/brake_v", l.brake_v),
-      number("limits/brake_omega", l.brake_omega),
-      number("planner/dt", p.dt), number("planner/sim_time", p.sim_time),
-      integer("planner/window/n_v", p.window.n_v), integer("planner/window/n_omega", p.window.n_omega),
-      choice("planner/normalization", p.normalization,
-             {fgdwa::Normalization::Sum, fgdwa::Normalization::MinMax, fgdwa::Normalization::None}),
-      choice("planner/braking", p.braking, {fgdwa::BrakingModel::Discrete, fgdwa::BrakingModel::Continuous}),
-      number("planner/goal_tolerance", p.goal_tolerance), number("planner/safety_margin", p.safety_margin),
-      number("planner/moving_horizon", p.moving_horizon),
-      number("planner/mover_caution_radius", p.mover_caution_radius),
-      number("planner/mover_speed_weight", p.mover_speed_weight),
-      choice("planner/heading_target", p.heading_target, {fgdwa::HeadingTarget::Goal, fgdwa::HeadingTarget::KeyNodes}),
-      number("planner/key_nodes/min_turn", p.key_nodes.min_turn),
-      number("planner/key_nodes/reach_radius", p.key_nodes.reach_radius),
-      flag("planner/key_nodes/require_sight", p.key_nodes.require_sight), critics(p.critics),
-      flag("fuzzy", c.fuzzy),
-      number("navigator/path_margin", g.path_margin), number("navigator/replan_period", g.replan_period),
-      number("navigator/stall_time", g.stall_time), number("navigator/stall_distance", g.stall_distance),
-      number("navigator/give_up_length", g.give_up_length), number("navigator/keep_clear", g.keep_clear),
-      number("navigator/sensed_close_radius", g.sensed_close_radius),
-      number("navigator/backup_distance", g.backup_distance), number("navigator/backup_speed", g.backup_speed),
-      number("navigator/rotate_limit", g.rotate_limit), number("navigator/wait_time", g.wait_time),
-      number("navigator/wait_radius", g.wait_radius), integer("navigator/max_recoveries", g.max_recoveries),
-      number("navigator/progress_reset", g.progress_reset), integer("navigator/record_top_k", g.record_top_k),
-      flag("navigator/track_moving", g.track_moving), number("navigator/mover_margin", g.mover_margin),
-      flag("navigator/route_around_movers", g.route_around_movers),
-      number("navigator/mover_route_horizon", g.mover_route_horizon),
-      number("navigator/mover_route_lookahead", g.mover_route_lookahead),
-      flag("navigator/learn_obstacles", g.learn_obstacles), number("navigator/unknown_cost", g.unknown_cost),
-      number("navigator/occupancy/hit", o.hit), number("navigator/occupancy/miss", o.miss),
-      number("navigator/occupancy/clamp_min", o.clamp_min), number("navigator/occupancy/clamp_max", o.clamp_max),
-      number("navigator/occupancy/occupied", o.occupied), number("navigator/occupancy/free", o.free),
-      number("navigator/occupancy/range_std", o.range_std),
-      number("navigator/occupancy/clear_range", o.clear_range),
-      number("navigator/occupancy/hit_share", o.hit_share), flag("navigator/occupancy/clear", o.clear),
-      number("navigator/segment/base_gap", s.base_gap),
-      number("navigator/segment/range_gap_factor", s.range_gap_factor),
-      integer("navigator/segment/min_points", s.min_points), number("navigator/segment/max_size", s.max_size),
-      number("navigator/segment/min_radius", s.min_radius), number("navigator/segment/range_noise", s.range_noise),
-      number("navigator/tracker/gate", t.gate), number("navigator/tracker/gate_sigmas", t.gate_sigmas),
-      number("navigator/tracker/accel_std", t.accel_std),
-      number("navigator/tracker/measurement_std", t.measurement_std),
-      integer("navigator/tracker/confirm_hits", t.confirm_hits), number("navigator/tracker/lost_time", t.lost_time),
-      number("navigator/tracker/moving_speed", t.moving_speed),
-      number("navigator/tracker/moving_sigmas", t.moving_sigmas),
-      number("navigator/tracker/moving_window", t.moving_window),
-      number("navigator/tracker/prediction_window", t.prediction_window),
-      number("navigator/tracker/free_margin", t.free_margin), number("navigator/tracker/max_speed", t.max_speed),
-      number("navigator/tracker/uncertainty_sigmas", t.uncertainty_sigmas),
-      number("navigator/tracker/max_uncertainty", t.max_uncertainty),
+      footprint(c.footprint), footprint_radius(c.footprint), flag("fuzzy", c.fuzzy),
       number("lidar/noise_std", c.lidar_noise_std),
-      number("detect_window/half_angle", w.half_angle), number("detect_window/radius", w.radius),
-      number("detect_window/base", w.base),
   };
+  add_entries(c.limits, out);
+  add_entries(c.planner, out);
+  add_entries(c.navigator, out);
+  add_entries(c.detect_window, out);
+  return out;
 }
 
 // Runs a struct's validate(), its message prefixed with where its fields live.
@@ -317,6 +303,53 @@ void NodeParams::validate() const {
   positive("transform_timeout", transform_timeout);
 }
 
+namespace {
+
+// move_base's TrajectoryPlannerROS / DWAPlannerROS and Nav2 DWB names that
+// mean one of fgdwa's parameters (docs/parameters.md, "Names from move_base
+// and Nav2"), bare or under their planner's namespace.
+struct MoveBaseAlias {
+  const char* name;
+  const char* target;
+  XmlRpcValue (*transform)(const std::string&, const XmlRpcValue&);
+};
+
+XmlRpcValue period_of_frequency(const std::string& name, const XmlRpcValue& value) {
+  const double frequency = as_number(name, value);
+  if (!(frequency > 0.0) || !std::isfinite(frequency)) refuse(name, value, "must be a finite number > 0 (Hz)");
+  return XmlRpcValue(1.0 / frequency);
+}
+
+constexpr MoveBaseAlias kAliases[] = {
+    {"max_vel_x", "limits/v_max", nullptr},
+    {"min_vel_x", "limits/v_min", nullptr},
+    {"max_vel_theta", "limits/omega_max", nullptr},
+    {"max_rot_vel", "limits/omega_max", nullptr},
+    {"max_vel_trans", "limits/v_max", nullptr},
+    {"acc_lim_x", "limits/acc_v", nullptr},
+    {"acc_lim_theta", "limits/acc_omega", nullptr},
+    {"decel_lim_x", "limits/brake_v", nullptr},
+    {"decel_lim_theta", "limits/brake_omega", nullptr},
+    {"vx_samples", "planner/window/n_v", nullptr},
+    {"vtheta_samples", "planner/window/n_omega", nullptr},
+    {"vth_samples", "planner/window/n_omega", nullptr},
+    {"sim_time", "planner/sim_time", nullptr},
+    {"xy_goal_tolerance", "planner/goal_tolerance", nullptr},
+    {"robot_radius", "footprint_radius", nullptr},
+    {"controller_frequency", "planner/dt", period_of_frequency},
+};
+
+const MoveBaseAlias* find_alias(const std::string& name) {
+  std::string bare = name;
+  for (const char* space : {"TrajectoryPlannerROS/", "DWAPlannerROS/", "FollowPath/"})
+    if (bare.rfind(space, 0) == 0) bare = bare.substr(std::string(space).size());
+  for (const MoveBaseAlias& alias : kAliases)
+    if (bare == alias.name) return &alias;
+  return nullptr;
+}
+
+}  // namespace
+
 NodeConfig read_config(const ros::NodeHandle& private_nh) {
   NodeConfig config;
   auto read = [&](const Entry& entry) {
@@ -349,11 +382,27 @@ NodeConfig read_config(const ros::NodeHandle& private_nh) {
   std::vector<std::string> names;
   ros::param::getParamNames(names);
   const std::string prefix = private_nh.getNamespace() + "/";
+  const std::vector<std::string> known_names(known.begin(), known.end());
   for (const std::string& full : names) {
     if (full.compare(0, prefix.size(), prefix) != 0) continue;
     const std::string name = full.substr(prefix.size());
-    if (!known.count(name))
-      throw Error("parameter ~" + name + ": unknown to fgdwa_node (see docs/ros.md for the names it reads)");
+    if (known.count(name)) continue;
+    if (const MoveBaseAlias* alias = find_alias(name)) {
+      const Entry* target = nullptr;
+      for (const Entry& entry : table)
+        if (entry.name == alias->target) target = &entry;
+      XmlRpcValue value;
+      private_nh.getParam(name, value);
+      if (alias->transform) value = alias->transform(name, value);
+      target->set(value);
+      ROS_INFO_STREAM("fgdwa_node: ~" << name << " (move_base's name) sets ~" << alias->target << " = " << shown(value));
+      continue;
+    }
+    std::string hint;
+    for (const std::string& near : fgdwa::nearest_names(name, known_names))
+      hint += std::string(hint.empty() ? "; did you mean ~" : " or ~") + near;
+    throw Error("parameter ~" + name + ": unknown to fgdwa_node" + (hint.empty() ? "" : hint + "?") +
+                " (docs/parameters.md lists the names it reads)");
   }
   if (private_nh.hasParam("footprint") && private_nh.hasParam("footprint_radius"))
     throw Error("parameters ~footprint and ~footprint_radius: give one of them, not both");

@@ -11,28 +11,14 @@
 
 namespace fgdwa {
 
-void OccupancyParams::validate() const {
-  // Log-odds are kept as floats: every value stays far inside their range.
-  constexpr double kMaxLogOdds = 1e3;
-  detail::require_positive("occupancy hit", hit);
-  detail::require_at_most("occupancy hit", hit, kMaxLogOdds);
-  detail::require_magnitude("occupancy miss", miss, kMaxLogOdds);
-  detail::require_magnitude("occupancy clamp_min", clamp_min, kMaxLogOdds);
-  detail::require_magnitude("occupancy clamp_max", clamp_max, kMaxLogOdds);
-  if (miss >= 0.0) throw Error("occupancy miss = " + std::to_string(miss) + ": must be < 0 (a pass is evidence of free space)");
-  detail::require_finite("occupancy occupied", occupied);
-  detail::require_finite("occupancy free", free);
+void OccupancyParams::check_relations(const std::string& path) const {
+  using detail::format_number;
   if (!(clamp_min <= free && free < occupied && occupied <= clamp_max))
-    throw Error("occupancy thresholds: need clamp_min <= free < occupied <= clamp_max, got " + std::to_string(clamp_min) +
-                " <= " + std::to_string(free) + " < " + std::to_string(occupied) + " <= " + std::to_string(clamp_max));
-  if (hit < occupied) throw Error("occupancy hit = " + std::to_string(hit) + ": must reach the occupied threshold (" +
-                                  std::to_string(occupied) + ") so that a first hit marks an unknown cell");
-  detail::require_non_negative("occupancy range_std", range_std);
-  if (!(hit_share > 0.0 && hit_share <= 1.0))
-    throw Error("occupancy hit_share = " + std::to_string(hit_share) + ": must be in (0, 1]");
-  detail::require_distance("occupancy edge_margin", edge_margin);
-  if (std::isnan(clear_range) || clear_range < 0.0)
-    throw Error("occupancy clear_range = " + std::to_string(clear_range) + ": must be >= 0 (m, inf for no limit)");
+    throw Error(path + ": need clamp_min <= free < occupied <= clamp_max, got " + format_number(clamp_min) + " <= " +
+                format_number(free) + " < " + format_number(occupied) + " <= " + format_number(clamp_max));
+  if (hit < occupied)
+    fail_param(param_path(path, "hit"), format_number(hit),
+               "must reach the occupied threshold (" + format_number(occupied) + ") so that a first hit marks an unknown cell");
 }
 
 const char* to_string(CellState state) {

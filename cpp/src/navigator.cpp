@@ -41,39 +41,6 @@ const char* to_string(MapMode mode) {
   return "?";
 }
 
-void NavigatorParams::validate() const {
-  const auto time = [](const char* field, double value) {
-    detail::require_non_negative(field, value);
-    detail::require_at_most(field, value, limits::kMaxHorizon);
-  };
-  detail::require_distance("path_margin", path_margin);
-  detail::require_positive("replan_period", replan_period);
-  time("replan_period", replan_period);
-  time("stall_time", stall_time);
-  detail::require_distance("stall_distance", stall_distance);
-  detail::require_distance("give_up_length", give_up_length);
-  detail::require_distance("keep_clear", keep_clear);
-  detail::require_distance("sensed_close_radius", sensed_close_radius);
-  detail::require_distance("backup_distance", backup_distance);
-  detail::require_positive("backup_speed", backup_speed);
-  detail::require_at_most("backup_speed", backup_speed, limits::kMaxSpeed);
-  detail::require_non_negative("rotate_limit", rotate_limit);
-  detail::require_at_most("rotate_limit", rotate_limit, limits::kMaxAngle);
-  time("wait_time", wait_time);
-  detail::require_distance("wait_radius", wait_radius);
-  detail::require_count("max_recoveries", max_recoveries, 0, limits::kMaxEventCount);
-  detail::require_distance("progress_reset", progress_reset);
-  detail::require_count("record_top_k", record_top_k, 0, limits::kMaxWindowSamples);
-  occupancy.validate();
-  segment.validate();
-  tracker.validate();
-  detail::require_non_negative("unknown_cost", unknown_cost);
-  detail::require_at_most("unknown_cost", unknown_cost, 1e6);
-  detail::require_distance("mover_margin", mover_margin);
-  time("mover_route_horizon", mover_route_horizon);
-  detail::require_distance("mover_route_lookahead", mover_route_lookahead);
-}
-
 namespace {
 
 using Clock = std::chrono::steady_clock;

@@ -91,12 +91,6 @@ void reference_samples(const GlobalPath& path, const Vec2& robot, double v_ref, 
   }
 }
 
-void KeyNodeParams::validate() const {
-  detail::require_non_negative("key_node_angle", min_turn);
-  if (min_turn >= M_PI) throw Error(detail::describe("key_node_angle", min_turn, "must be < pi"));
-  detail::require_distance("key_node_radius", reach_radius);
-}
-
 KeyNodeTracker::KeyNodeTracker(const GlobalPath& path, const KeyNodeParams& params)
     : path_(&path), params_(params), nodes_(path.key_nodes(params.min_turn)) {
   params_.validate();

@@ -14,16 +14,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }
 
-void LidarParams::validate() const {
-  detail::require_positive("lidar fov", fov);
-  if (fov > 2.0 * M_PI) throw Error(detail::describe("lidar fov", fov, "must be <= 2 pi"));
-  detail::require_count("lidar beams", beams, 1, limits::kMaxBeams);
-  detail::require_length("lidar max_range", max_range);
-  detail::require_distance("lidar noise_std", noise_std);
-  detail::require_non_negative("lidar dropout", dropout);
-  if (dropout >= 1.0) throw Error(detail::describe("lidar dropout", dropout, "must be < 1 (a probability)"));
-}
-
 void Scan::validate() const {
   detail::require_query_pose("scan pose", pose);
   detail::require_magnitude("scan angle_min", angle_min, 2.0 * M_PI);
@@ -240,14 +230,6 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
     if (std::isfinite(r) && params_.noise_std > 0.0) r = std::clamp(r + noise(rng), 0.0, params_.max_range);
     range = r;
   }
-}
-
-void DetectWindowParams::validate() const {
-  detail::require_positive("detect window half_angle", half_angle);
-  if (half_angle > M_PI) throw Error(detail::describe("detect window half_angle", half_angle, "must be <= pi"));
-  detail::require_length("detect window radius", radius);
-  detail::require_positive("detect window base", base);
-  detail::require_at_most("detect window base", base, 1e6);
 }
 
 DensityReading obstacle_density(const Scan& scan, const DetectWindowParams& params) {

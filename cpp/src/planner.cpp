@@ -67,28 +67,18 @@ void validate_passing_factors(const PassingFactors& factors) {
 
 int PlannerParams::n_steps() const { return static_cast<int>(std::lround(sim_time / dt)); }
 
-void PlannerParams::validate() const {
-  detail::require_time_step("dt", dt);
-  detail::require_positive("sim_time", sim_time);
-  detail::require_at_most("sim_time", sim_time, limits::kMaxHorizon);
+void PlannerParams::check_relations(const std::string& path) const {
   if (sim_time / dt > static_cast<double>(limits::kMaxRolloutSteps))
-    throw Error(detail::describe("sim_time", sim_time,
-                                 "covers more than " + std::to_string(limits::kMaxRolloutSteps) +
-                                     " steps of dt = " + detail::format_number(dt)));
-  if (n_steps() < 1) throw Error(detail::describe("sim_time", sim_time, "must be at least one dt"));
-  window.validate();
-  detail::require_distance("goal_tolerance", goal_tolerance);
-  detail::require_distance("safety_margin", safety_margin);
-  detail::require_non_negative("moving_horizon", moving_horizon);
-  detail::require_at_most("moving_horizon", moving_horizon, limits::kMaxHorizon);
-  detail::require_distance("mover_caution_radius", mover_caution_radius);
-  if (!(mover_speed_weight >= 0.0 && mover_speed_weight <= 1.0))
-    throw Error(detail::describe("mover_speed_weight", mover_speed_weight, "must be in [0, 1]"));
-  key_nodes.validate();
-  if (critics.empty()) throw Error("critics: at least one critic is needed");
+    fail_param(param_path(path, "sim_time"), detail::format_number(sim_time),
+               "covers more than " + std::to_string(limits::kMaxRolloutSteps) + " steps of dt = " +
+                   detail::format_number(dt) + " (s)");
+  if (n_steps() < 1)
+    fail_param(param_path(path, "sim_time"), detail::format_number(sim_time), "must be at least one dt (s)");
+  if (critics.empty()) throw Error(param_path(path, "critics") + ": at least one critic is needed");
   for (std::size_t i = 0; i < critics.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (critics[i].name == critics[j].name) throw Error("critics: '" + critics[i].name + "' is listed twice");
+      if (critics[i].name == critics[j].name)
+        throw Error(param_path(path, "critics") + ": '" + critics[i].name + "' is listed twice");
 }
 
 LocalPlanner::LocalPlanner(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& params)

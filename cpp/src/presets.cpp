@@ -107,7 +107,7 @@ PlannerPreset planner_preset(const std::string& name) {
 
 RobotPreset robot_preset(const std::string& name) {
   if (name == "default")
-    return RobotPreset{"default", "SPEC 1's robot: 1.2 m/s, 1 rad/s, circle of 0.25 m", RobotLimits{},
+    return RobotPreset{"default", "fgdwa's default robot: 1.2 m/s, 1 rad/s, circle of 0.25 m", RobotLimits{},
                        Footprint::circle(0.25)};
   if (name == "jackal") {
     // Clearpath's jackal_control/config/control.yaml: linear x max_velocity 2.0 m/s,

@@ -10,22 +10,14 @@ namespace fgdwa {
 
 using detail::describe;
 
-void RobotLimits::validate() const {
-  using limits::kMaxAcceleration;
-  using limits::kMaxSpeed;
-  detail::require_non_negative("v_min", v_min);
-  detail::require_positive("v_max", v_max);
-  detail::require_at_most("v_max", v_max, kMaxSpeed);
+void RobotLimits::check_relations(const std::string& path) const {
   if (v_min > v_max)
-    throw Error(describe("v_min", v_min, "must be <= v_max = " + detail::format_number(v_max)));
-  detail::require_positive("omega_max", omega_max);
-  detail::require_at_most("omega_max", omega_max, kMaxSpeed);
-  using limits::kMinAcceleration;
-  detail::require_in_range("acc_v", acc_v, kMinAcceleration, kMaxAcceleration);
-  detail::require_in_range("acc_omega", acc_omega, kMinAcceleration, kMaxAcceleration);
-  // 0: the acceleration's.
-  if (brake_v != 0.0) detail::require_in_range("brake_v", brake_v, kMinAcceleration, kMaxAcceleration);
-  if (brake_omega != 0.0) detail::require_in_range("brake_omega", brake_omega, kMinAcceleration, kMaxAcceleration);
+    fail_param(param_path(path, "v_min"), detail::format_number(v_min),
+               "must be <= v_max = " + detail::format_number(v_max) + " (m/s)");
+  for (const auto& [name, value] : {std::pair{"brake_v", brake_v}, std::pair{"brake_omega", brake_omega}})
+    if (value != 0.0 && value < limits::kMinAcceleration)
+      fail_param(param_path(path, name), detail::format_number(value),
+                 "must be 0 (the acceleration's) or >= " + detail::format_number(limits::kMinAcceleration) + " (m/s^2)");
 }
 
 Footprint Footprint::circle(double radius) {

@@ -13,16 +13,9 @@
 
 namespace fgdwa {
 
-void SegmentParams::validate() const {
-  detail::require_length("segment base_gap", base_gap);
-  detail::require_non_negative("segment range_gap_factor", range_gap_factor);
-  detail::require_at_most("segment range_gap_factor", range_gap_factor, 1e3);
-  detail::require_count("segment min_points", min_points, 1, limits::kMaxBeams);
-  detail::require_length("segment max_size", max_size);
-  detail::require_positive("segment min_radius", min_radius);
+void SegmentParams::check_relations(const std::string& path) const {
   if (min_radius > 0.5 * max_size)
-    throw Error(detail::describe("segment min_radius", min_radius, "must be <= max_size / 2"));
-  detail::require_length("segment range_noise", range_noise);
+    fail_param(param_path(path, "min_radius"), detail::format_number(min_radius), "must be <= max_size / 2 (m)");
 }
 
 void Cluster::validate(const std::string& name) const {

@@ -20,34 +20,6 @@ const char* to_string(TrackStatus status) {
   return "?";
 }
 
-void TrackerParams::validate() const {
-  using limits::kMaxHorizon;
-  using limits::kMaxSpeed;
-  detail::require_length("tracker gate", gate);
-  detail::require_positive("tracker gate_sigmas", gate_sigmas);
-  detail::require_at_most("tracker gate_sigmas", gate_sigmas, 1e3);
-  detail::require_positive("tracker accel_std", accel_std);
-  detail::require_at_most("tracker accel_std", accel_std, limits::kMaxAcceleration);
-  detail::require_length("tracker measurement_std", measurement_std);
-  detail::require_count("tracker confirm_hits", confirm_hits, 1, limits::kMaxEventCount);
-  detail::require_positive("tracker lost_time", lost_time);
-  detail::require_at_most("tracker lost_time", lost_time, kMaxHorizon);
-  detail::require_non_negative("tracker moving_speed", moving_speed);
-  detail::require_at_most("tracker moving_speed", moving_speed, kMaxSpeed);
-  detail::require_non_negative("tracker moving_sigmas", moving_sigmas);
-  detail::require_at_most("tracker moving_sigmas", moving_sigmas, 1e3);
-  detail::require_positive("tracker moving_window", moving_window);
-  detail::require_at_most("tracker moving_window", moving_window, kMaxHorizon);
-  detail::require_positive("tracker prediction_window", prediction_window);
-  detail::require_at_most("tracker prediction_window", prediction_window, kMaxHorizon);
-  detail::require_length("tracker free_margin", free_margin);
-  detail::require_positive("tracker max_speed", max_speed);
-  detail::require_at_most("tracker max_speed", max_speed, kMaxSpeed);
-  detail::require_non_negative("tracker uncertainty_sigmas", uncertainty_sigmas);
-  detail::require_at_most("tracker uncertainty_sigmas", uncertainty_sigmas, 1e3);
-  detail::require_distance("tracker max_uncertainty", max_uncertainty);
-}
-
 namespace {
 
 // Largest eigenvalue of a symmetric 2x2 matrix.

@@ -9,12 +9,10 @@
 
 namespace fgdwa {
 
-void WindowParams::validate() const {
-  detail::require_count("n_v", n_v, 1, limits::kMaxWindowSamplesPerAxis);
-  detail::require_count("n_omega", n_omega, 1, limits::kMaxWindowSamplesPerAxis);
-  if (static_cast<long>(n_v) * n_omega > limits::kMaxWindowSamples)
-    throw Error(detail::describe("n_v * n_omega", static_cast<long>(n_v) * n_omega,
-                                 "must be <= " + std::to_string(limits::kMaxWindowSamples)));
+void WindowParams::check_relations(const std::string& path) const {
+  const long total = static_cast<long>(n_v) * n_omega;
+  if (total > limits::kMaxWindowSamples)
+    fail_param(path + ".n_v * n_omega", std::to_string(total), "must be <= " + std::to_string(limits::kMaxWindowSamples));
 }
 
 void VelocityWindow::validate() const {

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'Status', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'step', 'wrap_angle']
+__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'Status', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -61,62 +61,67 @@ class Twist:
         ...
 class RobotLimits:
     """
-    Velocity and acceleration limits of a differential-drive robot (SI units). brake_v / brake_omega of 0 mean: equal to the accelerations.
+    Velocity and acceleration limits of a differential-drive robot.
+    
+    Keyword arguments, attributes (SI units, radians):
+      v_min (m/s): slowest forward speed (0: forward only, down to standing)
+      v_max (m/s): fastest forward speed
+      omega_max (rad/s): symmetric turn-rate limit
+      acc_v (m/s^2): linear acceleration
+      acc_omega (rad/s^2): angular acceleration
+      brake_v (m/s^2): linear braking deceleration; 0: the same as acc_v
+      brake_omega (rad/s^2): angular braking deceleration; 0: the same as acc_omega
     """
-    def __init__(self, v_min: typing.SupportsFloat | typing.SupportsIndex = 0.0, v_max: typing.SupportsFloat | typing.SupportsIndex = 1.2, omega_max: typing.SupportsFloat | typing.SupportsIndex = 1.0, acc_v: typing.SupportsFloat | typing.SupportsIndex = 1.0, acc_omega: typing.SupportsFloat | typing.SupportsIndex = 2.0, brake_v: typing.SupportsFloat | typing.SupportsIndex = 0.0, brake_omega: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'limits'
+    acc_omega: typing.Any
+    acc_v: typing.Any
+    brake_omega: typing.Any
+    brake_v: typing.Any
+    omega_max: typing.Any
+    v_max: typing.Any
+    v_min: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> RobotLimits:
         ...
+    def __deepcopy__(self, arg0: typing.Any) -> RobotLimits:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
     def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
         ...
     def braking_omega(self) -> float:
         ...
     def braking_v(self) -> float:
         ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
     def validate(self) -> None:
         """
-        Raise FgdwaError naming the first bad field.
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
         """
-    @property
-    def acc_omega(self) -> float:
-        ...
-    @acc_omega.setter
-    def acc_omega(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
-        ...
-    @property
-    def acc_v(self) -> float:
-        ...
-    @acc_v.setter
-    def acc_v(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
-        ...
-    @property
-    def brake_omega(self) -> float:
-        ...
-    @brake_omega.setter
-    def brake_omega(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
-        ...
-    @property
-    def brake_v(self) -> float:
-        ...
-    @brake_v.setter
-    def brake_v(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
-        ...
-    @property
-    def omega_max(self) -> float:
-        ...
-    @omega_max.setter
-    def omega_max(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
-        ...
-    @property
-    def v_max(self) -> float:
-        ...
-    @v_max.setter
-    def v_max(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
-        ...
-    @property
-    def v_min(self) -> float:
-        ...
-    @v_min.setter
-    def v_min(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
-        ...
 class RobotState:
     """
     Pose and velocity of the robot.
@@ -479,32 +484,64 @@ class GlobalPath:
         ...
 class LidarParams:
     """
-    A planar lidar: field of view (deg), beams, max range (m), range noise (m), the probability a beam returns nothing (reads +inf).
+    A planar lidar.
+    
+    Keyword arguments, attributes (SI units, radians):
+      fov (rad): field of view centred on the heading
+      beams: beams, both ends of the field of view included
+      max_range (m): a beam with no hit within it reads +inf
+      noise_std (m): Gaussian noise added to each hit's range
+      dropout: probability that a beam returns nothing and reads +inf
     """
-    def __init__(self, fov_deg: typing.SupportsFloat | typing.SupportsIndex = 270.0, beams: typing.SupportsInt | typing.SupportsIndex = 541, max_range: typing.SupportsFloat | typing.SupportsIndex = 10.0, noise_std: typing.SupportsFloat | typing.SupportsIndex = 0.0, dropout: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'lidar'
+    beams: typing.Any
+    dropout: typing.Any
+    fov: typing.Any
+    max_range: typing.Any
+    noise_std: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> LidarParams:
         ...
+    def __deepcopy__(self, arg0: typing.Any) -> LidarParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
     def __repr__(self) -> str:
         ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
     @property
     def angles(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         Beam angles relative to the heading, rad.
         """
-    @property
-    def beams(self) -> int:
-        ...
-    @property
-    def dropout(self) -> float:
-        ...
-    @property
-    def fov_deg(self) -> float:
-        ...
-    @property
-    def max_range(self) -> float:
-        ...
-    @property
-    def noise_std(self) -> float:
-        ...
 class Scan:
     """
     One lidar scan: ranges (m, +inf for no hit) of beams from angle_min by angle_increment.
@@ -558,19 +595,55 @@ class LaserScanner:
         ...
 class DetectWindowParams:
     """
-    The detect window: +-half_angle_deg about the heading, radius R (m), base c of Eq. 13.
+    The detect window ahead of the robot, over which the density I is measured.
+    
+    Keyword arguments, attributes (SI units, radians):
+      half_angle (rad): the window spans +-half_angle about the heading
+      radius (m): the window's radius R
+      base: the base c of the density's exponential weight (Eq. 13)
     """
-    def __init__(self, half_angle_deg: typing.SupportsFloat | typing.SupportsIndex = 60.0, radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, base: typing.SupportsFloat | typing.SupportsIndex = 0.5) -> None:
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'detect_window'
+    base: typing.Any
+    half_angle: typing.Any
+    radius: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> DetectWindowParams:
         ...
-    @property
-    def base(self) -> float:
+    def __deepcopy__(self, arg0: typing.Any) -> DetectWindowParams:
         ...
-    @property
-    def half_angle_deg(self) -> float:
+    def __eq__(self, arg0: typing.Any) -> bool:
         ...
-    @property
-    def radius(self) -> float:
+    def __getstate__(self) -> dict:
         ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
 class DensityReading:
     """
     Obstacle density I of the detect window and its parts.
@@ -799,67 +872,182 @@ class RejectReason:
     @property
     def value(self) -> int:
         ...
-class PlannerParams:
+class WindowParams:
     """
-    Parameters of the local planner (SI units).
+    Samples of the dynamic window.
+    
+    Keyword arguments, attributes (SI units, radians):
+      n_v: samples of the linear velocity, both window ends included
+      n_omega: samples of the angular velocity, both window ends included
     """
-    def __init__(self, dt: typing.SupportsFloat | typing.SupportsIndex = 0.15, sim_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, n_v: typing.SupportsInt | typing.SupportsIndex = 21, n_omega: typing.SupportsInt | typing.SupportsIndex = 21, normalization: str = 'sum', braking: str = 'discrete', goal_tolerance: typing.SupportsFloat | typing.SupportsIndex = 0.3, critics: typing.Any = None, heading_target: str = 'goal', key_node_angle_deg: typing.SupportsFloat | typing.SupportsIndex = 10.0, key_node_radius: typing.SupportsFloat | typing.SupportsIndex = 1.0, safety_margin: typing.SupportsFloat | typing.SupportsIndex = 0.02, key_node_sight: bool = False, moving_horizon: typing.SupportsFloat | typing.SupportsIndex = 1.0, mover_caution_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, mover_speed_weight: typing.SupportsFloat | typing.SupportsIndex = 0.5) -> None:
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'window'
+    n_omega: typing.Any
+    n_v: typing.Any
+    @staticmethod
+    def schema() -> list:
         """
-        dt: control period and rollout step (s); sim_time: rollout horizon (s); n_v, n_omega: sample counts; normalization: 'sum', 'minmax' or 'none' (raw terms, as Nav2's DWB adds them); braking: 'discrete' (stop within the free distance with one control period of latency and stepped deceleration) or 'continuous' (Eq. 3 as written); goal_tolerance (m); critics: list of CriticConfig, dicts or (name, weight[, params]) tuples (default: heading 0.5, clearance 0.15, velocity 1.0); heading_target: 'goal' (DWA) or 'key_nodes' (GDWA: the first key node of the global path not yet reached); key_node_angle_deg: turn that makes a vertex a key node; key_node_radius (m): a key node this near is reached; safety_margin (m): a rollout closer than this to an obstacle counts as in contact (never more than the robot's own clearance); key_node_sight: a key node within key_node_radius counts as reached only once the next one is in sight (default False: SPEC 5 as written); moving_horizon (s): a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: moving obstacles count only as the braking rule counts them); while a moving obstacle is within mover_caution_radius (m) the velocity critic's weight is multiplied by mover_speed_weight (in [0, 1]; 1: no change).
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> WindowParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> WindowParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
         """
     def __repr__(self) -> str:
         ...
-    @property
-    def braking(self) -> str:
+    def __setstate__(self, arg0: dict) -> None:
         ...
-    @property
-    def critics(self) -> list[CriticConfig]:
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
+class KeyNodeParams:
+    """
+    Key nodes of the global path: the temporary targets of GDWA.
+    
+    Keyword arguments, attributes (SI units, radians):
+      min_turn (rad): turn that makes a path vertex a key node
+      reach_radius (m): a key node closer than this is reached
+      require_sight: a key node within reach_radius counts as reached only once the next one is in sight
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'key_nodes'
+    min_turn: typing.Any
+    reach_radius: typing.Any
+    require_sight: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> KeyNodeParams:
         ...
-    @property
-    def dt(self) -> float:
+    def __deepcopy__(self, arg0: typing.Any) -> KeyNodeParams:
         ...
-    @property
-    def goal_tolerance(self) -> float:
+    def __eq__(self, arg0: typing.Any) -> bool:
         ...
-    @property
-    def heading_target(self) -> str:
+    def __getstate__(self) -> dict:
         ...
-    @property
-    def key_node_angle_deg(self) -> float:
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
         ...
-    @property
-    def key_node_radius(self) -> float:
+    def __setstate__(self, arg0: dict) -> None:
         ...
-    @property
-    def key_node_sight(self) -> bool:
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
+class PlannerParams:
+    """
+    Parameters of the local planner.
+    
+    Keyword arguments, attributes (SI units, radians):
+      dt (s): control period and rollout step
+      sim_time (s): rollout horizon (the paper's perDT)
+      window: samples of the dynamic window
+      normalization: how each critic's terms are scaled before weighting: sum (classic DWA), minmax, or none (raw, as Nav2's DWB adds them)
+      braking: admissibility's braking rule (Eq. 3): discrete (one period of latency, stepped deceleration) or continuous (the paper's literal form)
+      goal_tolerance (m): GoalReached within this distance of the goal
+      safety_margin (m): clearance below which a rollout counts as in contact (never more than the robot's own)
+      moving_horizon (s): a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: only the braking rule counts movers)
+      mover_caution_radius (m): while a moving obstacle is this near the footprint, the velocity critic's weight is scaled by mover_speed_weight
+      mover_speed_weight: the velocity critic's weight factor beside a mover (1: no change)
+      heading_target: what the heading critic aims at: goal (DWA) or key_nodes (GDWA: the first key node of the global path not yet reached)
+      key_nodes: key nodes of the global path, for heading_target key_nodes
+      critics: the critics scored, each {name, weight, params} (default heading 0.5, clearance 0.15, velocity 1.0)
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'planner'
+    braking: typing.Any
+    critics: typing.Any
+    dt: typing.Any
+    goal_tolerance: typing.Any
+    heading_target: typing.Any
+    key_nodes: typing.Any
+    mover_caution_radius: typing.Any
+    mover_speed_weight: typing.Any
+    moving_horizon: typing.Any
+    normalization: typing.Any
+    safety_margin: typing.Any
+    sim_time: typing.Any
+    window: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> PlannerParams:
         ...
-    @property
-    def mover_caution_radius(self) -> float:
+    def __deepcopy__(self, arg0: typing.Any) -> PlannerParams:
         ...
-    @property
-    def mover_speed_weight(self) -> float:
+    def __eq__(self, arg0: typing.Any) -> bool:
         ...
-    @property
-    def moving_horizon(self) -> float:
+    def __getstate__(self) -> dict:
         ...
-    @property
-    def n_omega(self) -> int:
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
         ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
     @property
     def n_steps(self) -> int:
-        ...
-    @property
-    def n_v(self) -> int:
-        ...
-    @property
-    def normalization(self) -> str:
-        ...
-    @property
-    def safety_margin(self) -> float:
-        ...
-    @property
-    def sim_time(self) -> float:
-        ...
+        """
+        Poses per rollout: sim_time / dt, rounded.
+        """
 class PlanResult:
     """
     One control cycle's command, status and per-sample diagnostics.
@@ -1266,46 +1454,70 @@ class Controller:
 class OccupancyParams:
     """
     The log-odds update of a ScanMap's cells (defaults: OctoMap's probabilities).
+    
+    Keyword arguments, attributes (SI units, radians):
+      hit: log-odds added to the cell of a hit
+      miss: log-odds added to each cell a beam passes (< 0: a pass is evidence of free space)
+      clamp_min: lowest log-odds a cell holds
+      clamp_max: highest log-odds a cell holds
+      occupied: a cell at or above this log-odds turns occupied
+      free: at or below this an occupied cell turns free (between free and occupied it keeps its state)
+      range_std (m): the lidar's range noise: hits placed 2 std beyond, clearing stops 3 std short
+      clear_range (m): the farthest a beam clears (inf: no limit)
+      hit_share: a cell some beams of a scan end in and others pass is hit when at least this share end in it
+      clear: beams clear the cells they pass (false: hits only, for static worlds)
+      edge_margin (m): the free margin the map's distance field keeps past the grid's edge
     """
-    def __init__(self, hit: typing.SupportsFloat | typing.SupportsIndex = 0.85, miss: typing.SupportsFloat | typing.SupportsIndex = -0.4, clamp_min: typing.SupportsFloat | typing.SupportsIndex = -2.0, clamp_max: typing.SupportsFloat | typing.SupportsIndex = 3.5, occupied: typing.SupportsFloat | typing.SupportsIndex = 0.5, free: typing.SupportsFloat | typing.SupportsIndex = -0.5, range_std: typing.SupportsFloat | typing.SupportsIndex = 0.0, clear_range: typing.SupportsFloat | typing.SupportsIndex = ..., hit_share: typing.SupportsFloat | typing.SupportsIndex = 0.2, clear: bool = True, edge_margin: typing.SupportsFloat | typing.SupportsIndex = 3.0) -> None:
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'occupancy'
+    clamp_max: typing.Any
+    clamp_min: typing.Any
+    clear: typing.Any
+    clear_range: typing.Any
+    edge_margin: typing.Any
+    free: typing.Any
+    hit: typing.Any
+    hit_share: typing.Any
+    miss: typing.Any
+    occupied: typing.Any
+    range_std: typing.Any
+    @staticmethod
+    def schema() -> list:
         """
-        hit / miss: log-odds added to a hit's cell / to each cell a beam passes; clamp_min, clamp_max: the range a cell's log-odds stays in; a cell turns occupied at `occupied` and free again at `free`; range_std (m): the lidar's range noise (hits placed 2 std beyond the reading, clearing stops 3 std short); clear_range (m): the farthest a beam clears; hit_share: a cell some beams of a scan end in and others pass is hit when at least this share end in it; clear=False: hits only, nothing clears; edge_margin (m): the free margin the map's field keeps past the grid's edge (DistanceField).
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> OccupancyParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> OccupancyParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
         """
     def __repr__(self) -> str:
         ...
-    @property
-    def clamp_max(self) -> float:
+    def __setstate__(self, arg0: dict) -> None:
         ...
-    @property
-    def clamp_min(self) -> float:
-        ...
-    @property
-    def clear(self) -> bool:
-        ...
-    @property
-    def clear_range(self) -> float:
-        ...
-    @property
-    def edge_margin(self) -> float:
-        ...
-    @property
-    def free(self) -> float:
-        ...
-    @property
-    def hit(self) -> float:
-        ...
-    @property
-    def hit_share(self) -> float:
-        ...
-    @property
-    def miss(self) -> float:
-        ...
-    @property
-    def occupied(self) -> float:
-        ...
-    @property
-    def range_std(self) -> float:
-        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
 class ScanMap:
     """
     A map built from lidar scans: log-odds per cell, beams ray-traced (the cells they pass are evidence of free space, the hit's cell of an obstacle), so spurious hits and moved objects fade.
@@ -1360,30 +1572,61 @@ class ScanMap:
         """
 class SegmentParams:
     """
-    How segment_scan cuts a scan into clusters: breakpoint gap (m, growing by range_gap_factor m per m of range), min_points, max_size (m), min_radius (m) of a fitted disc, range_noise (m) the disc fit assumes.
+    How a scan's hits are split into clusters (objects to track).
+    
+    Keyword arguments, attributes (SI units, radians):
+      base_gap (m): consecutive hits farther apart than base_gap + range_gap_factor * range start a new cluster
+      range_gap_factor (m/m): the gap's growth per metre of range (beams spread with range)
+      min_points: hits of the smallest cluster kept (smaller ones are noise)
+      max_size (m): clusters whose oriented box is longer (walls) are not tracked
+      min_radius (m): smallest fitted disc radius (the largest is max_size / 2)
+      range_noise (m): range noise std the disc fit assumes when weighing hits against the apparent width
     """
-    def __init__(self, base_gap: typing.SupportsFloat | typing.SupportsIndex = 0.15, range_gap_factor: typing.SupportsFloat | typing.SupportsIndex = 0.03, min_points: typing.SupportsInt | typing.SupportsIndex = 3, max_size: typing.SupportsFloat | typing.SupportsIndex = 1.6, min_radius: typing.SupportsFloat | typing.SupportsIndex = 0.05, range_noise: typing.SupportsFloat | typing.SupportsIndex = 0.03) -> None:
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'segment'
+    base_gap: typing.Any
+    max_size: typing.Any
+    min_points: typing.Any
+    min_radius: typing.Any
+    range_gap_factor: typing.Any
+    range_noise: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> SegmentParams:
         ...
+    def __deepcopy__(self, arg0: typing.Any) -> SegmentParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
     def __repr__(self) -> str:
         ...
-    @property
-    def base_gap(self) -> float:
+    def __setstate__(self, arg0: dict) -> None:
         ...
-    @property
-    def max_size(self) -> float:
-        ...
-    @property
-    def min_points(self) -> int:
-        ...
-    @property
-    def min_radius(self) -> float:
-        ...
-    @property
-    def range_gap_factor(self) -> float:
-        ...
-    @property
-    def range_noise(self) -> float:
-        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
 class OrientedBox:
     """
     A box along the principal axes of a cluster's hits.
@@ -1490,54 +1733,77 @@ class TrackStatus:
         ...
 class TrackerParams:
     """
-    Tracker settings: gates (m and std devs), accel_std (m/s^2), measurement_std (m), confirm_hits, lost_time (s), moving test (moving_speed m/s, moving_sigmas, moving_window s, free_margin m), prediction_window (s, velocity fit for prediction), max_speed (m/s), uncertainty_sigmas, max_uncertainty (m).
+    Tracks of moving obstacles: association, Kalman filter, moving label.
+    
+    Keyword arguments, attributes (SI units, radians):
+      gate (m): largest distance between a track's prediction and a cluster it may take
+      gate_sigmas: the same gate in standard deviations of the prediction (Mahalanobis)
+      accel_std (m/s^2): white-noise acceleration of the constant-velocity model
+      measurement_std (m): std of an unoccluded cluster centre (and the least scatter the moving test assumes)
+      confirm_hits: associations before a tentative track is confirmed
+      lost_time (s): time without association before a track is lost; removed after another lost_time
+      moving_speed (m/s): a confirmed track whose window speed, less moving_sigmas std, exceeds this is moving
+      moving_sigmas: std devs taken off the window speed before comparing it with moving_speed
+      moving_window (s): the window speed is the slope of a line fitted to the centres this far back
+      prediction_window (s): the predicted velocity is the slope of the centres this far back (no farther than moving_window)
+      free_margin (m): a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
+      max_speed (m/s): an association implying more speed is rejected
+      uncertainty_sigmas: std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead
+      max_uncertainty (m): the most the position's uncertainty adds to a disc (a coasting track's grows)
     """
-    def __init__(self, gate: typing.SupportsFloat | typing.SupportsIndex = 1.0, gate_sigmas: typing.SupportsFloat | typing.SupportsIndex = 4.0, accel_std: typing.SupportsFloat | typing.SupportsIndex = 1.5, measurement_std: typing.SupportsFloat | typing.SupportsIndex = 0.03, confirm_hits: typing.SupportsInt | typing.SupportsIndex = 3, lost_time: typing.SupportsFloat | typing.SupportsIndex = 0.5, moving_speed: typing.SupportsFloat | typing.SupportsIndex = 0.1, moving_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, moving_window: typing.SupportsFloat | typing.SupportsIndex = 1.0, free_margin: typing.SupportsFloat | typing.SupportsIndex = 0.1, max_speed: typing.SupportsFloat | typing.SupportsIndex = 3.0, uncertainty_sigmas: typing.SupportsFloat | typing.SupportsIndex = 2.0, max_uncertainty: typing.SupportsFloat | typing.SupportsIndex = 0.3, prediction_window: typing.SupportsFloat | typing.SupportsIndex = 0.6) -> None:
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'tracker'
+    accel_std: typing.Any
+    confirm_hits: typing.Any
+    free_margin: typing.Any
+    gate: typing.Any
+    gate_sigmas: typing.Any
+    lost_time: typing.Any
+    max_speed: typing.Any
+    max_uncertainty: typing.Any
+    measurement_std: typing.Any
+    moving_sigmas: typing.Any
+    moving_speed: typing.Any
+    moving_window: typing.Any
+    prediction_window: typing.Any
+    uncertainty_sigmas: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> TrackerParams:
         ...
+    def __deepcopy__(self, arg0: typing.Any) -> TrackerParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
     def __repr__(self) -> str:
         ...
-    @property
-    def accel_std(self) -> float:
+    def __setstate__(self, arg0: dict) -> None:
         ...
-    @property
-    def confirm_hits(self) -> int:
-        ...
-    @property
-    def free_margin(self) -> float:
-        ...
-    @property
-    def gate(self) -> float:
-        ...
-    @property
-    def gate_sigmas(self) -> float:
-        ...
-    @property
-    def lost_time(self) -> float:
-        ...
-    @property
-    def max_speed(self) -> float:
-        ...
-    @property
-    def max_uncertainty(self) -> float:
-        ...
-    @property
-    def measurement_std(self) -> float:
-        ...
-    @property
-    def moving_sigmas(self) -> float:
-        ...
-    @property
-    def moving_speed(self) -> float:
-        ...
-    @property
-    def moving_window(self) -> float:
-        ...
-    @property
-    def prediction_window(self) -> float:
-        ...
-    @property
-    def uncertainty_sigmas(self) -> float:
-        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
 class Track:
     """
     One followed object: constant-velocity Kalman state and its moving label.
@@ -1755,89 +2021,99 @@ class FailureReason:
         ...
 class NavigatorParams:
     """
-    Replanning and recovery settings of a Navigator (SPEC 13).
+    Replanning, recovery, the map from scans and moving obstacles of a Navigator.
+    
+    Keyword arguments, attributes (SI units, radians):
+      path_margin (m): kept beyond the footprint's circumscribed radius by the global path where the map allows
+      replan_period (s): shortest time between two replans for a blocked path
+      stall_time (s): time over which too little progress is a stall (0: never stalls)
+      stall_distance (m): progress in stall_time below which the robot has stalled
+      give_up_length (m): path ahead closed to the global planner after a stall
+      keep_clear (m): around the robot and the goal, never closed by a stall
+      sensed_close_radius (m): at a stall, the scan's hits the map lacks this near are closed to the global planner
+      backup_distance (m): driven straight back after a stall
+      backup_speed (m/s): reverse speed while backing up
+      rotate_limit (rad): the most a rotation recovery turns
+      wait_time (s): standing still for a moving obstacle to pass
+      wait_radius (m): a known moving obstacle this near at a stall makes the robot wait
+      max_recoveries: recoveries in a row without progress before Failed
+      progress_reset (m): distance from where the last recovery began that counts as progress
+      record_top_k: best-scored rollouts kept in each CycleRecord
+      occupancy: the map built from scans (its range_std is at least the lidar's noise_std)
+      track_moving: segment and track moving obstacles in the scans (false: every hit is static where it is, the ablation)
+      mover_margin (m): added to a tracked mover's radius: room for a mover to change its mind
+      route_around_movers: the global path keeps off the floor each mover sweeps over mover_route_horizon (false: movers reach only the local planner)
+      mover_route_horizon (s): how far ahead a mover's sweep is closed to the global planner
+      mover_route_lookahead (m): a sweep within the inscribed radius of this much path ahead asks for a new path
+      segment: scan segmentation into clusters
+      tracker: tracks of moving obstacles
+      learn_obstacles: with a known map, obstacles the scans find that it lacks join it (false: they reach only the local planner)
+      unknown_cost: extra cost per metre of global path through cells the scans have not observed (0: unknown is free)
     """
-    def __init__(self, path_margin: typing.SupportsFloat | typing.SupportsIndex = 0.3, replan_period: typing.SupportsFloat | typing.SupportsIndex = 0.5, stall_time: typing.SupportsFloat | typing.SupportsIndex = 3.0, stall_distance: typing.SupportsFloat | typing.SupportsIndex = 0.1, give_up_length: typing.SupportsFloat | typing.SupportsIndex = 0.6, keep_clear: typing.SupportsFloat | typing.SupportsIndex = 0.3, sensed_close_radius: typing.SupportsFloat | typing.SupportsIndex = 2.0, backup_distance: typing.SupportsFloat | typing.SupportsIndex = 0.3, backup_speed: typing.SupportsFloat | typing.SupportsIndex = 0.2, rotate_limit_deg: typing.SupportsFloat | typing.SupportsIndex = 360.0, wait_time: typing.SupportsFloat | typing.SupportsIndex = 2.0, wait_radius: typing.SupportsFloat | typing.SupportsIndex = 1.5, max_recoveries: typing.SupportsInt | typing.SupportsIndex = 6, progress_reset: typing.SupportsFloat | typing.SupportsIndex = 1.0, record_top_k: typing.SupportsInt | typing.SupportsIndex = 5, occupancy: OccupancyParams = ..., unknown_cost: typing.SupportsFloat | typing.SupportsIndex = 0.0, track_moving: bool = True, segment: SegmentParams = ..., tracker: TrackerParams = ..., learn_obstacles: bool = True, mover_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0, route_around_movers: bool = True, mover_route_horizon: typing.SupportsFloat | typing.SupportsIndex = 1.0, mover_route_lookahead: typing.SupportsFloat | typing.SupportsIndex = 3.0) -> None:
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'navigator'
+    backup_distance: typing.Any
+    backup_speed: typing.Any
+    give_up_length: typing.Any
+    keep_clear: typing.Any
+    learn_obstacles: typing.Any
+    max_recoveries: typing.Any
+    mover_margin: typing.Any
+    mover_route_horizon: typing.Any
+    mover_route_lookahead: typing.Any
+    occupancy: typing.Any
+    path_margin: typing.Any
+    progress_reset: typing.Any
+    record_top_k: typing.Any
+    replan_period: typing.Any
+    rotate_limit: typing.Any
+    route_around_movers: typing.Any
+    segment: typing.Any
+    sensed_close_radius: typing.Any
+    stall_distance: typing.Any
+    stall_time: typing.Any
+    track_moving: typing.Any
+    tracker: typing.Any
+    unknown_cost: typing.Any
+    wait_radius: typing.Any
+    wait_time: typing.Any
+    @staticmethod
+    def schema() -> list:
         """
-        path_margin: m kept beyond the footprint's radius by the global path where the map allows; replan_period: s between replans for a blocked path; stall_time: s over which less than stall_distance (m) of progress is a stall (0: never); give_up_length: m of path ahead closed to the global planner after a stall, except within keep_clear (m) of the robot and the goal; sensed_close_radius (m): at a stall, the scan's hits the map lacks this near are closed to the global planner too; backup_distance (m) at backup_speed (m/s); rotate_limit_deg: the most a rotation recovery turns; wait_time (s) for a known moving obstacle within wait_radius (m); max_recoveries in a row without progress_reset (m) of progress before Failed; record_top_k: best rollouts kept in each CycleRecord; occupancy: the map built from scans (its range_std is at least the lidar's noise_std); unknown_cost: extra cost per metre of the global path through cells the scans have not observed (0: unknown is free); track_moving: segment and track moving obstacles in the scans, predict them in the planner and keep their hits out of the map (False: every hit is static where it is, the ablation); segment, tracker: their settings; learn_obstacles: with a known map, obstacles the scans find that it lacks join it (False: they reach only the local planner, and the global one at a stall); mover_margin (m): added to a tracked mover's radius; route_around_movers: the global path keeps off the floor each moving obstacle sweeps over the next mover_route_horizon (s) at its predicted velocity, and a sweep within the footprint's inscribed radius of the path's next mover_route_lookahead (m) asks for a new path (False: movers reach only the local planner).
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> NavigatorParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> NavigatorParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
         """
     def __repr__(self) -> str:
         ...
-    @property
-    def backup_distance(self) -> float:
+    def __setstate__(self, arg0: dict) -> None:
         ...
-    @property
-    def backup_speed(self) -> float:
-        ...
-    @property
-    def give_up_length(self) -> float:
-        ...
-    @property
-    def keep_clear(self) -> float:
-        ...
-    @property
-    def learn_obstacles(self) -> bool:
-        ...
-    @property
-    def max_recoveries(self) -> int:
-        ...
-    @property
-    def mover_margin(self) -> float:
-        ...
-    @property
-    def mover_route_horizon(self) -> float:
-        ...
-    @property
-    def mover_route_lookahead(self) -> float:
-        ...
-    @property
-    def occupancy(self) -> OccupancyParams:
-        ...
-    @property
-    def path_margin(self) -> float:
-        ...
-    @property
-    def progress_reset(self) -> float:
-        ...
-    @property
-    def record_top_k(self) -> int:
-        ...
-    @property
-    def replan_period(self) -> float:
-        ...
-    @property
-    def rotate_limit_deg(self) -> float:
-        ...
-    @property
-    def route_around_movers(self) -> bool:
-        ...
-    @property
-    def segment(self) -> SegmentParams:
-        ...
-    @property
-    def sensed_close_radius(self) -> float:
-        ...
-    @property
-    def stall_distance(self) -> float:
-        ...
-    @property
-    def stall_time(self) -> float:
-        ...
-    @property
-    def track_moving(self) -> bool:
-        ...
-    @property
-    def tracker(self) -> TrackerParams:
-        ...
-    @property
-    def unknown_cost(self) -> float:
-        ...
-    @property
-    def wait_radius(self) -> float:
-        ...
-    @property
-    def wait_time(self) -> float:
-        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
 class ScoredRollout:
     """
     A rollout the planner scored: its sample, command, total, poses.
@@ -2021,6 +2297,10 @@ def inflate(grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing
     """
     (rows, cols) uint8, 1 where a robot of that radius cannot centre: obstacles, cells nearer than the radius to one, and grade-4 terrain.
     """
+def nearest_names(name: str, known: collections.abc.Sequence[str], count: typing.SupportsInt | typing.SupportsIndex = 3) -> list[str]:
+    """
+    The names among `known` closest to `name` (edit distance, a dotted or '/'-joined name matched on its last part too), best first: the 'did you mean' of every lookup by name.
+    """
 def obstacle_density(scan: Scan, window: DetectWindowParams = ...) -> DensityReading:
     """
     Eq. 13: I = S_d / S_w + c^max_gap over the detect window, clamped to [0, 2].
@@ -2045,7 +2325,7 @@ def preset_names() -> list[str]:
     ...
 def reference_samples(path: ..., robot: typing.Any, v_ref: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex, n: typing.SupportsInt | typing.SupportsIndex, sampling: str = 'polyline') -> numpy.typing.NDArray[numpy.float64]:
     """
-    (n, 2) reference samples E of the similarity cost (SPEC 4, Eq. 9): from the robot's projection onto the path, i * v_ref * dt further along the current segment ('segment') or along the path ('polyline').
+    (n, 2) reference samples E of the similarity cost (Eq. 9): from the robot's projection onto the path, i * v_ref * dt further along the current segment ('segment') or along the path ('polyline').
     """
 def register_python_critic(name: str, cls: typing.Any) -> None:
     """

@@ -91,8 +91,8 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
             body.set_xy(placed_outline(footprint.vertices, poses[k]))
         heading.set_data([x, x + 1.4 * radius * np.cos(theta)], [y, y + 1.4 * radius * np.sin(theta)])
         sector.set_center((x, y))
-        sector.set_theta1(np.degrees(theta) - window.half_angle_deg)
-        sector.set_theta2(np.degrees(theta) + window.half_angle_deg)
+        sector.set_theta1(np.degrees(theta - window.half_angle))
+        sector.set_theta2(np.degrees(theta + window.half_angle))
         for patch, disc in zip(discs, world.discs_at(t)):
             patch.center = tuple(disc.center)
         held = np.searchsorted(path_starts, k, side="right") - 1

@@ -124,7 +124,7 @@ class BarnSetup:
                                max_recoveries=self.max_recoveries)
 
     def lidar(self) -> LidarParams:
-        return LidarParams(fov_deg=270.0, beams=self.lidar_beams, max_range=self.lidar_range,
+        return LidarParams(fov=270.0 * math.pi / 180.0, beams=self.lidar_beams, max_range=self.lidar_range,
                            noise_std=self.noise_std, dropout=self.dropout)
 
 

@@ -13,7 +13,7 @@ from fgdwa.mapping import MAPPING_MODES
 
 
 def barn_import_command(world_dir: str, out: str, worlds: Optional[str] = None) -> int:
-    """``fgdwa barn import WORLD_DIR --out FILE [--worlds SPEC]``: convert the
+    """``fgdwa barn import WORLD_DIR --out FILE [--worlds IDS]``: convert the
     challenge's world and path files to a barn.npz-format file. Returns the exit
     status; errors are raised as FgdwaError (the CLI prints them)."""
     convert_barn_worlds(world_dir, out, worlds)
@@ -60,7 +60,7 @@ def register_barn_commands(subparsers) -> None:
                     "`fgdwa barn import` makes the data file.")
     barn.add_argument("--data", default=None, metavar="FILE",
                       help="the barn.npz file (or its directory); default: $FGDWA_BARN_DATA")
-    barn.add_argument("--worlds", default="all", metavar="SPEC",
+    barn.add_argument("--worlds", default="all", metavar="IDS",
                       help="world ids: 'all' (default), '0,6,12', '0-49', '0-299:6'")
     barn.add_argument("--planners", default="fgdwa,dwb", metavar="LIST",
                       help="comma-separated planner presets (default fgdwa,dwb; the comparison set is "
@@ -81,6 +81,6 @@ def register_barn_commands(subparsers) -> None:
                      help="directory with world_<i>.world, and path_<i>.npy beside them or in path_files/ "
                           "(the challenge's jackal_helper/worlds/BARN)")
     imp.add_argument("--out", required=True, metavar="FILE", help="the barn.npz file to write")
-    imp.add_argument("--worlds", default=None, metavar="SPEC",
+    imp.add_argument("--worlds", default=None, metavar="IDS",
                      help="world ids to convert: 'all' (default), '0,6,12', '0-49' or '0-299:6'")
     imp.set_defaults(func=lambda args, *_: barn_import_command(args.world_dir, args.out, args.worlds))

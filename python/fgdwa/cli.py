@@ -1,11 +1,12 @@
 """The ``fgdwa`` command: ``demo``, ``run`` (one episode, its figure and GIF),
-``experiment`` (the paper's experiments, SPEC 10), ``irsim`` (an IR-SIM world
-driven by the fgdwa behavior) and ``replay`` (fgdwa_node's planner rerun on a
-ROS bag)."""
+``experiment`` (the paper's experiments E1-E3, docs/algorithms.md), ``irsim``
+(an IR-SIM world driven by the fgdwa behavior) and ``replay`` (fgdwa_node's
+planner rerun on a ROS bag)."""
 
 from __future__ import annotations
 
 import argparse
+import importlib.metadata
 import shlex
 import sys
 import time
@@ -189,6 +190,7 @@ def _positive(text: str) -> int:
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="fgdwa", description="fgdwa: dynamic window local planning.")
+    parser.add_argument("--version", action="version", version=f"fgdwa {importlib.metadata.version('fgdwa')}")
     sub = parser.add_subparsers(dest="command", required=True)
 
     demo = sub.add_parser("demo", help="run the classic DWA on the built-in demo scenario")
@@ -209,7 +211,7 @@ def build_parser() -> argparse.ArgumentParser:
                      help="control cycles from a scan to its command reaching the wheels (default 0)")
     run.set_defaults(func=lambda args, argv: cmd_run(args))
 
-    exp = sub.add_parser("experiment", help="run the paper's experiments (SPEC 10) and write tables, figures "
+    exp = sub.add_parser("experiment", help="run the paper's experiments E1-E3 and write tables, figures "
                                             "and reports")
     exp.add_argument("name", choices=["e1", "e2", "e3", "all"])
     exp.add_argument("--trials", type=_positive, default=15, help="trials per planner (default 15)")
@@ -246,6 +248,10 @@ def build_parser() -> argparse.ArgumentParser:
     rep.add_argument("--set", action="append", metavar="NAME=VALUE",
                      help="replay with a setting changed, by fgdwa_node's parameter name (e.g. planner/sim_time=1.5)")
     rep.set_defaults(func=lambda args, argv: cmd_replay(args))
+    par = sub.add_parser("params", help="list every parameter: name, unit, bounds, default, meaning "
+                                        "(docs/parameters.md)")
+    par.add_argument("--markdown", action="store_true", help="the reference page as Markdown (the default)")
+    par.set_defaults(func=lambda args, argv: cmd_params())
     from fgdwa.barn_cli import register_barn_commands
 
     register_barn_commands(sub)
@@ -253,6 +259,13 @@ def build_parser() -> argparse.ArgumentParser:
 
     register_dynamic_commands(sub)
     return parser
+
+
+def cmd_params() -> int:
+    from fgdwa.params_doc import parameter_reference
+
+    print(parameter_reference())
+    return 0
 
 
 def main(argv=None) -> int:

@@ -234,7 +234,7 @@ def register_dynamic_commands(subparsers) -> None:
     dynamic.add_argument("--level", choices=list(LEVELS), default="medium",
                          help="easy: 2 discs at 0.2-0.4 m/s; medium: 4 at 0.3-0.6 m/s; hard: 6 at 0.4-0.8 m/s "
                               "(default medium)")
-    dynamic.add_argument("--seeds", default="0-49", metavar="SPEC",
+    dynamic.add_argument("--seeds", default="0-49", metavar="SEEDS",
                          help="field seeds: '0-49' (default), '3,7,9', '0-99:10'")
     dynamic.add_argument("--planners", default="fgdwa,dwb", metavar="LIST",
                          help=f"comma-separated planner labels (default fgdwa,dwb; known: "

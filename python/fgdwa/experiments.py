@@ -1,4 +1,4 @@
-"""The paper's experiments (SPEC 10): seeded trials of planners on a scenario,
+"""The paper's experiments E1-E3 (docs/algorithms.md): seeded trials of planners on a scenario,
 compared metric by metric.
 
 An experiment runs ``trials`` trials of each of its planners; trial ``i`` uses

@@ -30,7 +30,7 @@ def _save(fig, path: Path) -> Path:
 
 
 def danger_points_of(scenario, global_path: np.ndarray) -> np.ndarray:
-    """The global path's danger points (SPEC 9), as the episodes compute them."""
+    """The global path's danger points, as the episodes compute them."""
     from fgdwa._core import DistanceField
     from fgdwa.metrics import DANGER_MARGIN, danger_points
 

@@ -47,7 +47,6 @@ from fgdwa._core import (
     NavigatorMode,
     NavigatorParams,
     OccupancyGrid,
-    OccupancyParams,
     PlannerParams,
     RobotLimits,
     RobotState,
@@ -57,8 +56,8 @@ from fgdwa._core import (
     planner_preset,
     preset_names,
 )
-from fgdwa.scenario import PARAM_FIELDS, init_keywords, params_with
-from fgdwa.scenario_values import ValueReader, join_key
+from fgdwa.scenario import init_keywords, params_with
+from fgdwa.scenario_values import ValueReader, param_keys
 
 try:
     # IR-SIM prints every matplotlib backend it fails to load when imported;
@@ -77,10 +76,9 @@ IRSIM_KEYS = ("name", "target_roles", "wander", "loop", "range_low", "range_high
 OWN_KEYS = ("preset", "mapping", "resolution", "detect_window")
 LIMIT_KEYS = ("v_max", "omega_max", "acc_v", "acc_omega")
 # The control period is IR-SIM's step_time, so dt is not a key.
-PLANNER_KEYS = tuple(name for name in PARAM_FIELDS if name != "dt")
-NAVIGATOR_KEYS = init_keywords(NavigatorParams)
-# NavigatorParams fields that are parameter objects, given in YAML as mappings of their own keywords.
-NESTED = {"occupancy": OccupancyParams, "segment": SegmentParams, "tracker": TrackerParams}
+PLANNER_FIELDS = tuple(name for name in init_keywords(PlannerParams) if name != "dt")
+PLANNER_KEYS = tuple(param_keys(PlannerParams, allowed=PLANNER_FIELDS))
+NAVIGATOR_KEYS = tuple(param_keys(NavigatorParams))
 KEYS = IRSIM_KEYS + OWN_KEYS + LIMIT_KEYS + PLANNER_KEYS + NAVIGATOR_KEYS
 # m, cells of a map built from scans. Finer than fgdwa's own 0.1 m: the planner
 # trusts the map for hits within half a cell (plus the noise) of its obstacles,
@@ -128,51 +126,25 @@ def parse_config(config: Mapping[str, Any], where: str) -> BehaviorConfig:
               for name in LIMIT_KEYS if config.get(name) is not None}
     window = None
     if config.get("detect_window") is not None:
-        raw = reader.mapping(config["detect_window"], "detect_window", ("half_angle_deg", "radius", "base"))
-        numbers = {name: reader.number(value, join_key("detect_window", name)) for name, value in raw.items()}
-        window = reader.core("detect_window", raw, lambda: DetectWindowParams(**numbers))
+        fields = reader.param_fields(DetectWindowParams, config["detect_window"], "detect_window")
+        window = reader.core("detect_window", config["detect_window"],
+                             lambda: params_with(DetectWindowParams(), **fields))
     return BehaviorConfig(preset=preset, mapping=mapping, resolution=resolution, planner=planner,
                           navigator=navigator, limits=limits, window=window)
 
 
 def _planner_overrides(reader: ValueReader, config: Mapping[str, Any], base: PlannerParams) -> dict:
-    overrides = {}
-    for name in PLANNER_KEYS:
-        if config.get(name) is None:
-            continue
-        overrides[name] = reader.planner_field(name, config[name], name)
-    window = {name: overrides.get(name, getattr(base, name)) for name in ("dt", "sim_time", "n_v", "n_omega")}
-    reader.rollouts(window, "n_v, n_omega, sim_time, dt", window)
-    for name, value in overrides.items():
-        reader.core(name, config[name], lambda: params_with(base, **{name: value}))
+    given = {name: value for name, value in config.items() if name in PLANNER_KEYS and value is not None}
+    overrides = reader.param_fields(PlannerParams, given, "", allowed=PLANNER_FIELDS)
+    params = reader.core("", given, lambda: params_with(base, **overrides))
+    reader.rollouts(params, "window, sim_time, dt", given)
     return overrides
 
 
 def _navigator_overrides(reader: ValueReader, config: Mapping[str, Any]) -> dict:
-    defaults = NavigatorParams()
-    overrides = {}
-    for name in NAVIGATOR_KEYS:
-        if config.get(name) is None:
-            continue
-        value = config[name]
-        if name in NESTED:
-            cls = NESTED[name]
-            raw = reader.mapping(value, name, init_keywords(cls))
-            fields = {}
-            for sub, item in raw.items():
-                if isinstance(getattr(cls(), sub), bool):
-                    fields[sub] = reader.boolean(item, join_key(name, sub))
-                else:
-                    fields[sub] = reader.number(item, join_key(name, sub))
-            value = reader.core(name, raw, lambda: cls(**fields))
-        elif isinstance(getattr(defaults, name), bool):
-            value = reader.boolean(value, name)
-        elif isinstance(getattr(defaults, name), int):
-            value = reader.integer(value, name, low=0)
-        else:
-            value = reader.number(value, name)
-        reader.core(name, config[name], lambda: NavigatorParams(**{name: value}))
-        overrides[name] = value
+    given = {name: value for name, value in config.items() if name in NAVIGATOR_KEYS and value is not None}
+    overrides = reader.param_fields(NavigatorParams, given, "")
+    reader.core("", given, lambda: params_with(NavigatorParams(), **overrides))
     return overrides
 
 
@@ -260,7 +232,7 @@ def robot_lidar(robot):
 def lidar_params(lidar) -> LidarParams:
     """fgdwa's description of IR-SIM's lidar: field of view, beams, range, range noise."""
     noise = float(lidar.std) if lidar.noise else 0.0
-    return LidarParams(fov_deg=math.degrees(lidar.angle_range), beams=int(lidar.number),
+    return LidarParams(fov=float(lidar.angle_range), beams=int(lidar.number),
                        max_range=float(lidar.range_max), noise_std=noise)
 
 
@@ -368,13 +340,6 @@ def scan_layout(robot, goals: Sequence, resolution: Optional[float]) -> Occupanc
     return OccupancyGrid(np.zeros((rows, cols), dtype=np.uint8), resolution, (float(low[0]), float(low[1])))
 
 
-def with_fields(params, **changes):
-    """A copy of a bound parameter object (immutable) with some fields replaced."""
-    values = {name: getattr(params, name) for name in init_keywords(type(params))}
-    values.update(changes)
-    return type(params)(**values)
-
-
 def _goals(robot) -> list:
     queue = getattr(robot, "_goal", None)
     if not queue:
@@ -473,11 +438,11 @@ class FgdwaBehavior:
         segment, tracker = SegmentParams(), TrackerParams()
         scale = lidar.noise_std / segment.range_noise
         if scale > 1.0:
-            if "segment" not in values:
-                values["segment"] = with_fields(segment, range_noise=scale * segment.range_noise)
-            if "tracker" not in values:
-                values["tracker"] = with_fields(tracker, measurement_std=scale * tracker.measurement_std,
-                                                free_margin=scale * tracker.free_margin)
+            if not any(name.startswith("segment.") for name in values):
+                values["segment.range_noise"] = scale * segment.range_noise
+            if not any(name.startswith("tracker.") for name in values):
+                values["tracker.measurement_std"] = scale * tracker.measurement_std
+                values["tracker.free_margin"] = scale * tracker.free_margin
         # The recovery backs up only as fast as the robot may reverse.
         reverse = max(0.0, -float(np.asarray(robot.vel_min, dtype=float).reshape(-1)[0]))
         defaults = NavigatorParams()
@@ -492,7 +457,7 @@ class FgdwaBehavior:
                 raise FgdwaError(f"{self.where}: backup_speed = {speed:g}: faster than the robot may reverse "
                                  f"({reverse:g}, from vel_min)")
             values["backup_speed"] = reverse
-        return NavigatorParams(**values)
+        return params_with(NavigatorParams(), **values)
 
     def __call__(self, ego_object=None, external_objects=None, **_config) -> np.ndarray:
         robot = ego_object

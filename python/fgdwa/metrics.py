@@ -1,4 +1,4 @@
-"""Metrics of executed runs that need more than the run itself (SPEC 9)."""
+"""Metrics of executed runs that need more than the run itself (docs/algorithms.md, "Episodes and metrics")."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import numpy as np
 
 from fgdwa._core import DistanceField
 
-DANGER_MARGIN = 0.3  # m beyond the footprint's radius: the default danger clearance (SPEC 9)
+DANGER_MARGIN = 0.3  # m beyond the footprint's radius: the default danger clearance
 
 
 def danger_points(path: np.ndarray, static: DistanceField, danger_clearance: float, spacing: float = 1.0,

@@ -33,13 +33,11 @@ from fgdwa._core import (
     Navigator,
     NavigatorParams,
     OccupancyGrid,
-    OccupancyParams,
     PlannerParams,
     RobotLimits,
     RobotState,
     Scan,
-    SegmentParams,
-    TrackerParams,
+    nearest_names,
 )
 from fgdwa.rosbag_reader import (
     decode_diagnostics,
@@ -71,45 +69,40 @@ def scan_ranges(msg) -> np.ndarray:
 
 # ---------------------------------------------------------------- settings
 
-def _group(config: dict, prefix: str) -> dict:
-    return {name[len(prefix):]: value for name, value in config.items() if name.startswith(prefix)
-            and "/" not in name[len(prefix):]}
+def _param_set(cls, config: dict):
+    """The parameter set ``cls`` from the node's settings: its fields are named
+    ``<cls.name>/<field>`` there, nested sets '/'-joined, as in the schema."""
+    params = cls()
+    prefix = cls.name + "/"
+    for name, value in config.items():
+        if name.startswith(prefix):
+            params.set(name[len(prefix):].replace("/", "."), value)
+    params.validate()
+    return params
 
 
 def navigator_from_event(event: dict, overrides: Optional[Dict[str, object]] = None) -> Navigator:
-    """The Navigator fgdwa_node built, from its ``navigator`` event (C++ field names
-    and units, node_params.cpp), with ``overrides`` ({"planner/dt": 0.2, ...}) on top."""
+    """The Navigator fgdwa_node built, from its ``navigator`` event (the parameter
+    names and units of the schema, docs/parameters.md), with ``overrides``
+    ({"planner/dt": 0.2, ...}) on top."""
     config = dict(event["config"])
     for name, value in (overrides or {}).items():
         if name not in config:
-            raise FgdwaError(f"--set {name}: not a setting of fgdwa_node (known: {', '.join(sorted(config))})")
+            close = nearest_names(name, sorted(config))
+            hint = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
+            raise FgdwaError(f"--set {name}: not a setting of fgdwa_node{hint} (docs/parameters.md lists them)")
         config[name] = value
     if event.get("mapping") != "scan":
         raise FgdwaError(f"navigator {event.get('id')}: mapping {event.get('mapping')!r}; replay rebuilds maps "
                          f"from scans only (mapping scan): the known map is not in the bag")
-    limits = RobotLimits(**_group(config, "limits/"))
+    limits = _param_set(RobotLimits, config)
     if config.get("footprint") is not None:
         footprint = Footprint.polygon(np.asarray(config["footprint"], dtype=float))
     else:
         footprint = Footprint.circle(float(config["footprint_radius"]))
-    planner = PlannerParams(
-        dt=config["planner/dt"], sim_time=config["planner/sim_time"], n_v=config["planner/window/n_v"],
-        n_omega=config["planner/window/n_omega"], normalization=config["planner/normalization"],
-        braking=config["planner/braking"], goal_tolerance=config["planner/goal_tolerance"],
-        critics=[(c["name"], c["weight"], c.get("params", {})) for c in config["planner/critics"]],
-        heading_target=config["planner/heading_target"],
-        key_node_angle_deg=math.degrees(config["planner/key_nodes/min_turn"]),
-        key_node_radius=config["planner/key_nodes/reach_radius"], safety_margin=config["planner/safety_margin"],
-        key_node_sight=config["planner/key_nodes/require_sight"], moving_horizon=config["planner/moving_horizon"],
-        mover_caution_radius=config["planner/mover_caution_radius"],
-        mover_speed_weight=config["planner/mover_speed_weight"])
-    nav = _group(config, "navigator/")
-    nav["rotate_limit_deg"] = math.degrees(nav.pop("rotate_limit"))
-    navigator = NavigatorParams(**nav, occupancy=OccupancyParams(**_group(config, "navigator/occupancy/")),
-                                segment=SegmentParams(**_group(config, "navigator/segment/")),
-                                tracker=TrackerParams(**_group(config, "navigator/tracker/")))
-    window = DetectWindowParams(half_angle_deg=math.degrees(config["detect_window/half_angle"]),
-                                radius=config["detect_window/radius"], base=config["detect_window/base"])
+    planner = _param_set(PlannerParams, config)
+    navigator = _param_set(NavigatorParams, config)
+    window = _param_set(DetectWindowParams, config)
     lidar = event["lidar"]
     lidar_params = LidarParams(beams=int(lidar["beams"]), max_range=float(lidar["max_range"]),
                                noise_std=float(lidar["noise_std"]))

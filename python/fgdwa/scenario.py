@@ -1,4 +1,4 @@
-"""A scenario: a world, a robot, a task and how trials of it vary (SPEC 9, 10).
+"""A scenario: a world, a robot, a task and how trials of it vary (docs/algorithms.md, "Experiments E1-E3").
 
 ``run_scenario(scenario, planner, seed)`` runs one trial: the seed draws the
 start's jitter, the moving obstacles' phases, the lidar's noise and dropped beams (and any actuation noise or
@@ -8,6 +8,7 @@ seed gives the same episode, bit for bit.
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 from dataclasses import dataclass, field
 from typing import Optional
@@ -28,28 +29,14 @@ from fgdwa.sim import EpisodeResult, run_episode
 from fgdwa.world import World
 
 def init_keywords(cls) -> tuple:
-    """The keyword arguments of a bound class's constructor, read from the signature
-    pybind11 writes into its docstring: the one place they are defined."""
-    doc = cls.__init__.__doc__ or ""
-    if "(" not in doc:
-        raise FgdwaError(f"{cls.__name__}: its constructor has no signature to read")
-    # Split at the signature's own commas: defaults such as NavigatorParams'
-    # occupancy=OccupancyParams(hit=0.85, clamp=[-2, 3.5], ...) hold commas and brackets too.
-    parts, depth, start = [], 0, doc.index("(") + 1
-    for i in range(start, len(doc)):
-        char = doc[i]
-        if char in "([{":
-            depth += 1
-        elif char in ")]}" and depth > 0:
-            depth -= 1
-        elif char == ")" or (char == "," and depth == 0):
-            parts.append(doc[start:i])
-            start = i + 1
-            if char == ")":
-                break
-    else:
-        raise FgdwaError(f"{cls.__name__}: its constructor's signature is not closed")
-    return tuple(part.split(":")[0].strip() for part in parts[1:])
+    """The top-level fields of a parameter class, in declaration order, from its
+    schema (declared once, in C++)."""
+    return tuple(entry["name"] for entry in cls.schema() if "." not in entry["name"])
+
+
+def param_names(cls) -> tuple:
+    """Every field of a parameter class, nested ones by their dotted names."""
+    return tuple(entry["name"] for entry in cls.schema())
 
 
 # PlannerParams' fields, each a keyword of its constructor and a readable attribute.
@@ -95,20 +82,20 @@ class Scenario:
     goal_tolerance: Optional[float] = None  # m; default the planner's
 
     def __post_init__(self):
-        unknown = set(self.overrides) - set(PARAM_FIELDS)
-        if unknown:
-            raise FgdwaError(f"scenario {self.name}: unknown planner override(s) {sorted(unknown)} "
-                             f"(known: {', '.join(PARAM_FIELDS)})")
+        try:
+            params_with(PlannerParams(), **self.overrides)
+        except FgdwaError as error:
+            raise FgdwaError(f"scenario {self.name}: planner overrides: {error}") from None
 
 
-def params_with(params: PlannerParams, **overrides) -> PlannerParams:
-    """A copy of ``params`` with some fields replaced (PlannerParams is immutable)."""
-    unknown = set(overrides) - set(PARAM_FIELDS)
-    if unknown:
-        raise FgdwaError(f"planner override(s) {sorted(unknown)} unknown (known: {', '.join(PARAM_FIELDS)})")
-    values = {name: getattr(params, name) for name in PARAM_FIELDS}
-    values.update(overrides)
-    return PlannerParams(**values)
+def params_with(params, **overrides):
+    """A copy of a parameter set with some fields replaced: names as its attributes,
+    nested ones dotted (``"window.n_v"``) or as dicts; checked as a whole."""
+    out = copy.copy(params)
+    for name, value in overrides.items():
+        out.set(name, value)
+    out.validate()
+    return out
 
 
 def resolve_planner(scenario: Scenario, planner=None) -> PlannerPreset:
@@ -139,8 +126,8 @@ def trial_variation(scenario: Scenario, seed: int) -> tuple:
         world = dataclasses.replace(world, movers=tuple(movers))
     lidar = scenario.lidar
     if v.lidar_noise_std > 0 or v.lidar_dropout > 0:
-        lidar = LidarParams(fov_deg=lidar.fov_deg, beams=lidar.beams, max_range=lidar.max_range,
-                            noise_std=v.lidar_noise_std or lidar.noise_std, dropout=v.lidar_dropout or lidar.dropout)
+        lidar = params_with(lidar, noise_std=v.lidar_noise_std or lidar.noise_std,
+                            dropout=v.lidar_dropout or lidar.dropout)
     return start, world, lidar
 
 

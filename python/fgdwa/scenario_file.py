@@ -27,12 +27,13 @@ from fgdwa._core import (
     Footprint,
     LidarParams,
     OccupancyGrid,
+    PlannerParams,
     RobotLimits,
     planner_preset,
     preset_names,
 )
 from fgdwa.file_limits import clip, is_file, read_text
-from fgdwa.scenario import PARAM_FIELDS, Scenario, Variability, params_with
+from fgdwa.scenario import Scenario, Variability, params_with
 from fgdwa.scenario_checks import FeasibilityChecks
 from fgdwa.scenario_maps import MapReader
 from fgdwa.scenario_values import is_number, join_key, parse_yaml, short_repr
@@ -282,13 +283,9 @@ class _Reader(MapReader, FeasibilityChecks):
             self.fail(join_key(key, "preset"), preset, f"expected one of {', '.join(preset_names())}")
         base = planner_preset(preset).params
         okey = join_key(key, "overrides")
-        raw = self.mapping(value.get("overrides") or {}, okey, PARAM_FIELDS)
-        overrides = {name: self.planner_field(name, item, join_key(okey, name)) for name, item in raw.items()}
-        window = {name: overrides.get(name, getattr(base, name)) for name in ("dt", "sim_time", "n_v", "n_omega")}
-        self.rollouts(window, okey, raw)
-        for name, item in overrides.items():
-            self.core(join_key(okey, name), raw[name], lambda: params_with(base, **{name: item}))
-        self.core(okey, raw, lambda: params_with(base, **overrides))
+        overrides = self.param_fields(PlannerParams, value.get("overrides") or {}, okey)
+        params = self.core(okey, value.get("overrides"), lambda: params_with(base, **overrides))
+        self.rollouts(params, okey, value.get("overrides"))
         return preset, overrides
 
     def global_planner(self, value: Any, grid: OccupancyGrid) -> tuple:
@@ -327,24 +324,13 @@ class _Reader(MapReader, FeasibilityChecks):
         return method, dict(raw)
 
     def lidar(self, value: Any) -> LidarParams:
-        key = "lidar"
-        self.mapping(value, key, ("fov_deg", "beams", "max_range"))
-        default = LidarParams()
-        fov = self.number(value.get("fov_deg", default.fov_deg), join_key(key, "fov_deg"), low=0.0, high=360.0,
-                          low_open=True)
-        beams = self.integer(value.get("beams", default.beams), join_key(key, "beams"), low=1, limit="MAX_BEAMS")
-        max_range = self.length(value.get("max_range", default.max_range), join_key(key, "max_range"), positive=True)
-        return self.core(key, value, lambda: LidarParams(fov_deg=fov, beams=beams, max_range=max_range))
+        # The noise and the dropped beams are the trials' variability.
+        fields = self.param_fields(LidarParams, value, "lidar", allowed=("fov", "beams", "max_range"))
+        return self.core("lidar", value, lambda: params_with(LidarParams(), **fields))
 
     def detect_window(self, value: Any) -> DetectWindowParams:
-        key = "detect_window"
-        self.mapping(value, key, ("half_angle_deg", "radius", "base"))
-        default = DetectWindowParams()
-        half = self.number(value.get("half_angle_deg", default.half_angle_deg), join_key(key, "half_angle_deg"),
-                           low=0.0, high=180.0, low_open=True)
-        radius = self.length(value.get("radius", default.radius), join_key(key, "radius"), positive=True)
-        base = self.number(value.get("base", default.base), join_key(key, "base"), low=0.0, high=1.0)
-        return self.core(key, value, lambda: DetectWindowParams(half_angle_deg=half, radius=radius, base=base))
+        fields = self.param_fields(DetectWindowParams, value, "detect_window")
+        return self.core("detect_window", value, lambda: params_with(DetectWindowParams(), **fields))
 
     def variability(self, value: Any) -> Variability:
         key = "variability"

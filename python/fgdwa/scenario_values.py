@@ -65,6 +65,20 @@ def is_number(value: Any) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
+def param_keys(cls, prefix: str = "", allowed: Optional[Sequence[str]] = None) -> list:
+    """The keys a file takes for parameter class ``cls`` (fields under ``prefix``):
+    each field's name, and an angle's (unit rad) name + ``_deg`` for degrees."""
+    out = []
+    for entry in cls.schema():
+        name = entry["name"][len(prefix):]
+        if not entry["name"].startswith(prefix) or "." in name or (allowed is not None and name not in allowed):
+            continue
+        out.append(name)
+        if entry["unit"] == "rad":
+            out.append(name + "_deg")
+    return out
+
+
 class ValueReader:
     """Typed values from one YAML document; every error names ``where``, the key path and the value."""
 
@@ -218,37 +232,42 @@ class ValueReader:
             critics.append({"name": name, "weight": weight, "params": dict(params)})
         return critics
 
-    def planner_field(self, name: str, value: Any, key: str) -> Any:
-        """``value`` for PlannerParams' field ``name``, read by the type of its default
-        (a number, a count of at least 1, a flag, a word or a critic list); errors name ``key``."""
-        kind = type(getattr(_PLANNER_DEFAULTS, name))
-        if kind is list:
-            return self.critics(value, key)
-        if kind is float:
-            return self.number(value, key, limit=_PLANNER_LIMITS.get(name, "MAX_MAGNITUDE"))
-        if kind is int:
-            return self.integer(value, key, low=1)
-        if kind is bool:
-            return self.boolean(value, key)
-        return self.string(value, key)
+    def param_fields(self, cls, value: Any, key: str, allowed: Optional[Sequence[str]] = None,
+                     prefix: str = "") -> dict:
+        """The fields of parameter class ``cls`` a mapping gives, as {dotted name: value}:
+        names as in its schema, a nested set as a mapping, an angle (unit rad) in degrees
+        under its name + ``_deg``. Each value is checked against its field's bounds;
+        errors name ``key``. ``allowed``: the top-level names taken (default all)."""
+        schema = {entry["name"]: entry for entry in cls.schema()}
+        names = [name for name in param_keys(cls, prefix) if not name.endswith("_deg") or name in schema]
+        keys = param_keys(cls, prefix, allowed)
+        self.mapping(value, key, keys)
+        out = {}
+        for name, item in value.items():
+            ikey = join_key(key, name)
+            degrees = name.endswith("_deg") and prefix + name not in schema
+            field = prefix + (name[:-len("_deg")] if degrees else name)
+            entry = schema[field]
+            if entry["type"] == "group":
+                out.update(self.param_fields(cls, item, ikey, prefix=field + "."))
+                continue
+            if entry["type"] == "critics":
+                item = self.critics(item, ikey)
+            elif degrees:
+                # As the C++ side turns degrees into radians: deg * pi / 180.
+                item = self.number(item, ikey) * math.pi / 180.0
+            probe = cls()
+            self.core(ikey, value[name], lambda: probe.set(field, item))
+            out[field] = probe.get(field) if entry["type"] != "critics" else item
+        return out
 
-
-    def rollouts(self, params: dict, key: str, value: Any) -> None:
-        """Refuses planner fields (dt, sim_time, n_v, n_omega; a dict with the defaults
-        filled in) whose rollouts would hold more than MAX_ROLLOUT_POSES poses a cycle."""
-        if not (params["dt"] > 0 and params["sim_time"] > 0):
-            return  # the core names the field at fault
-        steps = params["sim_time"] / params["dt"]
-        poses = params["n_v"] * params["n_omega"] * (steps + 1)
+    def rollouts(self, params, key: str, value: Any) -> None:
+        """Refuses planner parameters whose rollouts would hold more than
+        MAX_ROLLOUT_POSES poses a cycle."""
+        n_v, n_omega = params.window.n_v, params.window.n_omega
+        steps = params.sim_time / params.dt
+        poses = n_v * n_omega * (steps + 1)
         if not poses <= limits.MAX_ROLLOUT_POSES:
-            self.fail(key, value, f"n_v x n_omega x (sim_time / dt + 1) = {params['n_v']} x {params['n_omega']} x "
-                                  f"({params['sim_time']:g} / {params['dt']:g} + 1) = {poses:.3g} poses a control "
+            self.fail(key, value, f"n_v x n_omega x (sim_time / dt + 1) = {n_v} x {n_omega} x "
+                                  f"({params.sim_time:g} / {params.dt:g} + 1) = {poses:.3g} poses a control "
                                   f"cycle, over {limits.MAX_ROLLOUT_POSES} (fgdwa.file_limits.MAX_ROLLOUT_POSES)")
-
-
-_PLANNER_DEFAULTS = PlannerParams()
-# The limit (a constant of fgdwa.file_limits) of each float field of PlannerParams
-# that has one narrower than MAX_MAGNITUDE.
-_PLANNER_LIMITS = {"dt": "MAX_DURATION", "sim_time": "MAX_DURATION", "moving_horizon": "MAX_DURATION",
-                   "goal_tolerance": "MAX_LENGTH", "safety_margin": "MAX_LENGTH", "key_node_radius": "MAX_LENGTH",
-                   "mover_caution_radius": "MAX_LENGTH"}

@@ -1,5 +1,5 @@
 """Episodes: a robot driven by a local planner through a world until it
-reaches the goal, collides, or runs out of steps (SPEC 9).
+reaches the goal, collides, or runs out of steps (docs/algorithms.md, "Episodes and metrics").
 
 The planner sees the world through a fast ``FieldClearance``; the simulator
 judges collisions with the exact FCL ``CollisionWorld``.
@@ -66,7 +66,7 @@ class CycleTrace:
 
 @dataclass
 class EpisodeResult:
-    """The executed run and its SPEC 9 metrics."""
+    """The executed run and its metrics."""
 
     outcome: str
     steps: int

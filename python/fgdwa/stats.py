@@ -1,4 +1,4 @@
-"""Statistics of experiment trials: summaries, effects and two-sample tests (SPEC 10).
+"""Statistics of experiment trials: summaries, effects and two-sample tests.
 
 Every function takes plain sequences of numbers and returns plain Python
 numbers; non-finite values (a metric a run could not measure) are dropped

@@ -71,7 +71,7 @@ def test_a_generated_file_loads_and_runs(tmp_path):
     assert scenario.name == "dynamic_easy_4"
     assert len(scenario.world.movers) == 2 and not scenario.world.discs_known
     assert scenario.world.hidden is not None and scenario.world.hidden.cells.sum() > 0
-    assert scenario.lidar.beams == 541 and scenario.lidar.fov_deg == pytest.approx(270.0)
+    assert scenario.lidar.beams == 541 and scenario.lidar.fov == pytest.approx(np.radians(270.0))
     assert scenario.variability.lidar_noise_std == 0.03 and scenario.variability.lidar_dropout == 0.01
     assert scenario.limits.v_max == 1.2 and scenario.footprint.radius == 0.25
     # Round trip: the file holds exactly the document.

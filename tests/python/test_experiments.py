@@ -1,4 +1,4 @@
-"""Experiments (SPEC 10): statistics, tables and reports, executors, the CLI and the GIF."""
+"""Experiments E1-E3 (docs/algorithms.md): statistics, tables and reports, executors, the CLI and the GIF."""
 
 import csv
 import json
@@ -243,6 +243,10 @@ def test_the_three_experiments_end_to_end(tmp_path, capsys):
     assert (out / "control_surfaces.png").stat().st_size > 0
     page = results_md.read_text()
     assert "## The paper's claims" in page and "../results/e2/e2_paths.png" in page
+    # The per-trial tables stay in each experiment's report.md, which the page links.
+    assert "Per-trial tables: [../results/e1/report.md](../results/e1/report.md)." in page
+    assert "**E1: Iteration steps of 3 trials**" not in page
+    assert "**E1: Iteration steps of 3 trials**" in (out / "e1" / "report.md").read_text()
     assert page.count("| E2 |") == len(EXPERIMENTS["e2"].claims)
     assert (out / "report.md").exists()
 
@@ -270,6 +274,18 @@ def test_results_page_counts_claims_read_back_from_json(tmp_path):
     again = write_results(tmp_path, ["t"], "fgdwa experiment t", tmp_path / "R.md").read_text()
     assert "## stale" not in again and "## The paper's claims" in again
     assert again.endswith(KEEP_MARKER + "\n\n## BARN\n\nkept\n") and again.count(KEEP_MARKER) == 1
+
+
+def test_results_page_keeps_a_hand_written_head(tmp_path):
+    from fgdwa.report import HEAD_MARKER, KEEP_MARKER, write_results
+
+    save_experiment(_hand_made_result(), tmp_path)
+    head = "# Results\n\nContents and a summary.\n\n" + HEAD_MARKER
+    (tmp_path / "R.md").write_text(head + "\n\n## stale\n\n" + KEEP_MARKER + "\n\n## BARN\n\nkept\n")
+    page = write_results(tmp_path, ["t"], "fgdwa experiment t", tmp_path / "R.md").read_text()
+    assert page.startswith(head + "\n\n## The paper's experiments E1-E3, rerun\n")
+    assert "## stale" not in page and "## The paper's claims" in page and page.count("\n# ") == 0
+    assert page.endswith(KEEP_MARKER + "\n\n## BARN\n\nkept\n") and page.count(HEAD_MARKER) == 1
 
 
 def test_a_single_experiment_updates_the_results_page_from_saved_runs(tmp_path):

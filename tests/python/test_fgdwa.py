@@ -23,7 +23,7 @@ def test_presets_follow_the_paper_tables():
     for name, (target, weights, fuzzy) in expected.items():
         preset = fgdwa.planner_preset(name)
         assert preset.params.heading_target == target
-        assert {c.name: c.weight for c in preset.params.critics} == pytest.approx(weights, rel=1e-12)
+        assert {c["name"]: c["weight"] for c in preset.params.critics} == pytest.approx(weights, rel=1e-12)
         assert preset.params.normalization == ("none" if name == "dwb" else "sum")
         assert (preset.params.dt, preset.params.sim_time) == (0.15, 3.0)
         assert preset.fuzzy == fuzzy

@@ -432,6 +432,15 @@ def test_step_and_rollout(pose, twist, dt, n):
 # =============================================================================================
 LIMIT_FIELDS = ("v_min", "v_max", "omega_max", "acc_v", "acc_omega", "brake_v", "brake_omega")
 LIMIT_DEFAULTS = dict(v_min=0.0, v_max=1.2, omega_max=1.0, acc_v=1.0, acc_omega=2.0, brake_v=0.0, brake_omega=0.0)
+# Each field's own bounds, checked when it is set: (lo, hi, lo excluded).
+LIMIT_BOUNDS = dict(v_min=(0.0, MAX_SPEED, False), v_max=(0.0, MAX_SPEED, True), omega_max=(0.0, MAX_SPEED, True),
+                    acc_v=(MIN_ACC, MAX_ACC, False), acc_omega=(MIN_ACC, MAX_ACC, False),
+                    brake_v=(0.0, MAX_ACC, False), brake_omega=(0.0, MAX_ACC, False))
+
+
+def limit_field_ok(name, value):
+    lo, hi, lo_open = LIMIT_BOUNDS[name]
+    return within(value, lo, hi) and not (lo_open and value == lo)
 
 
 def limits_valid(f):
@@ -484,8 +493,13 @@ def test_robot_limits_and_dynamic_window(f, setter, value, current, dt):
         else:
             assert abs(w.omega_lo - c[1]) <= reach_w and abs(w.omega_hi - c[1]) <= reach_w, \
                 f"{out.call}: {w} out of reach"
-    # A field set past validation must be caught where the limits are used.
-    setattr(limits, setter, value)
+    # A field is checked against its own bounds when it is set; a value that breaks only a rule between
+    # fields (v_min <= v_max, a brake of 0 or at least MIN_ACC) must be caught where the limits are used.
+    out = attempt(setattr, limits, setter, value)
+    if not expect(out, limit_field_ok(setter, value), setter):
+        assert getattr(limits, setter) == f[setter], f"{out.call}: refused, yet {setter} changed"
+        return
+    assert getattr(limits, setter) == value, out.call
     g = dict(f, **{setter: value})
     valid = limits_valid(g)
     expect(attempt(limits.validate), valid, setter, "v_min", "v_max")
@@ -1063,17 +1077,15 @@ def test_dtw(a, b, band, scale):
 # =============================================================================================
 @st.composite
 def lidar_kwargs(draw):
-    kw = dict(fov_deg=270.0, beams=31, max_range=5.0, noise_std=0.0, dropout=0.0)
+    kw = dict(fov=1.5 * math.pi, beams=31, max_range=5.0, noise_std=0.0, dropout=0.0)
     for name in sorted(draw(st.sets(st.sampled_from(sorted(kw)), max_size=2))):
-        kw[name] = draw({"fov_deg": hf(1.0, 360.0), "beams": hi_(1, 90), "max_range": hf(0.0, 20.0),
+        kw[name] = draw({"fov": hf(math.radians(1.0), 2 * math.pi), "beams": hi_(1, 90), "max_range": hf(0.0, 20.0),
                          "noise_std": hf(0.0, 0.2), "dropout": hf(0.0, 1.0)}[name])
     return kw
 
 
 def lidar_valid(kw):
-    fov = kw["fov_deg"] * math.pi / 180 if math.isfinite(kw["fov_deg"]) else NAN
-    if math.isfinite(fov) and fov > 0 and abs(fov - 2 * math.pi) < 1e-12:
-        return None  # the boundary: 360 degrees in radians may round either way
+    fov = kw["fov"]  # radians, in (0, 2 pi]
     return (within(fov, 0.0, 2 * math.pi) and fov > 0 and 1 <= kw["beams"] <= MAX_BEAMS
             and within(kw["max_range"], 0.0, MAX_LENGTH) and kw["max_range"] > 0
             and within(kw["noise_std"], 0.0, MAX_LENGTH) and within(kw["dropout"], 0.0, 1.0) and kw["dropout"] < 1)
@@ -1140,7 +1152,7 @@ def scan_valid(ranges, angle_min, inc, max_range, pose, pose_arg):
 
 @fuzz(400)
 @given(args=scan_args(), pose=pose_arg(-3.0, 3.0), set_pose=st.one_of(st.none(), pose_arg(-3.0, 3.0)),
-       half=hf(10.0, 180.0), radius=hf(0.1, 5.0), base=hf(0.01, 1.0))
+       half=hf(math.radians(10.0), math.pi), radius=hf(0.1, 5.0), base=hf(0.01, 1.0))
 def test_scan_density_and_segmentation(args, pose, set_pose, half, radius, base):
     ran("scan")
     ranges, angle_min, inc, max_range = args
@@ -1162,12 +1174,10 @@ def test_scan_density_and_segmentation(args, pose, set_pose, half, radius, base)
         if expect(attempt(setattr, scan, "pose", q_arg), None if finite(q) or isinstance(q_arg, fgdwa.Pose2) else False,
                   "pose"):
             p = q
-    window = attempt(fgdwa.DetectWindowParams, half, radius, base)
-    w_valid = within(half * math.pi / 180, 0.0, math.pi) and half * math.pi / 180 > 0 \
+    window = attempt(fgdwa.DetectWindowParams, half_angle=half, radius=radius, base=base)
+    w_valid = within(half, 0.0, math.pi) and half > 0 \
         and within(radius, 0.0, MAX_LENGTH) \
         and radius > 0 and within(base, 0.0, 1e6) and base > 0
-    if abs(half - 180.0) < 1e-9:
-        w_valid = None
     if expect(window, w_valid, "half_angle", "radius", "base"):
         out = attempt(fgdwa.obstacle_density, scan, window.value)
         if out.ok:
@@ -1479,10 +1489,11 @@ def test_ompl(kw, seed, planner, start, goal):
 # =============================================================================================
 # Local planner, controller, navigator
 # =============================================================================================
-SMALL_PARAMS = fgdwa.PlannerParams(dt=0.2, sim_time=1.0, n_v=5, n_omega=5)
-PARAM_DEFAULTS = dict(dt=0.15, sim_time=3.0, n_v=21, n_omega=21, goal_tolerance=0.3, key_node_angle_deg=10.0,
-                      key_node_radius=1.0, safety_margin=0.02, moving_horizon=1.0, mover_caution_radius=2.0,
-                      mover_speed_weight=0.5)
+SMALL_PARAMS = fgdwa.PlannerParams(dt=0.2, sim_time=1.0, window=dict(n_v=5, n_omega=5))
+# Nested fields by their dotted names (PlannerParams(**{"window.n_v": 5}) sets p.window.n_v).
+PARAM_DEFAULTS = {"dt": 0.15, "sim_time": 3.0, "window.n_v": 21, "window.n_omega": 21, "goal_tolerance": 0.3,
+                  "key_nodes.min_turn": math.radians(10.0), "key_nodes.reach_radius": 1.0, "safety_margin": 0.02,
+                  "moving_horizon": 1.0, "mover_caution_radius": 2.0, "mover_speed_weight": 0.5}
 
 
 def params_valid(k):
@@ -1491,12 +1502,13 @@ def params_valid(k):
         return False
     if sim / dt > MAX_ROLLOUT_STEPS or round(sim / dt) < 1:
         return False
-    return (1 <= k["n_v"] <= MAX_SAMPLES_PER_AXIS and 1 <= k["n_omega"] <= MAX_SAMPLES_PER_AXIS
-            and k["n_v"] * k["n_omega"] <= MAX_SAMPLES and within(k["goal_tolerance"], 0.0, MAX_LENGTH)
+    n_v, n_omega = k["window.n_v"], k["window.n_omega"]
+    return (1 <= n_v <= MAX_SAMPLES_PER_AXIS and 1 <= n_omega <= MAX_SAMPLES_PER_AXIS
+            and n_v * n_omega <= MAX_SAMPLES and within(k["goal_tolerance"], 0.0, MAX_LENGTH)
             and within(k["safety_margin"], 0.0, MAX_LENGTH) and within(k["moving_horizon"], 0.0, MAX_HORIZON)
             and within(k["mover_caution_radius"], 0.0, MAX_LENGTH) and within(k["mover_speed_weight"], 0.0, 1.0)
-            and within(k["key_node_angle_deg"], 0.0, 180.0) and k["key_node_angle_deg"] < 180.0
-            and within(k["key_node_radius"], 0.0, MAX_LENGTH))
+            and within(k["key_nodes.min_turn"], 0.0, math.pi) and k["key_nodes.min_turn"] < math.pi
+            and within(k["key_nodes.reach_radius"], 0.0, MAX_LENGTH))
 
 
 @st.composite
@@ -1510,7 +1522,7 @@ def overridden(draw, defaults, ints, int_hi, float_hi, max_size):
 
 
 def planner_kwargs():
-    return overridden(PARAM_DEFAULTS, ("n_v", "n_omega"), 30, 5.0, 3)
+    return overridden(PARAM_DEFAULTS, ("window.n_v", "window.n_omega"), 30, 5.0, 3)
 
 
 @fuzz(300)
@@ -1545,7 +1557,7 @@ PLAN_WORLD_CELLS = block_cells(11, 30, 40, blocks=8, keep_free=((10, 10),))
 @st.composite
 def plan_case(draw):
     kw = dict(dt=draw(st.sampled_from([0.1, 0.2, 0.25])), sim_time=draw(st.sampled_from([0.5, 1.0])),
-              n_v=draw(st.integers(1, 6)), n_omega=draw(st.integers(1, 6)),
+              window=dict(n_v=draw(st.integers(1, 6)), n_omega=draw(st.integers(1, 6))),
               normalization=draw(st.sampled_from(["sum", "minmax", "none"])),
               braking=draw(st.sampled_from(["discrete", "continuous"])),
               heading_target=draw(st.sampled_from(["goal", "goal", "key_nodes"])))
@@ -1617,11 +1629,11 @@ def nav_grid():
 
 
 NAV_LIDAR = fgdwa.LidarParams(beams=41, max_range=4.0)
-NAV_PARAMS = fgdwa.PlannerParams(dt=0.2, sim_time=1.0, n_v=5, n_omega=5, heading_target="key_nodes")
+NAV_PARAMS = fgdwa.PlannerParams(dt=0.2, sim_time=1.0, window=dict(n_v=5, n_omega=5), heading_target="key_nodes")
 
 NAV_DEFAULTS = dict(path_margin=0.3, replan_period=0.5, stall_time=3.0, stall_distance=0.1, give_up_length=0.6,
                     keep_clear=0.3, sensed_close_radius=2.0, backup_distance=0.3, backup_speed=0.2,
-                    rotate_limit_deg=360.0, wait_time=2.0, wait_radius=1.5, max_recoveries=6, progress_reset=1.0,
+                    rotate_limit=2 * math.pi, wait_time=2.0, wait_radius=1.5, max_recoveries=6, progress_reset=1.0,
                     record_top_k=5, unknown_cost=0.0, mover_margin=0.0, mover_route_horizon=1.0,
                     mover_route_lookahead=3.0)
 
@@ -1634,7 +1646,7 @@ def nav_valid(k):
                                           "backup_distance", "wait_radius", "progress_reset", "mover_margin",
                                           "mover_route_lookahead"))
             and within(k["backup_speed"], 0.0, MAX_SPEED) and k["backup_speed"] > 0
-            and within(k["rotate_limit_deg"], 0.0, MAX_ANGLE_REFUSED * 180 / math.pi)
+            and within(k["rotate_limit"], 0.0, MAX_ANGLE_REFUSED)
             and 0 <= k["max_recoveries"] <= 10**6 and 0 <= k["record_top_k"] <= MAX_SAMPLES
             and within(k["unknown_cost"], 0.0, 1e6))
 
@@ -1746,8 +1758,8 @@ def test_controller(pose, twist, goal, set_pose, policy, map_, path, noscan):
     grid = fgdwa.OccupancyGrid(PLAN_WORLD_CELLS, GRID_RES)
     truth = fgdwa.DistanceField(fgdwa.OccupancyGrid(block_cells(5, 30, 40, 10), GRID_RES))
     preset = fgdwa.planner_preset("fgdwa" if policy == "fgdwa" else "gdwa")
-    params = fgdwa.PlannerParams(dt=0.2, sim_time=1.0, n_v=5, n_omega=5,
-                                 critics=[(c.name, c.weight) for c in preset.params.critics])
+    params = fgdwa.PlannerParams(dt=0.2, sim_time=1.0, window=dict(n_v=5, n_omega=5),
+                                 critics=[(c["name"], c["weight"]) for c in preset.params.critics])
     ctrl = fgdwa.Controller(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), params,
                             fgdwa.DistanceField(grid) if map_ else None,
                             preset.weight_policy() if policy != "none" else None)
@@ -2240,8 +2252,9 @@ def _int_cases():
         "reference_samples n": (lambda n: fgdwa.reference_samples(path, (0, 0), 1.0, 0.1, n), "int", "n"),
         "dtw band": (lambda n: fgdwa.dtw([[0, 0]], [[1, 1]], n), "int", "band"),
         "LidarParams beams": (lambda n: fgdwa.LidarParams(beams=n), "int", "beams"),
-        "PlannerParams n_v": (lambda n: fgdwa.PlannerParams(n_v=n), "int", "n_v"),
-        "PlannerParams n_omega": (lambda n: fgdwa.PlannerParams(n_omega=n), "int", "n_omega"),
+        "PlannerParams window.n_v": (lambda n: fgdwa.PlannerParams(window=dict(n_v=n)), "int", "window.n_v"),
+        "PlannerParams window.n_omega": (lambda n: fgdwa.PlannerParams(**{"window.n_omega": n}), "int",
+                                         "window.n_omega"),
         "SegmentParams min_points": (lambda n: fgdwa.SegmentParams(min_points=n), "int", "min_points"),
         "TrackerParams confirm_hits": (lambda n: fgdwa.TrackerParams(confirm_hits=n), "int", "confirm_hits"),
         "NavigatorParams max_recoveries": (lambda n: fgdwa.NavigatorParams(max_recoveries=n), "int",

@@ -97,7 +97,7 @@ def test_importing_registers_the_behavior_for_differential_drive():
 @pytest.mark.parametrize("keys, match", [
     ({"sim_tme": 2.0}, r"sim_tme = 2.0: unknown key .*did you mean 'sim_time'"),
     ({"preset": "fast"}, r"preset = 'fast': expected one of dwa, gdwa"),
-    ({"n_v": "many"}, r"n_v = 'many': expected an integer"),
+    ({"window": {"n_v": "many"}}, r"window.n_v = 'many': .*expected an integer"),
     ({"braking": "soon"}, r"braking = 'soon'"),
     ({"mapping": "gps"}, r"mapping = 'gps': expected one of auto, known, scan"),
     ({"dt": 0.2}, r"dt = 0.2: unknown key"),

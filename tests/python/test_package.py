@@ -26,5 +26,6 @@ def test_stub_matches_the_compiled_module(tmp_path):
 def test_reprs_say_what_they_hold():
     assert repr(fgdwa.RobotLimits()).startswith("RobotLimits(v_min=0")
     assert repr(fgdwa.Footprint.circle(0.25)) == "Footprint.circle(radius=0.25)"
-    assert "critics=[('heading', 0.5)" in repr(fgdwa.PlannerParams())
+    assert "critics=[{'name': 'heading', 'weight': 0.5, 'params': {}}" in repr(fgdwa.PlannerParams())
+    assert "window={'n_v': 21, 'n_omega': 21}" in repr(fgdwa.PlannerParams())
     assert repr(fgdwa.Disc((1, 2), 0.5)) == "Disc(center=(1, 2), radius=0.5, velocity=(0, 0))"

@@ -41,10 +41,10 @@ def test_bad_paths():
         fgdwa.GlobalPath([[0, 0], [np.nan, 1]])
     with pytest.raises(fgdwa.FgdwaError, match="shape"):
         fgdwa.GlobalPath(np.zeros((3, 3)))
-    with pytest.raises(fgdwa.FgdwaError, match="key_node_angle"):
-        fgdwa.PlannerParams(key_node_angle_deg=-1.0)
-    with pytest.raises(fgdwa.FgdwaError, match="key_node_radius"):
-        fgdwa.PlannerParams(key_node_radius=float("nan"))
+    with pytest.raises(fgdwa.FgdwaError, match=r"planner.key_nodes.min_turn = -1: must be >= 0 \(rad\)"):
+        fgdwa.PlannerParams(key_nodes={"min_turn": -1.0})
+    with pytest.raises(fgdwa.FgdwaError, match="planner.key_nodes.reach_radius = nan: must be finite"):
+        fgdwa.PlannerParams(key_nodes={"reach_radius": float("nan")})
     with pytest.raises(fgdwa.FgdwaError, match="heading_target"):
         fgdwa.PlannerParams(heading_target="path")
 
@@ -52,7 +52,7 @@ def test_bad_paths():
 def test_key_node_target_switching():
     """The target is the first key node not reached: within the radius, or passed along the path."""
     planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2),
-                                 fgdwa.PlannerParams(heading_target="key_nodes", key_node_radius=1.0))
+                                 fgdwa.PlannerParams(heading_target="key_nodes", key_nodes={"reach_radius": 1.0}))
     world = fgdwa.FieldClearance()
     with pytest.raises(fgdwa.FgdwaError, match="global path"):
         planner.plan(fgdwa.RobotState((0, 0, 0)), (10, 10), world)
@@ -80,7 +80,7 @@ def test_a_near_key_node_is_kept_while_the_next_is_out_of_sight(sight):
     cells = np.zeros((80, 120), np.uint8)
     cells[20:22, 30:49] = 1  # a wall at y = 2.0 from x = 3.0 to 4.9: it hides (5, 5) from (4.2, 0.3)
     world = fgdwa.FieldClearance(fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.1)))
-    params = fgdwa.PlannerParams(heading_target="key_nodes", key_node_radius=1.0, key_node_sight=sight)
+    params = fgdwa.PlannerParams(heading_target="key_nodes", key_nodes={"reach_radius": 1.0, "require_sight": sight})
     planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.2), params)
     planner.set_global_path([[0, 0], [5, 0], [5, 5], [10, 5]])
     r = planner.plan(fgdwa.RobotState((4.2, 0.3, 0.0)), (10, 5), world)

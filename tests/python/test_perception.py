@@ -87,7 +87,7 @@ def test_discs_noise_and_determinism():
 def test_dropped_beams_read_inf_at_the_rate_asked():
     # A wall 1 m ahead in every beam's way: without dropout each beam hits it.
     field = wall_field(1.0)
-    lidar = fgdwa.LidarParams(fov_deg=90, beams=2001, dropout=0.1)
+    lidar = fgdwa.LidarParams(fov=np.pi / 2, beams=2001, dropout=0.1)
     assert lidar.dropout == 0.1
     assert "dropout=0.1" in repr(lidar)
     scanner = fgdwa.LaserScanner(lidar, field)
@@ -95,7 +95,7 @@ def test_dropped_beams_read_inf_at_the_rate_asked():
     dropped = np.isinf(ranges)
     # Binomial(2001, 0.1): mean 200, std 13.4; six standard deviations either side.
     assert 120 < dropped.sum() < 280
-    clean = fgdwa.LaserScanner(fgdwa.LidarParams(fov_deg=90, beams=2001), field).scan((0.0, 0.0, 0.0)).ranges
+    clean = fgdwa.LaserScanner(fgdwa.LidarParams(fov=np.pi / 2, beams=2001), field).scan((0.0, 0.0, 0.0)).ranges
     np.testing.assert_array_equal(ranges[~dropped], clean[~dropped])
     np.testing.assert_array_equal(ranges, scanner.scan((0.0, 0.0, 0.0), seed=5).ranges)
     assert not np.array_equal(dropped, np.isinf(scanner.scan((0.0, 0.0, 0.0), seed=6).ranges))
@@ -119,7 +119,7 @@ def test_perception_bad_input():
     with pytest.raises(fgdwa.FgdwaError, match="max_range"):
         fgdwa.LidarParams(max_range=-1.0)
     with pytest.raises(fgdwa.FgdwaError, match="fov"):
-        fgdwa.LidarParams(fov_deg=400.0)
+        fgdwa.LidarParams(fov=7.0)
     with pytest.raises(fgdwa.FgdwaError, match="noise_std"):
         fgdwa.LidarParams(noise_std=float("nan"))
     for bad in (-0.1, 1.0, float("nan")):
@@ -129,13 +129,13 @@ def test_perception_bad_input():
         fgdwa.DetectWindowParams(radius=0.0)
     with pytest.raises(fgdwa.FgdwaError, match="pose"):
         fgdwa.LaserScanner(fgdwa.LidarParams(), empty_field()).scan((0.0, 0.0))
-    narrow = fgdwa.LaserScanner(fgdwa.LidarParams(fov_deg=90, beams=2), empty_field()).scan((0, 0, 0))
+    narrow = fgdwa.LaserScanner(fgdwa.LidarParams(fov=np.pi / 2, beams=2), empty_field()).scan((0, 0, 0))
     with pytest.raises(fgdwa.FgdwaError, match="no lidar beam"):
-        fgdwa.obstacle_density(narrow, fgdwa.DetectWindowParams(half_angle_deg=10))
+        fgdwa.obstacle_density(narrow, fgdwa.DetectWindowParams(half_angle=np.radians(10)))
 
 
 def test_a_scan_measured_elsewhere_matches_the_scanners_own():
-    lidar = fgdwa.LidarParams(fov_deg=180, beams=91, max_range=5.0)
+    lidar = fgdwa.LidarParams(fov=np.pi, beams=91, max_range=5.0)
     pose = (0.3, -0.2, 0.4)
     own = fgdwa.LaserScanner(lidar, wall_field(1.5, gap=(0.2, 0.6))).scan(pose)
     given = fgdwa.Scan(own.ranges, own.angle_min, own.angle_increment, own.max_range, pose)

@@ -159,7 +159,7 @@ def test_rectangles_movers_and_sections():
         robot:
           limits: {v_max: 0.8, omega_max: 1.5}
           footprint: {polygon: [[0.3, 0.2], [-0.2, 0.2], [-0.2, -0.2], [0.3, -0.2]]}
-        planner: {preset: gdwa, overrides: {n_v: 11, critics: [{name: heading, weight: 0.5}, {name: velocity}]}}
+        planner: {preset: gdwa, overrides: {window: {n_v: 11}, critics: [{name: heading, weight: 0.5}, {name: velocity}]}}
         global_planner: {method: astar, options: {w_risk: 2.0}}
         lidar: {beams: 91, fov_deg: 180, max_range: 5.0}
         detect_window: {half_angle_deg: 45, radius: 1.5}
@@ -176,9 +176,9 @@ def test_rectangles_movers_and_sections():
     assert tuple(world.movers[1].velocity) == (0.0, 0.1)
     assert scenario.start == (0.6, 0.6, 0.5)
     assert scenario.limits.v_max == 0.8 and not scenario.footprint.is_circle
-    assert scenario.planner == "gdwa" and scenario.overrides["n_v"] == 11
+    assert scenario.planner == "gdwa" and scenario.overrides["window.n_v"] == 11
     assert scenario.global_options == {"w_risk": 2.0}
-    assert scenario.lidar.beams == 91 and scenario.window.half_angle_deg == 45
+    assert scenario.lidar.beams == 91 and scenario.window.half_angle == pytest.approx(math.radians(45))
     assert scenario.variability.mover_phase is False
     assert scenario.max_steps == 50 and scenario.goal_tolerance == 0.2
     result = run_scenario(scenario, seed=1, max_steps=3)
@@ -399,18 +399,19 @@ def test_no_python_errors_leak():
 def test_planner_overrides_are_the_bound_params_fields(tmp_path):
     from fgdwa.scenario import PARAM_FIELDS
 
-    assert {"safety_margin", "key_node_sight", "critics", "dt"} <= set(PARAM_FIELDS)
+    assert {"safety_margin", "key_nodes", "critics", "dt"} <= set(PARAM_FIELDS)
     defaults = fgdwa.PlannerParams()
     assert all(hasattr(defaults, name) for name in PARAM_FIELDS)
-    path = write(tmp_path, TINY + "planner: {preset: gdwa, overrides: {safety_margin: 0.05, key_node_sight: true}}\n")
+    path = write(tmp_path, TINY + "planner: {preset: gdwa, overrides: {safety_margin: 0.05, "
+                 "key_nodes: {require_sight: true, min_turn_deg: 20}}}\n")
     scenario = load_scenario(path)
-    assert scenario.overrides == {"safety_margin": 0.05, "key_node_sight": True}
+    assert scenario.overrides == {"safety_margin": 0.05, "key_nodes.require_sight": True,
+                                  "key_nodes.min_turn": 20 * math.pi / 180.0}
 
 
-def test_constructor_keywords_are_read_past_nested_defaults():
+def test_constructor_keywords_are_the_schemas_fields():
     from fgdwa.scenario import init_keywords
 
-    # NavigatorParams' defaults hold parameter objects whose reprs carry commas and brackets.
     names = init_keywords(fgdwa.NavigatorParams)
     assert names[:2] == ("path_margin", "replan_period")
     assert {"occupancy", "segment", "tracker", "learn_obstacles", "mover_margin"} <= set(names)
@@ -429,8 +430,8 @@ def test_constructor_keywords_are_read_past_nested_defaults():
     (TINY.replace("resolution: 0.5", "resolution: 0.5\n  cells_per_char: 100000"), "map.ascii", "MAX_MAP_CELLS"),
     (TINY.replace("resolution: 0.5", "resolution: 0.5\n  origin: [1e7, 0]"), "map.origin[0]", "MAX_COORDINATE"),
     (TINY.replace("resolution: 0.5", "resolution: 1000\n  origin: [999999, 0]"), "map", "corners must lie"),
-    (TINY + "lidar: {beams: 1000000000}\n", "lidar.beams", "MAX_BEAMS"),
-    (TINY + "lidar: {max_range: 1e300}\n", "lidar.max_range", "MAX_LENGTH"),
+    (TINY + "lidar: {beams: 1000000000}\n", "lidar.beams", "must be <= 1e+05"),
+    (TINY + "lidar: {max_range: 1e300}\n", "lidar.max_range", "must be <= 1e+06 (m)"),
     (TINY.replace("start: [0.75, 0.75, 0]", "start: [1e300, 0.75, 0]"), "start[0]", "MAX_COORDINATE"),
     (TINY.replace("start: [0.75, 0.75, 0]", "start: {x: 0.75, y: -1e7}"), "start.y", "MAX_COORDINATE"),
     (TINY.replace("goal: [2.75, 1.25]", "goal: [2.75, 1e7]"), "goal[1]", "MAX_COORDINATE"),
@@ -444,10 +445,11 @@ def test_constructor_keywords_are_read_past_nested_defaults():
      "moving_obstacles[0].waypoints[1][1]", "MAX_COORDINATE"),
     (TINY + "robot: {limits: {v_max: 1e9}}\n", "robot.limits.v_max", "MAX_SPEED"),
     (TINY + "robot: {footprint: {radius: 1e300}}\n", "robot.footprint.radius", "MAX_LENGTH"),
-    (TINY + "planner: {overrides: {sim_time: 1e300}}\n", "planner.overrides.sim_time", "MAX_DURATION"),
-    (TINY + "planner: {overrides: {dt: 1e-9}}\n", "planner.overrides", "MAX_ROLLOUT_POSES"),
-    (TINY + "planner: {overrides: {n_v: 100000, n_omega: 100000}}\n", "planner.overrides", "MAX_ROLLOUT_POSES"),
-    (TINY + "planner: {overrides: {n_v: 1000000}}\n", "planner.overrides.n_v", "MAX_COUNT"),
+    (TINY + "planner: {overrides: {sim_time: 1e300}}\n", "planner.overrides.sim_time", "must be <= 3600 (s)"),
+    (TINY + "planner: {overrides: {dt: 1e-9}}\n", "planner.overrides.dt", "must be >= 1e-04 (s)"),
+    (TINY + "planner: {overrides: {dt: 1e-4}}\n", "planner.overrides", "MAX_ROLLOUT_POSES"),
+    (TINY + "planner: {overrides: {window: {n_v: 1000, n_omega: 1000}}}\n", "planner.overrides", "MAX_ROLLOUT_POSES"),
+    (TINY + "planner: {overrides: {window: {n_v: 1000000}}}\n", "planner.overrides.window.n_v", "must be <= 10000"),
     (TINY + "planner: {overrides: {critics: [{name: heading, weight: 1e300}]}}\n",
      "planner.overrides.critics[0].weight", "MAX_MAGNITUDE"),
     (TINY + "global_planner: {options: {inflation_radius: 1e300}}\n", "global_planner.options.inflation_radius",

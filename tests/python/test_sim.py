@@ -83,7 +83,7 @@ def test_a_rectangle_turning_in_place_beside_a_post_is_a_collision():
         with pytest.raises(fgdwa.FgdwaError, match="start_clearance"):
             collides_during_step(truth, rectangle, before, after, 0.0, 0.1, start_clearance=bad)
     # The planner agrees: from that pose it never commands the turn that sweeps the post.
-    params = fgdwa.PlannerParams(dt=0.1, n_v=5, n_omega=41)
+    params = fgdwa.PlannerParams(dt=0.1, window={"n_v": 5, "n_omega": 41})
     planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(omega_max=16.0, acc_omega=200.0), rectangle, params)
     result = planner.plan(fgdwa.RobotState(before, (0.0, 0.0)), (1.0, 3.0), fgdwa.FieldClearance(
         fgdwa.DistanceField(fgdwa.OccupancyGrid(cells, 0.02))))

@@ -66,7 +66,7 @@ class SimJackal:
         self.footprint = jackal.footprint
         self.limits = jackal.limits
         self.truth = fgdwa.CollisionWorld(self.grid)
-        lidar = fgdwa.LidarParams(fov_deg=270.0, beams=720, max_range=args.range_max, noise_std=args.noise,
+        lidar = fgdwa.LidarParams(fov=270.0 * math.pi / 180.0, beams=720, max_range=args.range_max, noise_std=args.noise,
                                   dropout=args.dropout)
         self.scanner = fgdwa.LaserScanner(lidar, fgdwa.DistanceField(self.grid))
         self.lidar = lidar
@@ -204,9 +204,9 @@ class SimJackal:
         msg = LaserScan()
         msg.header.stamp = stamp
         msg.header.frame_id = LASER_FRAME
-        msg.angle_min = -0.5 * math.radians(self.lidar.fov_deg)
-        msg.angle_max = 0.5 * math.radians(self.lidar.fov_deg)
-        msg.angle_increment = math.radians(self.lidar.fov_deg) / (self.lidar.beams - 1)
+        msg.angle_min = -0.5 * self.lidar.fov
+        msg.angle_max = 0.5 * self.lidar.fov
+        msg.angle_increment = self.lidar.fov / (self.lidar.beams - 1)
         msg.scan_time = 1.0 / self.args.scan_rate
         msg.range_min = 0.1
         msg.range_max = self.lidar.max_range

@@ -191,7 +191,7 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     rospy.set_param("/fgdwa_bad/planner/dt", -1.0)
     bad = subprocess.run([str(node_exe), "__name:=fgdwa_bad"], env=env, capture_output=True, text=True, timeout=30)
     message = bad.stdout + bad.stderr
-    check(bad.returncode == 2 and "~planner/: dt = -1" in message,
+    check(bad.returncode == 2 and "planner.dt = -1: must be >= 1e-04 (s)" in message,
           f"bad parameter: exit {bad.returncode}, output {message.strip()!r}")
     rospy.delete_param("/fgdwa_bad")
     print(f"bad parameter refused: {message.strip().splitlines()[-1]}", flush=True)

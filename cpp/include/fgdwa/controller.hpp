@@ -1,5 +1,5 @@
 #pragma once
-// One control cycle as a robot runs it (SPEC 9): the scan shows obstacles the
+// One control cycle as a robot runs it: the scan shows obstacles the
 // map lacks and gives the detect window's density I, the global path gives the
 // deviation D, the weight policy turns (I, D) into critics' weights, and the
 // planner picks the command. Data flows one way; nothing reaches back.

@@ -1,5 +1,5 @@
 #pragma once
-// Dynamic time warping between two planar point sequences (SPEC 4, Eq. 10):
+// Dynamic time warping between two planar point sequences (Eq. 10):
 // steps (i-1, j), (i, j-1), (i-1, j-1), point distance the 2-D Euclidean
 // distance, DTW the sum of point distances along the optimal warping path.
 #include <cstddef>

@@ -1,7 +1,7 @@
 #pragma once
-// Global planners (SPEC 8): grid A* and OMPL's sampling-based planners, with
-// one result type. No path is a status; a start or goal inside an obstacle is
-// misuse and throws.
+// Global planners (docs/algorithms.md, "Global guidance"): grid A* and OMPL's
+// sampling-based planners, with one result type. No path is a status; a start
+// or goal inside an obstacle is misuse and throws.
 #include <array>
 #include <cstdint>
 #include <functional>

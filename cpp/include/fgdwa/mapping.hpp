@@ -22,6 +22,7 @@
 
 #include "fgdwa/geometry.hpp"
 #include "fgdwa/grid.hpp"
+#include "fgdwa/params.hpp"
 #include "fgdwa/path.hpp"
 #include "fgdwa/perception.hpp"
 
@@ -29,23 +30,42 @@ namespace fgdwa {
 
 // The log-odds update of each cell (defaults: OctoMap's probabilities).
 struct OccupancyParams {
-  double hit = 0.85;         // added to the cell of a hit (p = 0.7)
-  double miss = -0.4;        // added to each cell a beam passes (p = 0.4)
-  double clamp_min = -2.0;   // lowest log-odds a cell holds (p = 0.12): a free cell turns after 3 hits
-  double clamp_max = 3.5;    // highest (p = 0.97): an occupied cell turns free after 10 misses
-  double occupied = 0.5;     // a cell at or above this turns occupied
-  double free = -0.5;        // at or below this an occupied cell turns free (between them it keeps its state)
-  double range_std = 0.0;    // m, the lidar's range noise: hits placed 2 std beyond, clearing stops 3 std short
-  double clear_range = std::numeric_limits<double>::infinity();  // m, the farthest a beam clears
-  // A cell that some beams of one scan end in and others pass is hit when at
-  // least this share of them end in it. A surface's cell is where nearly every
-  // beam reaching it ends; the free cell before it catches only the few
-  // readings that noise puts short, however many beams cross it up close.
+  double hit = 0.85;        // p = 0.7
+  double miss = -0.4;       // p = 0.4
+  double clamp_min = -2.0;  // p = 0.12: a free cell turns after 3 hits
+  double clamp_max = 3.5;   // p = 0.97: an occupied cell turns free after 10 misses
+  double occupied = 0.5;
+  double free = -0.5;
+  double range_std = 0.0;
+  double clear_range = std::numeric_limits<double>::infinity();
+  // A surface's cell is where nearly every beam reaching it ends; the free
+  // cell before it catches only the few readings that noise puts short,
+  // however many beams cross it up close.
   double hit_share = 0.2;
-  bool clear = true;         // false: hits only and nothing clears (static worlds; the map of earlier versions)
-  // m, the free margin the map's field keeps past the grid's edge (DistanceField's edge_margin)
+  bool clear = true;
   double edge_margin = DistanceField::kDefaultEdgeMargin;
-  void validate() const;
+
+  static constexpr const char* kName = "occupancy";
+  template <class V>
+  static void fields(V& v) {
+    using P = OccupancyParams;
+    // Log-odds are kept as floats: every value stays far inside their range.
+    const Bounds log_odds = Bounds::closed(-1e3, 1e3);
+    v.real("hit", &P::hit, "", Bounds::positive(1e3), "log-odds added to the cell of a hit");
+    v.real("miss", &P::miss, "", Bounds::below(-1e3, 0), "log-odds added to each cell a beam passes (< 0: a pass is evidence of free space)");
+    v.real("clamp_min", &P::clamp_min, "", log_odds, "lowest log-odds a cell holds");
+    v.real("clamp_max", &P::clamp_max, "", log_odds, "highest log-odds a cell holds");
+    v.real("occupied", &P::occupied, "", log_odds, "a cell at or above this log-odds turns occupied");
+    v.real("free", &P::free, "", log_odds, "at or below this an occupied cell turns free (between free and occupied it keeps its state)");
+    v.real("range_std", &P::range_std, "m", Bounds::at_least(0), "the lidar's range noise: hits placed 2 std beyond, clearing stops 3 std short");
+    v.real("clear_range", &P::clear_range, "m", Bounds::at_least(0).or_infinite(), "the farthest a beam clears (inf: no limit)");
+    v.real("hit_share", &P::hit_share, "", Bounds::positive(1), "a cell some beams of a scan end in and others pass is hit when at least this share end in it");
+    v.flag("clear", &P::clear, "beams clear the cells they pass (false: hits only, for static worlds)");
+    v.real("edge_margin", &P::edge_margin, "m", Bounds::at_least(0), "the free margin the map's distance field keeps past the grid's edge");
+  }
+  // clamp_min <= free < occupied <= clamp_max, hit >= occupied.
+  void check_relations(const std::string& path) const;
+  void validate() const { validate_params(*this); }
 };
 
 enum class CellState : std::uint8_t { Unknown, Free, Occupied };

@@ -1,7 +1,7 @@
 #pragma once
-// The robot side of one control cycle (SPEC 13): the map, the global path kept
-// on it, the controller, and the recovery behaviours, in one object a robot
-// program steps every control period.
+// The robot side of one control cycle (docs/algorithms.md, "Navigator"): the
+// map, the global path kept on it, the controller, and the recovery behaviours,
+// in one object a robot program steps every control period.
 //
 // Per step the data flows one way: scan -> moving obstacles (segmented,
 // tracked, predicted) -> map (built from scans, the movers' hits left out, or
@@ -61,54 +61,71 @@ enum class MapMode : std::uint8_t {
 const char* to_string(MapMode mode);
 
 struct NavigatorParams {
-  double path_margin = 0.3;       // m kept beyond the footprint's circumscribed radius by the global path where the map allows
-  double replan_period = 0.5;     // s, shortest time between two replans for a blocked path
-  double stall_time = 3.0;        // s over which too little progress is a stall; 0 = never stalls
-  double stall_distance = 0.1;    // m, progress in stall_time below which the robot has stalled
-  double give_up_length = 0.6;    // m of path ahead closed to the global planner after a stall
-  double keep_clear = 0.3;        // m around the robot and the goal that a stall never closes
-  double sensed_close_radius = 2.0;  // m: at a stall, hits the map lacks this near are closed to the global planner
-  double backup_distance = 0.3;   // m driven straight back after a stall
-  double backup_speed = 0.2;      // m/s, reverse speed while backing up
-  double rotate_limit = 6.283185307179586;  // rad, the most a rotation recovery turns (one turn)
-  double wait_time = 2.0;         // s, standing still for a moving obstacle to pass
-  double wait_radius = 1.5;       // m, a known moving obstacle this near at a stall makes the robot wait
-  int max_recoveries = 6;         // recoveries in a row without progress before Failed
-  double progress_reset = 1.0;    // m from where the last recovery began that counts as progress
-  int record_top_k = 5;           // best-scored rollouts kept in each CycleRecord
-  // The map built from scans (MapMode::Scan); its range_std is at least the lidar's noise_std.
+  double path_margin = 0.3;
+  double replan_period = 0.5;
+  double stall_time = 3.0;
+  double stall_distance = 0.1;
+  double give_up_length = 0.6;
+  double keep_clear = 0.3;
+  double sensed_close_radius = 2.0;
+  double backup_distance = 0.3;
+  double backup_speed = 0.2;
+  double rotate_limit = 6.283185307179586;  // one turn
+  double wait_time = 2.0;
+  double wait_radius = 1.5;
+  int max_recoveries = 6;
+  double progress_reset = 1.0;
+  int record_top_k = 5;
   OccupancyParams occupancy;
   // Moving obstacles from the scans: hits the map does not hold as static are
   // segmented and tracked; the moving tracks are predicted by the planner
   // (space-time clearance), count in the detect window's density, can make a
   // stalled robot wait, and their hits stay out of the map built from scans.
-  // false: every hit is a static obstacle where it is now (the ablation).
   bool track_moving = true;
-  double mover_margin = 0.0;   // m added to a tracked mover's radius: room for a mover to change its mind
-  // The global path keeps off the moving obstacles (known discs and tracked
-  // movers): the floor each one's disc sweeps over the next
-  // mover_route_horizon seconds at its predicted velocity is closed to A*
-  // (except near the robot and the goal), and a sweep that comes within the
-  // footprint's inscribed radius of the path's next mover_route_lookahead
-  // metres asks for a new path, at most once every replan_period. The local
-  // planner alone cannot lead the robot round a crossing mover: it scores
-  // arcs of a second or two against a path that runs through the mover.
-  // false: movers reach only the local planner (the ablation).
+  double mover_margin = 0.0;
+  // The local planner alone cannot lead the robot round a crossing mover: it
+  // scores arcs of a second or two against a path that runs through the mover.
   bool route_around_movers = true;
-  double mover_route_horizon = 1.0;    // s
-  double mover_route_lookahead = 3.0;  // m
+  double mover_route_horizon = 1.0;
+  double mover_route_lookahead = 3.0;
   SegmentParams segment;
   TrackerParams tracker;
-  // MapMode::Known: obstacles the scans find that the map lacks join it (a
-  // map built from scans beside the known one, whose obstacles it keeps), so
-  // the global path goes round them as soon as they are seen; they fade if
-  // they go. false: the map stays as given and such obstacles reach only the
-  // local planner (and the global one at a stall).
   bool learn_obstacles = true;
-  // Extra cost per metre for the global path through cells the scans have not
-  // yet observed (MapMode::Scan; AStarParams::unknown_cost). 0: unknown is free.
   double unknown_cost = 0.0;
-  void validate() const;
+
+  static constexpr const char* kName = "navigator";
+  template <class V>
+  static void fields(V& v) {
+    using P = NavigatorParams;
+    const Bounds distance = Bounds::at_least(0);
+    const Bounds time = Bounds::at_least(0, limits::kMaxHorizon);
+    v.real("path_margin", &P::path_margin, "m", distance, "kept beyond the footprint's circumscribed radius by the global path where the map allows");
+    v.real("replan_period", &P::replan_period, "s", Bounds::positive(limits::kMaxHorizon), "shortest time between two replans for a blocked path");
+    v.real("stall_time", &P::stall_time, "s", time, "time over which too little progress is a stall (0: never stalls)");
+    v.real("stall_distance", &P::stall_distance, "m", distance, "progress in stall_time below which the robot has stalled");
+    v.real("give_up_length", &P::give_up_length, "m", distance, "path ahead closed to the global planner after a stall");
+    v.real("keep_clear", &P::keep_clear, "m", distance, "around the robot and the goal, never closed by a stall");
+    v.real("sensed_close_radius", &P::sensed_close_radius, "m", distance, "at a stall, the scan's hits the map lacks this near are closed to the global planner");
+    v.real("backup_distance", &P::backup_distance, "m", distance, "driven straight back after a stall");
+    v.real("backup_speed", &P::backup_speed, "m/s", Bounds::positive(limits::kMaxSpeed), "reverse speed while backing up");
+    v.real("rotate_limit", &P::rotate_limit, "rad", Bounds::at_least(0, limits::kMaxAngle), "the most a rotation recovery turns");
+    v.real("wait_time", &P::wait_time, "s", time, "standing still for a moving obstacle to pass");
+    v.real("wait_radius", &P::wait_radius, "m", distance, "a known moving obstacle this near at a stall makes the robot wait");
+    v.integer("max_recoveries", &P::max_recoveries, "", Bounds::closed(0, limits::kMaxEventCount), "recoveries in a row without progress before Failed");
+    v.real("progress_reset", &P::progress_reset, "m", distance, "distance from where the last recovery began that counts as progress");
+    v.integer("record_top_k", &P::record_top_k, "", Bounds::closed(0, limits::kMaxWindowSamples), "best-scored rollouts kept in each CycleRecord");
+    v.group("occupancy", &P::occupancy, "the map built from scans (its range_std is at least the lidar's noise_std)");
+    v.flag("track_moving", &P::track_moving, "segment and track moving obstacles in the scans (false: every hit is static where it is, the ablation)");
+    v.real("mover_margin", &P::mover_margin, "m", distance, "added to a tracked mover's radius: room for a mover to change its mind");
+    v.flag("route_around_movers", &P::route_around_movers, "the global path keeps off the floor each mover sweeps over mover_route_horizon (false: movers reach only the local planner)");
+    v.real("mover_route_horizon", &P::mover_route_horizon, "s", time, "how far ahead a mover's sweep is closed to the global planner");
+    v.real("mover_route_lookahead", &P::mover_route_lookahead, "m", distance, "a sweep within the inscribed radius of this much path ahead asks for a new path");
+    v.group("segment", &P::segment, "scan segmentation into clusters");
+    v.group("tracker", &P::tracker, "tracks of moving obstacles");
+    v.flag("learn_obstacles", &P::learn_obstacles, "with a known map, obstacles the scans find that it lacks join it (false: they reach only the local planner)");
+    v.real("unknown_cost", &P::unknown_cost, "", Bounds::at_least(0, 1e6), "extra cost per metre of global path through cells the scans have not observed (0: unknown is free)");
+  }
+  void validate() const { validate_params(*this); }
 };
 
 // One rollout the planner scored, as recorded.

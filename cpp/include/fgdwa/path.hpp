@@ -1,12 +1,15 @@
 #pragma once
 // The global path as the local planner sees it: a polyline with projection,
-// deviation, segment directions, arc-length walking and key nodes (SPEC 5).
+// deviation, segment directions, arc-length walking and key nodes
+// (docs/algorithms.md, "Global guidance").
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
 
 #include "fgdwa/geometry.hpp"
+#include "fgdwa/params.hpp"
 
 namespace fgdwa {
 
@@ -51,7 +54,8 @@ class GlobalPath {
   std::vector<double> directions_;
 };
 
-// How the reference samples E of the similarity cost follow the path (SPEC 4).
+// How the reference samples E of the similarity cost follow the path
+// (docs/algorithms.md, "Similarity").
 enum class ReferenceSampling : std::uint8_t {
   Segment,   // Eq. 9 as written: a straight line along the current segment
   Polyline,  // the same spacing walked along the path's arc length, turning its corners
@@ -64,14 +68,21 @@ void reference_samples(const GlobalPath& path, const Vec2& robot, double v_ref, 
                        ReferenceSampling sampling, std::vector<Vec2>& out);
 
 struct KeyNodeParams {
-  double min_turn = 0.17453292519943295;  // rad (10 deg), turn that makes a vertex a key node
-  double reach_radius = 1.0;              // m, a key node closer than this is reached
-  // A node within reach_radius counts as reached only once the next one is in
-  // sight. Off (SPEC 5 as written) by default: on, it keeps robots from aiming
+  double min_turn = 0.17453292519943295;  // 10 deg
+  double reach_radius = 1.0;
+  // Off (the paper as written) by default: on, it keeps robots from aiming
   // past a wall's end at a node behind it, but a robot circling a node it may
   // not leave can stray, and did into the C-shaped trap.
   bool require_sight = false;
-  void validate() const;
+
+  static constexpr const char* kName = "key_nodes";
+  template <class V>
+  static void fields(V& v) {
+    v.real("min_turn", &KeyNodeParams::min_turn, "rad", Bounds::below(0, M_PI), "turn that makes a path vertex a key node");
+    v.real("reach_radius", &KeyNodeParams::reach_radius, "m", Bounds::at_least(0), "a key node closer than this is reached");
+    v.flag("require_sight", &KeyNodeParams::require_sight, "a key node within reach_radius counts as reached only once the next one is in sight");
+  }
+  void validate() const { validate_params(*this); }
 };
 
 // The temporary target of GDWA: the first key node not yet reached. A node is

@@ -1,22 +1,35 @@
 #pragma once
-// What the robot senses (SPEC 6): a planar lidar ray-cast against the true
-// world, the detect window ahead of the robot and its obstacle density I (Eq. 13).
+// What the robot senses (docs/algorithms.md, "Perception"): a planar lidar
+// ray-cast against the true world, the detect window ahead of the robot and its
+// obstacle density I (Eq. 13).
+#include <cmath>
 #include <memory>
 #include <random>
 #include <vector>
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/grid.hpp"
+#include "fgdwa/params.hpp"
 
 namespace fgdwa {
 
 struct LidarParams {
-  double fov = 4.71238898038469;  // rad, field of view centred on the heading (270 deg)
-  int beams = 541;                // beams, both ends of the field of view included
-  double max_range = 10.0;        // m; a beam with no hit within it reads +inf
-  double noise_std = 0.0;         // m, Gaussian noise added to each hit's range
-  double dropout = 0.0;           // probability in [0, 1) that a beam returns nothing and reads +inf
-  void validate() const;
+  double fov = 4.71238898038469;  // 270 deg
+  int beams = 541;
+  double max_range = 10.0;
+  double noise_std = 0.0;
+  double dropout = 0.0;
+
+  static constexpr const char* kName = "lidar";
+  template <class V>
+  static void fields(V& v) {
+    v.real("fov", &LidarParams::fov, "rad", Bounds::positive(2.0 * M_PI), "field of view centred on the heading");
+    v.integer("beams", &LidarParams::beams, "", Bounds::closed(1, limits::kMaxBeams), "beams, both ends of the field of view included");
+    v.real("max_range", &LidarParams::max_range, "m", Bounds::positive(), "a beam with no hit within it reads +inf");
+    v.real("noise_std", &LidarParams::noise_std, "m", Bounds::at_least(0), "Gaussian noise added to each hit's range");
+    v.real("dropout", &LidarParams::dropout, "", Bounds::below(0, 1), "probability that a beam returns nothing and reads +inf");
+  }
+  void validate() const { validate_params(*this); }
   double increment() const { return beams > 1 ? fov / (beams - 1) : 0.0; }
   // Beam i's angle relative to the heading, rad.
   double angle(int i) const { return -0.5 * fov + i * increment(); }
@@ -62,10 +75,18 @@ class LaserScanner {
 };
 
 struct DetectWindowParams {
-  double half_angle = 1.0471975511965976;  // rad, the window spans +-60 deg about the heading
-  double radius = 2.0;                     // m, R
-  double base = 0.5;                       // c of Eq. 13
-  void validate() const;
+  double half_angle = 1.0471975511965976;  // 60 deg
+  double radius = 2.0;
+  double base = 0.5;
+
+  static constexpr const char* kName = "detect_window";
+  template <class V>
+  static void fields(V& v) {
+    v.real("half_angle", &DetectWindowParams::half_angle, "rad", Bounds::positive(M_PI), "the window spans +-half_angle about the heading");
+    v.real("radius", &DetectWindowParams::radius, "m", Bounds::positive(), "the window's radius R");
+    v.real("base", &DetectWindowParams::base, "", Bounds::positive(1e6), "the base c of the density's exponential weight (Eq. 13)");
+  }
+  void validate() const { validate_params(*this); }
 };
 
 struct DensityReading {
@@ -75,9 +96,10 @@ struct DensityReading {
   int beams = 0;            // beams inside the window
 };
 
-// Eq. 13 read as SPEC 6 fixes it: S_d / S_w is the share of the window's sector
-// area at or beyond the beams' hits; max_gap the chord of the widest angular run
-// phi of adjacent window beams with no hit within R (0 when there is none).
+// Eq. 13 as docs/algorithms.md ("Perception") reads it: S_d / S_w is the share
+// of the window's sector area at or beyond the beams' hits; max_gap the chord of
+// the widest angular run phi of adjacent window beams with no hit within R (0
+// when there is none).
 DensityReading obstacle_density(const Scan& scan, const DetectWindowParams& params);
 
 // A distance field of scattered obstacle points (lidar hits the map does not

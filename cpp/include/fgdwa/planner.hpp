@@ -40,7 +40,7 @@ enum class RejectReason : std::uint8_t {
 };
 constexpr std::size_t kRejectReasonCount = 5;
 
-// How slope grades 0-4 (SPEC 7) limit the robot: each grade's passing factor
+// How slope grades 0-4 limit the robot: each grade's passing factor
 // scales v_max on its cells; grade 4 cannot be entered at all.
 using PassingFactors = std::array<double, TerrainGrid::kMaxGrade + 1>;
 constexpr PassingFactors kDefaultPassingFactors = {1.0, 0.8, 0.6, 0.4, 0.0};
@@ -57,7 +57,7 @@ enum class Normalization : std::uint8_t {
   None,
 };
 
-// What the heading critic aims at (SPEC 5).
+// What the heading critic aims at (docs/algorithms.md, "Global guidance").
 enum class HeadingTarget : std::uint8_t {
   Goal,      // the goal itself: plain DWA
   KeyNodes,  // the first key node of the global path not yet reached: GDWA
@@ -67,34 +67,54 @@ const char* to_string(Status status);
 const char* to_string(HeadingTarget target);
 const char* to_string(RejectReason reason);
 const char* to_string(Normalization normalization);
-const char* to_string(BrakingModel braking);
+constexpr std::array<Normalization, 3> enum_values(Normalization) {
+  return {Normalization::Sum, Normalization::MinMax, Normalization::None};
+}
+constexpr std::array<HeadingTarget, 2> enum_values(HeadingTarget) { return {HeadingTarget::Goal, HeadingTarget::KeyNodes}; }
 
 struct PlannerParams {
-  double dt = 0.15;             // s, control period and rollout step
-  double sim_time = 3.0;        // s, rollout horizon ("perDT")
-  WindowParams window;          // sample counts
+  double dt = 0.15;
+  double sim_time = 3.0;
+  WindowParams window;
   Normalization normalization = Normalization::Sum;
-  BrakingModel braking = BrakingModel::Discrete;  // admissibility (Eq. 3); Continuous is the paper's literal form
-  double goal_tolerance = 0.3;  // m, GoalReached within this distance of the goal
-  double safety_margin = 0.02;  // m, clearance below which a rollout counts as in contact (at most the robot's own)
-  // s: a rollout predicted to meet a moving obstacle this soon is rejected,
-  // standing still included: a robot that brakes is still hit by what moves
-  // into it. 0: moving obstacles count only as the braking rule counts them.
+  BrakingModel braking = BrakingModel::Discrete;
+  double goal_tolerance = 0.3;
+  double safety_margin = 0.02;
+  // A robot that brakes is still hit by what moves into it, so standing
+  // still is judged against moving obstacles too.
   double moving_horizon = 1.0;
-  // Speed is worth less beside a mover: while a moving obstacle is within
-  // mover_caution_radius (m, clearance from the footprint) the velocity
-  // critic's weight is multiplied by mover_speed_weight (1: no change). A
-  // mover may turn or reverse; a slower robot keeps the time to answer it.
+  // A mover may turn or reverse; a slower robot keeps the time to answer it.
   double mover_caution_radius = 2.0;
   double mover_speed_weight = 0.5;
   HeadingTarget heading_target = HeadingTarget::Goal;
-  KeyNodeParams key_nodes;      // key-node angle and reach radius, for HeadingTarget::KeyNodes
+  KeyNodeParams key_nodes;
   std::vector<CriticConfig> critics = {
       {"heading", 0.5}, {"clearance", 0.15}, {"velocity", 1.0}};  // Table 5
 
+  static constexpr const char* kName = "planner";
+  template <class V>
+  static void fields(V& v) {
+    using P = PlannerParams;
+    v.real("dt", &P::dt, "s", Bounds::closed(limits::kMinTimeStep, limits::kMaxTimeStep), "control period and rollout step");
+    v.real("sim_time", &P::sim_time, "s", Bounds::positive(limits::kMaxHorizon), "rollout horizon (the paper's perDT)");
+    v.group("window", &P::window, "samples of the dynamic window");
+    v.choice("normalization", &P::normalization, "how each critic's terms are scaled before weighting: sum (classic DWA), minmax, or none (raw, as Nav2's DWB adds them)");
+    v.choice("braking", &P::braking, "admissibility's braking rule (Eq. 3): discrete (one period of latency, stepped deceleration) or continuous (the paper's literal form)");
+    v.real("goal_tolerance", &P::goal_tolerance, "m", Bounds::at_least(0), "GoalReached within this distance of the goal");
+    v.real("safety_margin", &P::safety_margin, "m", Bounds::at_least(0), "clearance below which a rollout counts as in contact (never more than the robot's own)");
+    v.real("moving_horizon", &P::moving_horizon, "s", Bounds::at_least(0, limits::kMaxHorizon), "a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: only the braking rule counts movers)");
+    v.real("mover_caution_radius", &P::mover_caution_radius, "m", Bounds::at_least(0), "while a moving obstacle is this near the footprint, the velocity critic's weight is scaled by mover_speed_weight");
+    v.real("mover_speed_weight", &P::mover_speed_weight, "", Bounds::closed(0, 1), "the velocity critic's weight factor beside a mover (1: no change)");
+    v.choice("heading_target", &P::heading_target, "what the heading critic aims at: goal (DWA) or key_nodes (GDWA: the first key node of the global path not yet reached)");
+    v.group("key_nodes", &P::key_nodes, "key nodes of the global path, for heading_target key_nodes");
+    v.critics("critics", &P::critics, "the critics scored, each {name, weight, params} (default heading 0.5, clearance 0.15, velocity 1.0)");
+  }
+  // sim_time covers 1 to limits::kMaxRolloutSteps steps of dt; at least one critic, none twice.
+  void check_relations(const std::string& path) const;
+
   // Poses per rollout: sim_time / dt, rounded.
   int n_steps() const;
-  void validate() const;
+  void validate() const { validate_params(*this); }
 };
 
 // m: how much closer a robot already within a millimetre of an obstacle (or

@@ -27,7 +27,7 @@ struct RobotPreset {
   Footprint footprint;
 };
 
-// "default" (SPEC 1: 1.2 m/s, 1 rad/s, circle of 0.25 m) and "jackal" (Clearpath
+// "default" (our choice: 1.2 m/s, 1 rad/s, circle of 0.25 m) and "jackal" (Clearpath
 // Jackal: 0.42 m x 0.33 m, the limits of its stock velocity controller).
 RobotPreset robot_preset(const std::string& name);
 std::vector<std::string> robot_names();

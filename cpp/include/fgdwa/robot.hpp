@@ -4,22 +4,40 @@
 #include <vector>
 
 #include "fgdwa/geometry.hpp"
+#include "fgdwa/params.hpp"
 
 namespace fgdwa {
 
 struct RobotLimits {
-  double v_min = 0.0;        // m/s, slowest forward speed (>= 0: forward only)
-  double v_max = 1.2;        // m/s, fastest forward speed
-  double omega_max = 1.0;    // rad/s, symmetric turn-rate limit
-  double acc_v = 1.0;        // m/s^2, linear acceleration
-  double acc_omega = 2.0;    // rad/s^2, angular acceleration
-  double brake_v = 0.0;      // m/s^2, linear braking deceleration; 0 = same as acc_v
-  double brake_omega = 0.0;  // rad/s^2, angular braking deceleration; 0 = same as acc_omega
+  double v_min = 0.0;
+  double v_max = 1.2;
+  double omega_max = 1.0;
+  double acc_v = 1.0;
+  double acc_omega = 2.0;
+  double brake_v = 0.0;
+  double brake_omega = 0.0;
+
+  static constexpr const char* kName = "limits";
+  template <class V>
+  static void fields(V& v) {
+    using limits::kMaxAcceleration;
+    using limits::kMaxSpeed;
+    using limits::kMinAcceleration;
+    v.real("v_min", &RobotLimits::v_min, "m/s", Bounds::at_least(0, kMaxSpeed), "slowest forward speed (0: forward only, down to standing)");
+    v.real("v_max", &RobotLimits::v_max, "m/s", Bounds::positive(kMaxSpeed), "fastest forward speed");
+    v.real("omega_max", &RobotLimits::omega_max, "rad/s", Bounds::positive(kMaxSpeed), "symmetric turn-rate limit");
+    v.real("acc_v", &RobotLimits::acc_v, "m/s^2", Bounds::closed(kMinAcceleration, kMaxAcceleration), "linear acceleration");
+    v.real("acc_omega", &RobotLimits::acc_omega, "rad/s^2", Bounds::closed(kMinAcceleration, kMaxAcceleration), "angular acceleration");
+    v.real("brake_v", &RobotLimits::brake_v, "m/s^2", Bounds::at_least(0, kMaxAcceleration), "linear braking deceleration; 0: the same as acc_v");
+    v.real("brake_omega", &RobotLimits::brake_omega, "rad/s^2", Bounds::at_least(0, kMaxAcceleration), "angular braking deceleration; 0: the same as acc_omega");
+  }
+  // v_min <= v_max; a braking deceleration other than 0 at least kMinAcceleration.
+  void check_relations(const std::string& path) const;
 
   double braking_v() const { return brake_v > 0.0 ? brake_v : acc_v; }
   double braking_omega() const { return brake_omega > 0.0 ? brake_omega : acc_omega; }
   // Throws fgdwa::Error naming the first bad field.
-  void validate() const;
+  void validate() const { validate_params(*this); }
 };
 
 struct RobotState {

@@ -18,18 +18,33 @@
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/geometry.hpp"
+#include "fgdwa/params.hpp"
 #include "fgdwa/perception.hpp"
 
 namespace fgdwa {
 
 struct SegmentParams {
-  double base_gap = 0.15;          // m: consecutive hits farther apart than base_gap + range_gap_factor * range start a new cluster
-  double range_gap_factor = 0.03;  // m per m of range: beams spread with range, so the gap does too
-  int min_points = 3;              // hits; smaller clusters are dropped as noise
-  double max_size = 1.6;           // m: clusters whose oriented box is longer (walls) are not objects to track
-  double min_radius = 0.05;        // m, smallest fitted disc radius (the largest is max_size / 2)
-  double range_noise = 0.03;       // m, range noise std the disc fit assumes when weighing hits against the apparent width
-  void validate() const;
+  double base_gap = 0.15;
+  double range_gap_factor = 0.03;
+  int min_points = 3;
+  double max_size = 1.6;
+  double min_radius = 0.05;
+  double range_noise = 0.03;
+
+  static constexpr const char* kName = "segment";
+  template <class V>
+  static void fields(V& v) {
+    using P = SegmentParams;
+    v.real("base_gap", &P::base_gap, "m", Bounds::positive(), "consecutive hits farther apart than base_gap + range_gap_factor * range start a new cluster");
+    v.real("range_gap_factor", &P::range_gap_factor, "m/m", Bounds::at_least(0, 1e3), "the gap's growth per metre of range (beams spread with range)");
+    v.integer("min_points", &P::min_points, "", Bounds::closed(1, limits::kMaxBeams), "hits of the smallest cluster kept (smaller ones are noise)");
+    v.real("max_size", &P::max_size, "m", Bounds::positive(), "clusters whose oriented box is longer (walls) are not tracked");
+    v.real("min_radius", &P::min_radius, "m", Bounds::positive(), "smallest fitted disc radius (the largest is max_size / 2)");
+    v.real("range_noise", &P::range_noise, "m", Bounds::positive(), "range noise std the disc fit assumes when weighing hits against the apparent width");
+  }
+  // min_radius <= max_size / 2.
+  void check_relations(const std::string& path) const;
+  void validate() const { validate_params(*this); }
 };
 
 // A box along the principal axes of a cluster's hits.
@@ -73,25 +88,46 @@ enum class TrackStatus : std::uint8_t {
 const char* to_string(TrackStatus status);
 
 struct TrackerParams {
-  double gate = 1.0;                // m, largest distance between a track's prediction and a cluster it may take
-  double gate_sigmas = 4.0;         // the same in standard deviations of the prediction (Mahalanobis)
-  double accel_std = 1.5;           // m/s^2, white-noise acceleration of the constant-velocity model
-  double measurement_std = 0.03;    // m, std of an unoccluded cluster centre (and the least scatter the moving test assumes)
-  int confirm_hits = 3;             // associations before Tentative -> Confirmed
-  double lost_time = 0.5;           // s without association before Lost; removed after another lost_time
-  double moving_speed = 0.1;        // m/s: a confirmed track whose window speed, less moving_sigmas std, exceeds it is moving
-  double moving_sigmas = 2.0;       // std devs taken off the window speed before comparing it with moving_speed
-  double moving_window = 1.0;       // s: the window speed is the slope of a line fitted to the centres this far back (occluded ones weigh less)
-  // s: the predicted velocity is the slope of the centres this far back (no
-  // farther than moving_window). Shorter than the label's window, so that a
-  // turn or a reversal reaches the prediction sooner; the label keeps the
-  // longer one, which a slow mover needs to show its displacement above the noise.
+  double gate = 1.0;
+  double gate_sigmas = 4.0;
+  double accel_std = 1.5;
+  double measurement_std = 0.03;
+  int confirm_hits = 3;
+  double lost_time = 0.5;
+  double moving_speed = 0.1;
+  double moving_sigmas = 2.0;
+  double moving_window = 1.0;
+  // Shorter than the label's window, so that a turn or a reversal reaches the
+  // prediction sooner; the label keeps the longer one, which a slow mover
+  // needs to show its displacement above the noise.
   double prediction_window = 0.6;
-  double free_margin = 0.1;         // m: a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
-  double max_speed = 3.0;           // m/s; an association implying more is rejected
-  double uncertainty_sigmas = 2.0;  // std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead
-  double max_uncertainty = 0.3;     // m, the most the position's uncertainty adds to it (a coasting track's grows)
-  void validate() const;
+  double free_margin = 0.1;
+  double max_speed = 3.0;
+  double uncertainty_sigmas = 2.0;
+  double max_uncertainty = 0.3;
+
+  static constexpr const char* kName = "tracker";
+  template <class V>
+  static void fields(V& v) {
+    using P = TrackerParams;
+    using limits::kMaxHorizon;
+    using limits::kMaxSpeed;
+    v.real("gate", &P::gate, "m", Bounds::positive(), "largest distance between a track's prediction and a cluster it may take");
+    v.real("gate_sigmas", &P::gate_sigmas, "", Bounds::positive(1e3), "the same gate in standard deviations of the prediction (Mahalanobis)");
+    v.real("accel_std", &P::accel_std, "m/s^2", Bounds::positive(limits::kMaxAcceleration), "white-noise acceleration of the constant-velocity model");
+    v.real("measurement_std", &P::measurement_std, "m", Bounds::positive(), "std of an unoccluded cluster centre (and the least scatter the moving test assumes)");
+    v.integer("confirm_hits", &P::confirm_hits, "", Bounds::closed(1, limits::kMaxEventCount), "associations before a tentative track is confirmed");
+    v.real("lost_time", &P::lost_time, "s", Bounds::positive(kMaxHorizon), "time without association before a track is lost; removed after another lost_time");
+    v.real("moving_speed", &P::moving_speed, "m/s", Bounds::at_least(0, kMaxSpeed), "a confirmed track whose window speed, less moving_sigmas std, exceeds this is moving");
+    v.real("moving_sigmas", &P::moving_sigmas, "", Bounds::at_least(0, 1e3), "std devs taken off the window speed before comparing it with moving_speed");
+    v.real("moving_window", &P::moving_window, "s", Bounds::positive(kMaxHorizon), "the window speed is the slope of a line fitted to the centres this far back");
+    v.real("prediction_window", &P::prediction_window, "s", Bounds::positive(kMaxHorizon), "the predicted velocity is the slope of the centres this far back (no farther than moving_window)");
+    v.real("free_margin", &P::free_margin, "m", Bounds::positive(), "a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it");
+    v.real("max_speed", &P::max_speed, "m/s", Bounds::positive(kMaxSpeed), "an association implying more speed is rejected");
+    v.real("uncertainty_sigmas", &P::uncertainty_sigmas, "", Bounds::at_least(0, 1e3), "std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead");
+    v.real("max_uncertainty", &P::max_uncertainty, "m", Bounds::at_least(0), "the most the position's uncertainty adds to a disc (a coasting track's grows)");
+  }
+  void validate() const { validate_params(*this); }
 };
 
 struct Track {

@@ -1,9 +1,9 @@
 #pragma once
 // How critics' weights are set each control cycle from the obstacle density I
-// and the path deviation D (SPEC 6): held fixed, or read from a fuzzy
-// controller. A policy returns weights by critic name; the controller applies
-// those the planner has (the paper's fuzzy policy also names the similarity
-// critic, which GDWA lacks).
+// and the path deviation D (docs/algorithms.md, "Fuzzy weights"): held fixed,
+// or read from a fuzzy controller. A policy returns weights by critic name; the
+// controller applies those the planner has (the paper's fuzzy policy also names
+// the similarity critic, which GDWA lacks).
 #include <map>
 #include <memory>
 #include <string>

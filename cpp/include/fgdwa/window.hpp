@@ -5,14 +5,25 @@
 #include <vector>
 
 #include "fgdwa/geometry.hpp"
+#include "fgdwa/params.hpp"
 #include "fgdwa/robot.hpp"
 
 namespace fgdwa {
 
 struct WindowParams {
-  int n_v = 21;      // samples of the linear velocity, both window ends included
-  int n_omega = 21;  // samples of the angular velocity, both window ends included
-  void validate() const;
+  int n_v = 21;
+  int n_omega = 21;
+
+  static constexpr const char* kName = "window";
+  template <class V>
+  static void fields(V& v) {
+    const Bounds samples = Bounds::closed(1, limits::kMaxWindowSamplesPerAxis);
+    v.integer("n_v", &WindowParams::n_v, "", samples, "samples of the linear velocity, both window ends included");
+    v.integer("n_omega", &WindowParams::n_omega, "", samples, "samples of the angular velocity, both window ends included");
+  }
+  // n_v * n_omega <= limits::kMaxWindowSamples.
+  void check_relations(const std::string& path) const;
+  void validate() const { validate_params(*this); }
 };
 
 struct VelocityWindow {
@@ -48,6 +59,8 @@ enum class BrakingModel : std::uint8_t {
   // admits commands that the stepped deceleration cannot stop in time.
   Discrete,
 };
+const char* to_string(BrakingModel braking);
+constexpr std::array<BrakingModel, 2> enum_values(BrakingModel) { return {BrakingModel::Discrete, BrakingModel::Continuous}; }
 
 // Distance covered by the Discrete model from speed v: dt sum_j max(v - j b dt, 0), j >= 0.
 double stopping_distance(double v, double deceleration, double dt);

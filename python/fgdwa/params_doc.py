@@ -1,0 +1,71 @@
+"""The parameter reference (docs/parameters.md), written from the schema each
+parameter struct declares once in C++ (``cls.schema()``)."""
+
+from __future__ import annotations
+
+import math
+
+from fgdwa._core import DetectWindowParams, LidarParams, NavigatorParams, PlannerParams, RobotLimits
+
+# The sets a robot program, the ROS node and scenario files configure, in the
+# order a newcomer meets them.
+PARAMETER_SETS = (RobotLimits, PlannerParams, NavigatorParams, DetectWindowParams, LidarParams)
+
+
+def _number(value: float) -> str:
+    if math.isinf(value):
+        return "inf" if value > 0 else "-inf"
+    return f"{value:g}"
+
+
+def bounds_text(entry: dict) -> str:
+    """An entry's bounds as an interval: ``[0, 1e+06]``, ``(0, 1]``, ``[0, 1e+06] or inf``."""
+    if "min" not in entry:
+        return " / ".join(entry["choices"]) if entry["type"] == "choice" else ""
+    text = (("(" if entry["min_open"] else "[") + _number(entry["min"]) + ", " + _number(entry["max"])
+            + (")" if entry["max_open"] else "]"))
+    return text + (" or inf" if entry["infinite_ok"] else "")
+
+
+def default_text(entry: dict) -> str:
+    value = entry.get("default")
+    if entry["type"] == "group":
+        return ""
+    if entry["type"] == "critics":
+        return ", ".join(f"{c['name']} {c['weight']:g}" for c in value)
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return _number(value)
+    return str(value)
+
+
+def parameter_reference() -> str:
+    lines = [
+        "# Parameters",
+        "",
+        "Written by `fgdwa params --markdown > docs/parameters.md` from the schema each",
+        "parameter struct declares once in C++ (`cpp/include/fgdwa/params.hpp`); a test",
+        "checks that this page matches the code.",
+        "",
+        "One name on every surface: the C++ member, the Python attribute and keyword",
+        "(`PlannerParams(window={\"n_v\": 15})`, `params.window.n_v`, `params.set(\"window.n_v\", 15)`),",
+        "the ROS node's private parameter (`~planner/window/n_v`), scenario and IR-SIM keys",
+        "(`overrides: {window: {n_v: 15}}`) and `fgdwa replay --set planner/window/n_v=15`.",
+        "Units are SI and radians everywhere; a file key may give an angle (unit rad) in",
+        "degrees under its name + `_deg` (`min_turn_deg: 10`). A name that is not known",
+        "is refused with the nearest known names.",
+        "",
+    ]
+    for cls in PARAMETER_SETS:
+        lines += [f"## `{cls.name}`: `{cls.__name__}`", "",
+                  "| name | unit | bounds | default | meaning |", "|---|---|---|---|---|"]
+        for entry in cls.schema():
+            name = f"{cls.name}/{entry['name'].replace('.', '/')}"
+            if entry["type"] == "group":
+                lines.append(f"| **`{name}/`** | | | | {entry['doc']} |")
+                continue
+            lines.append(f"| `{name}` | {entry['unit']} | {bounds_text(entry)} | {default_text(entry)} | "
+                         f"{entry['doc']} |")
+        lines.append("")
+    return "\n".join(lines)
