@@ -11,13 +11,13 @@
 
 namespace fgdwa {
 
-void OccupancyParams::check_relations(const std::string& path) const {
+void OccupancyParams::check_relations(const ParamPath& path) const {
   using detail::format_number;
   if (!(clamp_min <= free && free < occupied && occupied <= clamp_max))
-    throw Error(path + ": need clamp_min <= free < occupied <= clamp_max, got " + format_number(clamp_min) + " <= " +
+    throw Error(path.str() + ": need clamp_min <= free < occupied <= clamp_max, got " + format_number(clamp_min) + " <= " +
                 format_number(free) + " < " + format_number(occupied) + " <= " + format_number(clamp_max));
   if (hit < occupied)
-    fail_param(param_path(path, "hit"), format_number(hit),
+    fail_param(path.field("hit"), format_number(hit),
                "must reach the occupied threshold (" + format_number(occupied) + ") so that a first hit marks an unknown cell");
 }
 

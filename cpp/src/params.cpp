@@ -9,14 +9,6 @@
 
 namespace fgdwa {
 
-bool Bounds::contains(double value) const {
-  if (std::isnan(value)) return false;
-  if (std::isinf(value)) return infinite_ok && value > 0.0;
-  const bool above_lo = lo_open ? value > lo : value >= lo;
-  const bool below_hi = hi_open ? value < hi : value <= hi;
-  return above_lo && below_hi;
-}
-
 std::string Bounds::rule(double value) const {
   using detail::format_number;
   if (std::isnan(value) || (std::isinf(value) && !infinite_ok)) return "must be finite";
@@ -40,6 +32,10 @@ const char* to_string(ParamType type) {
   }
   return "?";
 }
+
+std::string ParamPath::str() const { return parent ? parent->field(name) : std::string(name); }
+
+std::string ParamPath::field(const char* field) const { return str() + "." + field; }
 
 std::string param_path(const std::string& path, const char* name) {
   return path.empty() ? std::string(name) : path + "." + name;

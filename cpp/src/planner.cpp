@@ -67,18 +67,18 @@ void validate_passing_factors(const PassingFactors& factors) {
 
 int PlannerParams::n_steps() const { return static_cast<int>(std::lround(sim_time / dt)); }
 
-void PlannerParams::check_relations(const std::string& path) const {
+void PlannerParams::check_relations(const ParamPath& path) const {
   if (sim_time / dt > static_cast<double>(limits::kMaxRolloutSteps))
-    fail_param(param_path(path, "sim_time"), detail::format_number(sim_time),
+    fail_param(path.field("sim_time"), detail::format_number(sim_time),
                "covers more than " + std::to_string(limits::kMaxRolloutSteps) + " steps of dt = " +
                    detail::format_number(dt) + " (s)");
   if (n_steps() < 1)
-    fail_param(param_path(path, "sim_time"), detail::format_number(sim_time), "must be at least one dt (s)");
-  if (critics.empty()) throw Error(param_path(path, "critics") + ": at least one critic is needed");
+    fail_param(path.field("sim_time"), detail::format_number(sim_time), "must be at least one dt (s)");
+  if (critics.empty()) throw Error(path.field("critics") + ": at least one critic is needed");
   for (std::size_t i = 0; i < critics.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (critics[i].name == critics[j].name)
-        throw Error(param_path(path, "critics") + ": '" + critics[i].name + "' is listed twice");
+        throw Error(path.field("critics") + ": '" + critics[i].name + "' is listed twice");
 }
 
 LocalPlanner::LocalPlanner(const RobotLimits& limits, const Footprint& footprint, const PlannerParams& params)

@@ -10,13 +10,13 @@ namespace fgdwa {
 
 using detail::describe;
 
-void RobotLimits::check_relations(const std::string& path) const {
+void RobotLimits::check_relations(const ParamPath& path) const {
   if (v_min > v_max)
-    fail_param(param_path(path, "v_min"), detail::format_number(v_min),
+    fail_param(path.field("v_min"), detail::format_number(v_min),
                "must be <= v_max = " + detail::format_number(v_max) + " (m/s)");
   for (const auto& [name, value] : {std::pair{"brake_v", brake_v}, std::pair{"brake_omega", brake_omega}})
     if (value != 0.0 && value < limits::kMinAcceleration)
-      fail_param(param_path(path, name), detail::format_number(value),
+      fail_param(path.field(name), detail::format_number(value),
                  "must be 0 (the acceleration's) or >= " + detail::format_number(limits::kMinAcceleration) + " (m/s^2)");
 }
 

@@ -13,9 +13,9 @@
 
 namespace fgdwa {
 
-void SegmentParams::check_relations(const std::string& path) const {
+void SegmentParams::check_relations(const ParamPath& path) const {
   if (min_radius > 0.5 * max_size)
-    fail_param(param_path(path, "min_radius"), detail::format_number(min_radius), "must be <= max_size / 2 (m)");
+    fail_param(path.field("min_radius"), detail::format_number(min_radius), "must be <= max_size / 2 (m)");
 }
 
 void Cluster::validate(const std::string& name) const {

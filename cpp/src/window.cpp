@@ -9,10 +9,10 @@
 
 namespace fgdwa {
 
-void WindowParams::check_relations(const std::string& path) const {
+void WindowParams::check_relations(const ParamPath& path) const {
   const long total = static_cast<long>(n_v) * n_omega;
   if (total > limits::kMaxWindowSamples)
-    fail_param(path + ".n_v * n_omega", std::to_string(total), "must be <= " + std::to_string(limits::kMaxWindowSamples));
+    fail_param(path.field("n_v * n_omega"), std::to_string(total), "must be <= " + std::to_string(limits::kMaxWindowSamples));
 }
 
 void VelocityWindow::validate() const {

@@ -64,7 +64,7 @@ struct OccupancyParams {
     v.real("edge_margin", &P::edge_margin, "m", Bounds::at_least(0), "the free margin the map's distance field keeps past the grid's edge");
   }
   // clamp_min <= free < occupied <= clamp_max, hit >= occupied.
-  void check_relations(const std::string& path) const;
+  void check_relations(const ParamPath& path) const;
   void validate() const { validate_params(*this); }
 };
 

@@ -19,9 +19,11 @@
 // > 0"); param_schema() lists the fields (name, type, SI unit, bounds, doc,
 // choices) for the Python classes, the ROS node, scenario files and the
 // parameter reference page. Rules that tie fields together go in the struct's
-// `void check_relations(const std::string& path) const`, called after its fields.
+// `void check_relations(const ParamPath& path) const`, called after its fields.
+// A check that passes builds no text: validate() runs in control cycles.
 // Adding a parameter is its member and its line in fields().
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -53,7 +55,11 @@ struct Bounds {
   static constexpr Bounds positive(double hi = limits::kMaxLength) { return above(0.0, hi); }
   constexpr Bounds or_infinite() const { return {lo, hi, lo_open, hi_open, true}; }
 
-  bool contains(double value) const;
+  bool contains(double value) const {
+    if (std::isnan(value)) return false;
+    if (std::isinf(value)) return infinite_ok && value > 0.0;
+    return (lo_open ? value > lo : value >= lo) && (hi_open ? value < hi : value <= hi);
+  }
   // "must be >= 0", "must lie in (0, 1]", ... for the side `value` breaks.
   std::string rule(double value) const;
 };
@@ -82,6 +88,15 @@ struct ParamInfo {
   std::size_t size = 0;              // Reals: how many
 };
 
+// Where a parameter struct sits: its name and the struct it is nested in
+// ("navigator" -> "occupancy"). Its text is built only for an error.
+struct ParamPath {
+  const char* name;
+  const ParamPath* parent = nullptr;
+  std::string str() const;                    // "navigator.occupancy"
+  std::string field(const char* field) const;  // "navigator.occupancy.hit"
+};
+
 // Joins a path and a field name with '.'.
 std::string param_path(const std::string& path, const char* name);
 // Throws fgdwa::Error "path = value: rule (unit)".
@@ -98,50 +113,50 @@ namespace detail {
 template <class P, class = void>
 struct HasRelations : std::false_type {};
 template <class P>
-struct HasRelations<P, std::void_t<decltype(std::declval<const P&>().check_relations(std::string()))>>
+struct HasRelations<P, std::void_t<decltype(std::declval<const P&>().check_relations(std::declval<const ParamPath&>()))>>
     : std::true_type {};
 
 template <class P>
-void validate_params_at(const P& params, const std::string& path);
+void validate_params_at(const P& params, const ParamPath& path);
 
 template <class P>
 struct ParamValidator {
   const P& p;
-  const std::string& path;
+  const ParamPath& path;
 
   void real(const char* name, double P::*member, const char* unit, Bounds bounds, const char*) const {
     const double value = p.*member;
-    if (!bounds.contains(value)) fail_param(param_path(path, name), value, bounds, unit);
+    if (!bounds.contains(value)) fail_param(path.field(name), value, bounds, unit);
   }
   template <class I>
   void integer(const char* name, I P::*member, const char* unit, Bounds bounds, const char*) const {
     const double value = static_cast<double>(p.*member);
-    if (!bounds.contains(value)) fail_param(param_path(path, name), value, bounds, unit);
+    if (!bounds.contains(value)) fail_param(path.field(name), value, bounds, unit);
   }
   void flag(const char*, bool P::*, const char*) const {}
   template <class E>
   void choice(const char* name, E P::*member, const char*) const {
     for (E value : enum_values(E{}))
       if (p.*member == value) return;
-    fail_param(param_path(path, name), std::to_string(static_cast<int>(p.*member)), "not one of its values");
+    fail_param(path.field(name), std::to_string(static_cast<int>(p.*member)), "not one of its values");
   }
   void text(const char*, std::string P::*, const char*) const {}
   template <std::size_t N>
   void reals(const char* name, std::array<double, N> P::*member, const char* unit, Bounds bounds, const char*) const {
     for (std::size_t i = 0; i < N; ++i)
       if (!bounds.contains((p.*member)[i]))
-        fail_param(param_path(path, name) + "[" + std::to_string(i) + "]", (p.*member)[i], bounds, unit);
+        fail_param(path.field(name) + "[" + std::to_string(i) + "]", (p.*member)[i], bounds, unit);
   }
   template <class L>
   void critics(const char*, L P::*, const char*) const {}  // checked by check_relations
   template <class G>
   void group(const char* name, G P::*member, const char*) const {
-    validate_params_at(p.*member, param_path(path, name));
+    validate_params_at(p.*member, ParamPath{name, &path});
   }
 };
 
 template <class P>
-void validate_params_at(const P& params, const std::string& path) {
+void validate_params_at(const P& params, const ParamPath& path) {
   ParamValidator<P> visitor{params, path};
   P::fields(visitor);
   if constexpr (HasRelations<P>::value) params.check_relations(path);
@@ -200,7 +215,7 @@ struct SchemaCollector {
 // P::kName.
 template <class P>
 void validate_params(const P& params) {
-  detail::validate_params_at(params, P::kName);
+  detail::validate_params_at(params, ParamPath{P::kName});
 }
 
 // Every field of P, nested structs' fields after their group's entry, in

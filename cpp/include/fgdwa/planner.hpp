@@ -110,7 +110,7 @@ struct PlannerParams {
     v.critics("critics", &P::critics, "the critics scored, each {name, weight, params} (default heading 0.5, clearance 0.15, velocity 1.0)");
   }
   // sim_time covers 1 to limits::kMaxRolloutSteps steps of dt; at least one critic, none twice.
-  void check_relations(const std::string& path) const;
+  void check_relations(const ParamPath& path) const;
 
   // Poses per rollout: sim_time / dt, rounded.
   int n_steps() const;

@@ -32,7 +32,7 @@ struct RobotLimits {
     v.real("brake_omega", &RobotLimits::brake_omega, "rad/s^2", Bounds::at_least(0, kMaxAcceleration), "angular braking deceleration; 0: the same as acc_omega");
   }
   // v_min <= v_max; a braking deceleration other than 0 at least kMinAcceleration.
-  void check_relations(const std::string& path) const;
+  void check_relations(const ParamPath& path) const;
 
   double braking_v() const { return brake_v > 0.0 ? brake_v : acc_v; }
   double braking_omega() const { return brake_omega > 0.0 ? brake_omega : acc_omega; }

@@ -43,7 +43,7 @@ struct SegmentParams {
     v.real("range_noise", &P::range_noise, "m", Bounds::positive(), "range noise std the disc fit assumes when weighing hits against the apparent width");
   }
   // min_radius <= max_size / 2.
-  void check_relations(const std::string& path) const;
+  void check_relations(const ParamPath& path) const;
   void validate() const { validate_params(*this); }
 };
 

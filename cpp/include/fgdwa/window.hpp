@@ -22,7 +22,7 @@ struct WindowParams {
     v.integer("n_omega", &WindowParams::n_omega, "", samples, "samples of the angular velocity, both window ends included");
   }
   // n_v * n_omega <= limits::kMaxWindowSamples.
-  void check_relations(const std::string& path) const;
+  void check_relations(const ParamPath& path) const;
   void validate() const { validate_params(*this); }
 };
 
