@@ -128,7 +128,8 @@ struct FieldSetter {
   }
 };
 
-// The value of field `name` of `p` as a Python object; groups by reference into `owner`.
+// The value of field `name` of `p` as a Python object; a nested set by
+// reference into `owner`, or as a dict without one.
 template <class P>
 struct FieldGetter {
   const P& p;
@@ -168,38 +169,18 @@ struct FieldGetter {
   void group(const char* n, G P::*member, const char*) {
     if (name != n) return;
     out = owner ? py::cast(&(p.*member), py::return_value_policy::reference_internal, owner)
-                : py::cast(p.*member);
+                : py::object(params_to_dict(p.*member));
   }
-};
-
-// Every field's name, in order.
-template <class P>
-struct FieldNames {
-  std::vector<std::string> names;
-  template <class... A>
-  void real(const char* n, A...) { names.emplace_back(n); }
-  template <class... A>
-  void integer(const char* n, A...) { names.emplace_back(n); }
-  template <class... A>
-  void flag(const char* n, A...) { names.emplace_back(n); }
-  template <class... A>
-  void choice(const char* n, A...) { names.emplace_back(n); }
-  template <class... A>
-  void text(const char* n, A...) { names.emplace_back(n); }
-  template <class... A>
-  void reals(const char* n, A...) { names.emplace_back(n); }
-  template <class... A>
-  void critics(const char* n, A...) { names.emplace_back(n); }
-  template <class... A>
-  void group(const char* n, A...) { names.emplace_back(n); }
 };
 
 template <class P>
 const std::vector<std::string>& field_names() {
+  // The top-level fields: the schema's names without a dot.
   static const std::vector<std::string> names = [] {
-    FieldNames<P> collect;
-    P::fields(collect);
-    return collect.names;
+    std::vector<std::string> out;
+    for (const ParamInfo& info : param_schema<P>())
+      if (info.name.find('.') == std::string::npos) out.push_back(info.name);
+    return out;
   }();
   return names;
 }
@@ -231,12 +212,8 @@ void set_param(P& params, const std::string& name, py::handle value, const std::
 template <class P>
 py::dict params_to_dict(const P& params) {
   py::dict out;
-  for (const std::string& name : detail::field_names<P>()) {
-    py::object value = detail::get_field(params, name, py::handle());
-    // A nested set becomes a dict too.
-    if (py::hasattr(value, "to_dict")) value = value.attr("to_dict")();
-    out[py::str(name)] = value;
-  }
+  for (const std::string& name : detail::field_names<P>())
+    out[py::str(name)] = detail::get_field(params, name, py::handle());
   return out;
 }
 
@@ -264,19 +241,11 @@ py::class_<P> bind_params(py::module_& m, const char* py_name, const char* doc) 
       "schema",
       [] {
         py::list out;
-        const P defaults{};
+        const py::object defaults = py::cast(P{});
         for (const ParamInfo& info : param_schema<P>()) {
           py::dict entry = schema_entry(info);
-          if (info.type != ParamType::Group) {
-            // The default as the attribute reads it.
-            py::object value = py::cast(defaults);
-            std::string rest = info.name;
-            for (auto dot = rest.find('.'); dot != std::string::npos; dot = rest.find('.')) {
-              value = value.attr(rest.substr(0, dot).c_str());
-              rest = rest.substr(dot + 1);
-            }
-            entry["default"] = value.attr(rest.c_str());
-          }
+          // The default as the attribute reads it.
+          if (info.type != ParamType::Group) entry["default"] = defaults.attr("get")(info.name);
           out.append(entry);
         }
         return out;
