@@ -306,8 +306,8 @@ void NodeParams::validate() const {
 namespace {
 
 // move_base's TrajectoryPlannerROS / DWAPlannerROS and Nav2 DWB names that
-// mean one of fgdwa's parameters (docs/parameters.md, "Names from move_base
-// and Nav2"), bare or under their planner's namespace.
+// mean one of fgdwa's parameters (the table in docs/ros.md), bare or under
+// their planner's namespace.
 struct MoveBaseAlias {
   const char* name;
   const char* target;

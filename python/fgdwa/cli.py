@@ -250,7 +250,6 @@ def build_parser() -> argparse.ArgumentParser:
     rep.set_defaults(func=lambda args, argv: cmd_replay(args))
     par = sub.add_parser("params", help="list every parameter: name, unit, bounds, default, meaning "
                                         "(docs/parameters.md)")
-    par.add_argument("--markdown", action="store_true", help="the reference page as Markdown (the default)")
     par.set_defaults(func=lambda args, argv: cmd_params())
     from fgdwa.barn_cli import register_barn_commands
 

@@ -44,7 +44,7 @@ def parameter_reference() -> str:
     lines = [
         "# Parameters",
         "",
-        "Written by `fgdwa params --markdown > docs/parameters.md` from the schema each",
+        "Written by `fgdwa params > docs/parameters.md` from the schema each",
         "parameter struct declares once in C++ (`cpp/include/fgdwa/params.hpp`); a test",
         "checks that this page matches the code.",
         "",

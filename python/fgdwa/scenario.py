@@ -34,11 +34,6 @@ def init_keywords(cls) -> tuple:
     return tuple(entry["name"] for entry in cls.schema() if "." not in entry["name"])
 
 
-def param_names(cls) -> tuple:
-    """Every field of a parameter class, nested ones by their dotted names."""
-    return tuple(entry["name"] for entry in cls.schema())
-
-
 # PlannerParams' fields, each a keyword of its constructor and a readable attribute.
 PARAM_FIELDS = init_keywords(PlannerParams)
 
@@ -82,8 +77,12 @@ class Scenario:
     goal_tolerance: Optional[float] = None  # m; default the planner's
 
     def __post_init__(self):
+        # Names and each value's bounds: the rules between fields are the
+        # preset's with the overrides on top, checked when a planner is built.
+        probe = PlannerParams()
         try:
-            params_with(PlannerParams(), **self.overrides)
+            for name, value in self.overrides.items():
+                probe.set(name, value)
         except FgdwaError as error:
             raise FgdwaError(f"scenario {self.name}: planner overrides: {error}") from None
 

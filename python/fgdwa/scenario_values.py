@@ -17,7 +17,7 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 import yaml
 
-from fgdwa._core import FgdwaError, PlannerParams, critic_names
+from fgdwa._core import FgdwaError, critic_names
 from fgdwa import file_limits as limits
 from fgdwa.file_limits import LimitedSafeLoader, clip, is_file, load_yaml, short_repr
 
@@ -239,7 +239,6 @@ class ValueReader:
         under its name + ``_deg``. Each value is checked against its field's bounds;
         errors name ``key``. ``allowed``: the top-level names taken (default all)."""
         schema = {entry["name"]: entry for entry in cls.schema()}
-        names = [name for name in param_keys(cls, prefix) if not name.endswith("_deg") or name in schema]
         keys = param_keys(cls, prefix, allowed)
         self.mapping(value, key, keys)
         out = {}

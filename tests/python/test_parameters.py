@@ -19,7 +19,7 @@ def leaves(cls):
 
 def test_the_reference_page_is_the_schemas():
     assert (ROOT / "docs" / "parameters.md").read_text() == parameter_reference() + "\n", \
-        "docs/parameters.md is stale: fgdwa params --markdown > docs/parameters.md"
+        "docs/parameters.md is stale: fgdwa params > docs/parameters.md"
 
 
 @pytest.mark.parametrize("cls", PARAMETER_SETS, ids=lambda cls: cls.__name__)

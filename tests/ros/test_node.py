@@ -188,13 +188,30 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     config = yaml.safe_load((prefix / "share" / "fgdwa_ros" / "config" / "barn_jackal.yaml").read_text())
 
     # 1. Bad parameters: refused at start-up, by name.
-    rospy.set_param("/fgdwa_bad/planner/dt", -1.0)
-    bad = subprocess.run([str(node_exe), "__name:=fgdwa_bad"], env=env, capture_output=True, text=True, timeout=30)
-    message = bad.stdout + bad.stderr
-    check(bad.returncode == 2 and "planner.dt = -1: must be >= 1e-04 (s)" in message,
-          f"bad parameter: exit {bad.returncode}, output {message.strip()!r}")
-    rospy.delete_param("/fgdwa_bad")
+    def start_up(params: dict) -> tuple:
+        for name, value in params.items():
+            rospy.set_param(f"/fgdwa_bad/{name}", value)
+        run = subprocess.run([str(node_exe), "__name:=fgdwa_bad"], env=env, capture_output=True, text=True,
+                             timeout=30)
+        rospy.delete_param("/fgdwa_bad")
+        return run.returncode, run.stdout + run.stderr
+
+    code, message = start_up({"planner/dt": -1.0})
+    check(code == 2 and "planner.dt = -1: must be >= 1e-04 (s)" in message,
+          f"bad parameter: exit {code}, output {message.strip()!r}")
     print(f"bad parameter refused: {message.strip().splitlines()[-1]}", flush=True)
+
+    # A typo is refused with the nearest names; move_base's names are read as fgdwa's, and say so.
+    code, message = start_up({"planner/sim_tim": 1.0})
+    check(code == 2 and "~planner/sim_tim: unknown to fgdwa_node; did you mean ~planner/sim_time" in message,
+          f"unknown parameter: exit {code}, output {message.strip()!r}")
+    code, message = start_up({"DWAPlannerROS/max_vel_x": 0.5, "planner/dt": -1.0})
+    check(code == 2 and "~DWAPlannerROS/max_vel_x (move_base's name) sets ~limits/v_max = 0.5" in message,
+          f"move_base names: exit {code}, output {message.strip()!r}")
+    code, message = start_up({"controller_frequency": 0.0})
+    check(code == 2 and "~controller_frequency = " in message and "must be a finite number > 0 (Hz)" in message,
+          f"move_base's controller_frequency: exit {code}, output {message.strip()!r}")
+    print("move_base names read, a typo refused with the nearest names", flush=True)
 
     world = load_barn(barn).world(args.world)
     commands, cycle_ms, step_ms, stages_ms, referee, events = [], [], [], [], {}, []
