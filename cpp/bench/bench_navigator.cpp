@@ -116,7 +116,7 @@ struct Loop {
     const CycleRecord& record = navigator->step(state, &scan, time);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tic).count();
     const double dt = preset.params.dt;
-    state = RobotState{fgdwa::step(state.pose, record.command, dt), record.command};
+    state = RobotState{fgdwa::unicycle_step(state.pose, record.command, dt), record.command};
     for (Disc& d : discs) {
       d.center += dt * d.velocity;
       // Discs bounce off the map's border.

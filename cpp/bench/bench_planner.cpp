@@ -195,7 +195,7 @@ struct PeerScene {
       states.push_back(state);
       const PlanResult& result = planner.plan(state, goal, world);
       if (result.status == Status::GoalReached) break;
-      state = RobotState{step(state.pose, result.command, params.dt), result.command};
+      state = RobotState{unicycle_step(state.pose, result.command, params.dt), result.command};
     }
   }
   LocalPlanner make_planner() const { return LocalPlanner(limits, Footprint::circle(1.0), params); }

@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "bind_report.hpp"
 #include "convert.hpp"
 #include "fgdwa/controller.hpp"
 
@@ -11,19 +12,21 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_controller(py::module_& m) {
-  py::class_<CycleReport>(m, "CycleReport", "What a control cycle sensed and how it weighed it.")
-      .def_readonly("density", &CycleReport::density, "I; NaN without a scan.")
-      .def_readonly("deviation", &CycleReport::deviation, "D (m); NaN without a global path.")
-      .def_readonly("beta", &CycleReport::beta, "Clearance weight used; NaN without that critic.")
-      .def_readonly("delta", &CycleReport::delta, "Similarity weight used; NaN without that critic.")
-      .def_readonly("sensed_points", &CycleReport::sensed_points,
-                    "Lidar hits that neither the map nor the known discs explain.")
-      .def("__repr__", [](const CycleReport& r) {
-        std::ostringstream s;
-        s << "CycleReport(density=" << r.density << ", deviation=" << r.deviation << ", beta=" << r.beta
-          << ", delta=" << r.delta << ", sensed_points=" << r.sensed_points << ")";
-        return s.str();
-      });
+  py::class_<ScoredRollout>(m, "ScoredRollout", "A rollout the planner scored: its sample, command, total, poses.")
+      .def_readonly("sample", &ScoredRollout::sample)
+      .def_readonly("command", &ScoredRollout::command)
+      .def_readonly("total", &ScoredRollout::total)
+      .def_property_readonly("poses", [](const ScoredRollout& r) { return poses_to_array(r.poses); });
+
+  py::class_<CycleReport> report(m, "CycleReport", "What a control cycle sensed, how it weighed it and what it chose.");
+  report.def_readonly("command", &CycleReport::command);
+  bind_report_fields(report, [](const CycleReport& r) -> const CycleReport& { return r; });
+  report.def("__repr__", [](const CycleReport& r) {
+    std::ostringstream s;
+    s << "CycleReport(density=" << r.density << ", deviation=" << r.deviation << ", beta=" << r.beta
+      << ", delta=" << r.delta << ", sensed_points=" << r.sensed_points << ", chosen=" << r.chosen << ")";
+    return s.str();
+  });
 
   py::class_<Controller>(m, "Controller",
                          "One control cycle as a robot runs it: scan -> obstacles the map lacks and density I; "
@@ -43,8 +46,10 @@ void init_controller(py::module_& m) {
           py::arg("path"))
       .def(
           "step",
-          [](Controller& c, const RobotState& state, py::handle goal, const Scan* scan, const std::vector<Disc>& discs) {
-            return c.step(state, to_vec2(goal, "goal"), scan, discs);
+          [](Controller& c, const RobotState& state, py::handle goal, const Scan* scan,
+             const std::vector<Disc>& discs) -> PlanResult {
+            c.step(state, to_vec2(goal, "goal"), scan, discs);
+            return c.plan_result();
           },
           py::arg("state"), py::arg("goal"), py::arg("scan") = nullptr, py::arg("discs") = std::vector<Disc>{},
            "One cycle toward goal with this cycle's scan (or None) and the known moving discs placed now.")

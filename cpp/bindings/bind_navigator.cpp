@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "bind_params.hpp"
+#include "bind_report.hpp"
 #include "convert.hpp"
 #include "fgdwa/navigator.hpp"
 
@@ -48,44 +49,22 @@ void init_navigator(py::module_& m) {
   bind_params<NavigatorParams>(m, "NavigatorParams",
                                 "Replanning, recovery, the map from scans and moving obstacles of a Navigator.");
 
-  py::class_<ScoredRollout>(m, "ScoredRollout", "A rollout the planner scored: its sample, command, total, poses.")
-      .def_readonly("sample", &ScoredRollout::sample)
-      .def_readonly("command", &ScoredRollout::command)
-      .def_readonly("total", &ScoredRollout::total)
-      .def_property_readonly("poses", [](const ScoredRollout& r) { return poses_to_array(r.poses); });
-
-  py::class_<CycleRecord>(m, "CycleRecord", "Everything one Navigator cycle decided.")
-      .def_readonly("time", &CycleRecord::time)
+  py::class_<CycleRecord> record(m, "CycleRecord", "Everything one Navigator cycle decided.");
+  record.def_readonly("time", &CycleRecord::time)
       .def_readonly("state", &CycleRecord::state)
       .def_readonly("command", &CycleRecord::command)
       .def_readonly("mode", &CycleRecord::mode)
       .def_readonly("failure", &CycleRecord::failure)
-      .def_readonly("status", &CycleRecord::status)
+      .def_readonly("recoveries", &CycleRecord::recoveries)
       .def_readonly("planned", &CycleRecord::planned, "Whether the local planner ran this cycle.")
-      .def_property_readonly("target", [](const CycleRecord& r) { return std::make_pair(r.target.x(), r.target.y()); })
-      .def_readonly("key_node", &CycleRecord::key_node)
-      .def_readonly("density", &CycleRecord::density)
-      .def_readonly("deviation", &CycleRecord::deviation)
-      .def_readonly("beta", &CycleRecord::beta)
-      .def_readonly("delta", &CycleRecord::delta)
-      .def_readonly("chosen", &CycleRecord::chosen)
-      .def_property_readonly("chosen_rollout", [](const CycleRecord& r) { return poses_to_array(r.chosen_rollout); })
-      .def_readonly("best", &CycleRecord::best)
+      .def_readonly("control", &CycleRecord::control, "The controller's report (CycleReport).")
       .def_property_readonly("path_points", [](const CycleRecord& r) -> py::object {
         if (!r.path) return py::none();
         return points_array(r.path->points());
       }, "(n, 2) points of the global path followed, None without one.")
       .def_readonly("path_version", &CycleRecord::path_version)
-      .def_property_readonly("reject_counts", [](const CycleRecord& r) {
-        py::dict out;
-        for (std::size_t i = 0; i < kRejectReasonCount; ++i) out[to_string(static_cast<RejectReason>(i))] = r.reject_counts[i];
-        return out;
-      })
-      .def_readonly("critic_vetoes", &CycleRecord::critic_vetoes,
-                    "Per critic of the planner (in PlannerParams.critics order): samples it vetoed this cycle.")
       .def_readonly("new_cells", &CycleRecord::new_cells)
       .def_readonly("tracked", &CycleRecord::tracked, "The moving tracks the planner predicted (Discs now, with velocity).")
-      .def_readonly("recoveries", &CycleRecord::recoveries)
       .def_property_readonly("times", [](const CycleRecord& r) {
         py::dict out;
         out["tracking"] = r.times.tracking;
@@ -94,13 +73,14 @@ void init_navigator(py::module_& m) {
         out["perception"] = r.times.perception;
         out["plan"] = r.times.plan;
         return out;
-      }, "Wall-clock seconds per stage: map, global, perception, plan.")
-      .def("__repr__", [](const CycleRecord& r) {
-        std::ostringstream s;
-        s << "CycleRecord(time=" << r.time << ", mode=" << to_string(r.mode) << ", command=(" << r.command.v << ", "
-          << r.command.omega << "), path_version=" << r.path_version << ")";
-        return s.str();
-      });
+      }, "Wall-clock seconds per stage: tracking, map, global, perception, plan.");
+  bind_report_fields(record, [](const CycleRecord& r) -> const CycleReport& { return r.control; });
+  record.def("__repr__", [](const CycleRecord& r) {
+    std::ostringstream s;
+    s << "CycleRecord(time=" << r.time << ", mode=" << to_string(r.mode) << ", command=(" << r.command.v << ", "
+      << r.command.omega << "), path_version=" << r.path_version << ")";
+    return s.str();
+  });
 
   py::class_<Navigator>(m, "Navigator",
                         "The robot side of the control cycle: map, global path, controller and recovery in one object.")

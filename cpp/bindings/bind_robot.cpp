@@ -75,7 +75,7 @@ void init_robot(py::module_& m) {
       [](py::handle pose, py::handle twist, FloatArg dt_arg) {
         const double dt = to_float(dt_arg, "dt");
         if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + number_text(dt) + ": must be > 0");
-        return step(to_pose(pose, "pose"), to_twist(twist, "twist"), dt);
+        return unicycle_step(to_pose(pose, "pose"), to_twist(twist, "twist"), dt);
       },
       py::arg("pose"), py::arg("twist"), py::arg("dt"),
       "One unicycle step: theta += omega dt, then x += v cos(theta) dt, y += v sin(theta) dt.");

@@ -44,7 +44,7 @@ int main() {
       std::printf("goal reached after %d cycles\n", cycle);
       return 0;
     }
-    state.pose = fgdwa::step(state.pose, result.command, params.dt);
+    state.pose = fgdwa::unicycle_step(state.pose, result.command, params.dt);
     state.twist = result.command;
     if (world.clearance(footprint, state.pose, 0.0) <= 0.0) {
       std::printf("collision at (%.2f, %.2f)\n", state.pose.x, state.pose.y);

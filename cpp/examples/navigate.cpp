@@ -42,8 +42,8 @@ int main() {
     if (cycle % 10 == 0 || record.mode != fgdwa::NavigatorMode::Following)
       std::printf("t %5.2f s  pose (%.2f, %.2f, %+.2f)  v %+.2f  omega %+.2f  %-11s path v%d  I %.2f  beta %.2f\n",
                   record.time, state.pose.x, state.pose.y, state.pose.theta, record.command.v,
-                  record.command.omega, fgdwa::to_string(record.mode), record.path_version, record.density,
-                  record.beta);
+                  record.command.omega, fgdwa::to_string(record.mode), record.path_version, record.control.density,
+                  record.control.beta);
     if (record.mode == fgdwa::NavigatorMode::GoalReached) {
       std::printf("goal reached at t = %.2f s, %d global paths\n", record.time, record.path_version);
       return 0;
@@ -52,7 +52,7 @@ int main() {
       std::printf("navigator failed: %s\n", fgdwa::to_string(record.failure));
       return 1;
     }
-    state.pose = fgdwa::step(state.pose, record.command, dt);
+    state.pose = fgdwa::unicycle_step(state.pose, record.command, dt);
     state.twist = record.command;
     if (world.clearance(footprint, state.pose, 0.0) <= 0.0) {
       std::printf("collision at (%.2f, %.2f)\n", state.pose.x, state.pose.y);

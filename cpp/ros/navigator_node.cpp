@@ -406,7 +406,7 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
     global_plan_pub_.publish(to_path(*record.path, header));
     path_version_ = navigator_->path_version();
   }
-  if (local_plan_pub_.getNumSubscribers() > 0) local_plan_pub_.publish(to_path(record.chosen_rollout, header));
+  if (local_plan_pub_.getNumSubscribers() > 0) local_plan_pub_.publish(to_path(record.control.chosen_rollout, header));
   if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(rollout_markers(record, header));
 
   diagnostic_msgs::DiagnosticArray array;
@@ -419,7 +419,7 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
   status.level = record.mode == fgdwa::NavigatorMode::Failed ? diagnostic_msgs::DiagnosticStatus::ERROR
                  : recovering                                 ? diagnostic_msgs::DiagnosticStatus::WARN
                                                               : diagnostic_msgs::DiagnosticStatus::OK;
-  status.message = std::string(fgdwa::to_string(record.mode)) + " (" + fgdwa::to_string(record.status) + ")";
+  status.message = std::string(fgdwa::to_string(record.mode)) + " (" + fgdwa::to_string(record.control.status) + ")";
   auto add = [&](const std::string& key, const std::string& value) {
     diagnostic_msgs::KeyValue kv;
     kv.key = key;
@@ -429,7 +429,7 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
   add("cycle", std::to_string(++cycles_));
   add("time", number(record.time));
   add("mode", fgdwa::to_string(record.mode));
-  add("status", fgdwa::to_string(record.status));
+  add("status", fgdwa::to_string(record.control.status));
   add("failure", fgdwa::to_string(record.failure));
   add("v", number(record.command.v));
   add("omega", number(record.command.omega));
@@ -443,11 +443,11 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
   // Which inputs the cycle stepped on, so that fgdwa replay can step on the same ones.
   add("scan_stamp", seconds(scan_stamp));
   add("scan_pose", number(scan.pose.x) + " " + number(scan.pose.y) + " " + number(scan.pose.theta));
-  add("density", json_number(record.density));
-  add("deviation", json_number(record.deviation));
-  add("beta", json_number(record.beta));
-  add("delta", json_number(record.delta));
-  add("admissible", std::to_string(record.reject_counts[0]));
+  add("density", json_number(record.control.density));
+  add("deviation", json_number(record.control.deviation));
+  add("beta", json_number(record.control.beta));
+  add("delta", json_number(record.control.delta));
+  add("admissible", std::to_string(record.control.reject_counts[0]));
   add("path_version", std::to_string(record.path_version));
   add("recoveries", std::to_string(record.recoveries));
   add("step_ms", number(step_ms));

@@ -122,16 +122,16 @@ visualization_msgs::MarkerArray rollout_markers(const fgdwa::CycleRecord& record
   clear.header = header;
   clear.action = visualization_msgs::Marker::DELETEALL;
   out.markers.push_back(clear);
-  const std::size_t n = record.best.size();
+  const std::size_t n = record.control.best.size();
   for (std::size_t i = 0; i < n; ++i) {
     // Best first: from bright orange down to dark red.
     const float shade = n > 1 ? 1.0f - 0.7f * static_cast<float>(i) / static_cast<float>(n - 1) : 1.0f;
-    if (record.best[i].poses.size() >= 2)
-      out.markers.push_back(line(header, static_cast<int>(i) + 1, record.best[i].poses, shade, 0.5f * shade, 0.0f,
+    if (record.control.best[i].poses.size() >= 2)
+      out.markers.push_back(line(header, static_cast<int>(i) + 1, record.control.best[i].poses, shade, 0.5f * shade, 0.0f,
                                  0.01));
   }
-  if (record.chosen_rollout.size() >= 2)
-    out.markers.push_back(line(header, 0, record.chosen_rollout, 0.0f, 0.9f, 0.2f, 0.03));
+  if (record.control.chosen_rollout.size() >= 2)
+    out.markers.push_back(line(header, 0, record.control.chosen_rollout, 0.0f, 0.9f, 0.2f, 0.03));
   return out;
 }
 

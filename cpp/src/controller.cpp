@@ -6,6 +6,7 @@
 #include <string>
 
 #include "fgdwa/error.hpp"
+#include "fgdwa/limits.hpp"
 #include "checked_scan.hpp"
 #include "validation.hpp"
 
@@ -32,23 +33,35 @@ void Controller::set_range_noise(double std) {
   range_noise_ = std;
 }
 
-const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,
-                                   const std::vector<Disc>& discs) {
+void Controller::keep_best(int count) {
+  if (count < 0 || count > limits::kMaxWindowSamples)
+    throw Error("keep_best = " + std::to_string(count) + ": must lie in [0, " + std::to_string(limits::kMaxWindowSamples) + "]");
+  keep_best_ = count;
+}
+
+const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,
+                                    const std::vector<Disc>& discs) {
+  if (!scan) return step(state, goal, static_cast<const ScanFrame*>(nullptr), discs);
+  frame_.assign(*scan);
+  return step(state, goal, &frame_, discs);
+}
+
+const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, const ScanFrame* frame,
+                                    const std::vector<Disc>& discs) {
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   detail::require_finite_state(state);
   detail::require_point("goal", goal);
-  if (scan) scan->validate();
-  report_ = CycleReport{};
+  report_.density = report_.deviation = report_.beta = report_.delta = std::numeric_limits<double>::quiet_NaN();
+  report_.sensed_points = 0;
   world_.set_discs(discs);
-  if (scan) {
+  if (frame) {
     // Hits on the map's obstacles or on known discs are explained; the rest are
     // obstacles the planner would not otherwise see.
     const double resolution = map_ ? map_->grid().resolution() : 0.1;
     const double tolerance = 0.5 * resolution + 3.0 * range_noise_;
     unexplained_.clear();
-    detail::hit_points_of_checked(*scan, hits_);
-    for (const Vec2& hit : hits_) {
+    for (const Vec2& hit : frame->hit_points()) {
       // Most hits lie on the map's obstacles: one table look-up settles them.
       if (map_ && (map_->upper_bound(hit) <= tolerance || map_->distance(hit) <= tolerance)) continue;
       const bool on_disc = std::any_of(discs.begin(), discs.end(), [&](const Disc& d) {
@@ -58,13 +71,13 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
     }
     world_.set_sensed(points_field(unexplained_, resolution));
     report_.sensed_points = unexplained_.size();
-    report_.density = detail::obstacle_density_of_checked(*scan, window_).density;
+    report_.density = detail::obstacle_density_of_checked(frame->scan(), window_).density;
   } else {
     world_.set_sensed(nullptr);
   }
   if (planner_.global_path()) report_.deviation = planner_.global_path()->deviation(state.pose.position());
   if (policy_) {
-    if (!scan) throw Error("the weight policy reads the obstacle density I: step() needs a scan");
+    if (!frame) throw Error("the weight policy reads the obstacle density I: step() needs a scan");
     const CriticWeights weights = policy_->weights(report_.density, std::isnan(report_.deviation) ? 0.0 : report_.deviation);
     for (const auto& [critic, weight] : weights)
       if (planner_.has_critic(critic)) planner_.set_weight(critic, weight);
@@ -73,9 +86,34 @@ const PlanResult& Controller::step(const RobotState& state, const Vec2& goal, co
   if (planner_.has_critic("similarity")) report_.delta = planner_.weight("similarity");
   const Clock::time_point planning = Clock::now();
   report_.perception_time = std::chrono::duration<double>(planning - start).count();
-  const PlanResult& result = planner_.plan(state, goal, world_);
+  const PlanResult& plan = planner_.plan(state, goal, world_);
   report_.plan_time = std::chrono::duration<double>(Clock::now() - planning).count();
-  return result;
+  summarize(plan);
+  return report_;
+}
+
+void Controller::summarize(const PlanResult& plan) {
+  report_.command = plan.command;
+  report_.status = plan.status;
+  report_.target = plan.target;
+  report_.key_node = plan.key_node;
+  report_.reject_counts = plan.reject_counts;
+  report_.critic_vetoes = plan.critic_vetoes;
+  report_.chosen = plan.best_index;
+  const std::vector<Trajectory>& rollouts = planner_.rollouts();
+  report_.chosen_rollout.clear();
+  if (plan.best_index >= 0) report_.chosen_rollout = rollouts[static_cast<std::size_t>(plan.best_index)];
+  report_.best.clear();
+  order_.clear();
+  for (int i = 0; i < static_cast<int>(plan.samples.size()); ++i)
+    if (plan.reasons[static_cast<std::size_t>(i)] == RejectReason::None) order_.push_back(i);
+  const std::size_t k = std::min(order_.size(), static_cast<std::size_t>(keep_best_));
+  std::partial_sort(order_.begin(), order_.begin() + static_cast<std::ptrdiff_t>(k), order_.end(),
+                    [&](int a, int b) { return plan.total(a) > plan.total(b); });
+  for (std::size_t j = 0; j < k; ++j) {
+    const std::size_t i = static_cast<std::size_t>(order_[j]);
+    report_.best.push_back(ScoredRollout{order_[j], plan.samples[i], plan.total(static_cast<Eigen::Index>(i)), rollouts[i]});
+  }
 }
 
 }  // namespace fgdwa

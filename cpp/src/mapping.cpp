@@ -5,7 +5,6 @@
 #include <limits>
 #include <string>
 
-#include "beam_directions.hpp"
 #include "fgdwa/error.hpp"
 #include "validation.hpp"
 
@@ -144,10 +143,14 @@ ScanMap::Tally& ScanMap::tally(std::size_t cell) {
 }
 
 std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit) {
+  return integrate(ScanFrame(scan), keep_hit);
+}
+
+std::size_t ScanMap::integrate(const ScanFrame& frame, const std::vector<std::uint8_t>* keep_hit) {
+  const Scan& scan = frame.scan();
   if (keep_hit && keep_hit->size() != scan.ranges.size())
     throw Error("ScanMap::integrate: keep_hit has " + std::to_string(keep_hit->size()) + " entries for a scan of " +
                 std::to_string(scan.ranges.size()) + " beams");
-  scan.validate();
   next_scan();
   // A hit lies on an obstacle's surface, where rounding may put it in the free
   // cell beside; a micrometre further along the beam it is inside. Range
@@ -156,7 +159,7 @@ std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>
   const double short_of_hit = 3.0 * params_.range_std;
   const Vec2 origin(scan.pose.x, scan.pose.y);
   constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-  const std::vector<Vec2>& directions = detail::beam_directions(scan);
+  const std::vector<Vec2>& directions = frame.directions();
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     const double r = scan.ranges[i];
     if (std::isnan(r)) continue;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "beam_directions.hpp"
+#include "fgdwa/scan_frame.hpp"
 #include "checked_scan.hpp"
 #include "validation.hpp"
 
@@ -33,44 +33,8 @@ void Scan::validate() const {
       throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", ranges[i], "must lie in [0, " + detail::format_number(limits::kMaxLength) + "] (+inf: no hit)"));
 }
 
-namespace detail {
-const std::vector<Vec2>& beam_directions(const Scan& scan) {
-  struct Kept {
-    double theta = std::numeric_limits<double>::quiet_NaN(), angle_min = 0.0, angle_increment = 0.0;
-    std::vector<Vec2> directions;
-  };
-  thread_local Kept kept;
-  // NaN never equals itself, so a fresh thread always computes.
-  if (!(kept.theta == scan.pose.theta && kept.angle_min == scan.angle_min &&
-        kept.angle_increment == scan.angle_increment && kept.directions.size() == scan.ranges.size())) {
-    kept.directions.resize(scan.ranges.size());
-    for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-      const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-      kept.directions[i] = Vec2(std::cos(a), std::sin(a));
-    }
-    kept.theta = scan.pose.theta;
-    kept.angle_min = scan.angle_min;
-    kept.angle_increment = scan.angle_increment;
-  }
-  return kept.directions;
-}
-}  // namespace detail
 
-std::vector<Vec2> Scan::hit_points() const {
-  validate();
-  std::vector<Vec2> points;
-  detail::hit_points_of_checked(*this, points);
-  return points;
-}
-
-void detail::hit_points_of_checked(const Scan& scan, std::vector<Vec2>& out) {
-  const std::vector<Vec2>& directions = beam_directions(scan);
-  out.clear();
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    if (!std::isfinite(scan.ranges[i])) continue;
-    out.emplace_back(scan.pose.x + scan.ranges[i] * directions[i].x(), scan.pose.y + scan.ranges[i] * directions[i].y());
-  }
-}
+std::vector<Vec2> Scan::hit_points() const { return ScanFrame(*this).hit_points(); }
 
 LaserScanner::LaserScanner(const LidarParams& params, std::shared_ptr<const DistanceField> world)
     : params_(params), world_(std::move(world)) {
@@ -209,9 +173,11 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
   out.angle_increment = params_.increment();
   out.max_range = params_.max_range;
   out.ranges.resize(static_cast<std::size_t>(params_.beams));
-  // The directions the robot's side works out from the scan, kept for it:
-  // the same angles, so each beam's direction is computed once per scan.
-  const std::vector<Vec2>& directions = detail::beam_directions(out);
+  std::vector<Vec2> directions(out.ranges.size());
+  for (std::size_t i = 0; i < directions.size(); ++i) {
+    const double a = pose.theta + out.angle_min + static_cast<double>(i) * out.angle_increment;
+    directions[i] = Vec2(std::cos(a), std::sin(a));
+  }
   const Vec2 origin = pose.position();
   // The grid's ranges of all beams first, in batches (a beam dropped below is
   // cast too); then, beam by beam, its drop, the discs and its noise.

@@ -523,7 +523,7 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
       for (int k = 1; k < n_steps_; ++k) {
         twist.v = ramp(twist.v, v_target, limits_.acc_v, limits_.braking_v(), params_.dt);
         twist.omega = ramp(twist.omega, omega_target, limits_.acc_omega, limits_.braking_omega(), params_.dt);
-        pose = step(pose, twist, params_.dt);
+        pose = unicycle_step(pose, twist, params_.dt);
         const double t = (k + 1) * params_.dt;
         const double c = world.moving_clearance(footprint_, pose, t);
         room = std::min(room, c);

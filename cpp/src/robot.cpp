@@ -152,7 +152,7 @@ double Footprint::signed_distance_in_frame(const Vec2& q) const {
   return polygon_contains(q) ? -d : d;
 }
 
-Pose2 step(const Pose2& pose, const Twist& twist, double dt) {
+Pose2 unicycle_step(const Pose2& pose, const Twist& twist, double dt) {
   detail::require_query_pose("pose", pose);
   detail::require_twist("twist", twist);
   detail::require_step_length("dt", dt);

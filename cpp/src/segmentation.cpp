@@ -7,7 +7,6 @@
 #include <string>
 
 #include "fgdwa/tracking.hpp"
-#include "beam_directions.hpp"
 #include "radial.hpp"
 #include "validation.hpp"
 
@@ -149,15 +148,20 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
 
 std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params,
                                   const std::vector<std::uint8_t>* mask) {
+  detail::require_non_negative("scan angle_increment", scan.angle_increment);
+  return segment_scan(ScanFrame(scan), params, mask);
+}
+
+std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& params,
+                                  const std::vector<std::uint8_t>* mask) {
   params.validate();
-  scan.validate();
+  const Scan& scan = frame.scan();
   detail::require_non_negative("scan angle_increment", scan.angle_increment);
   const std::size_t n = scan.ranges.size();
   if (mask && mask->size() != n)
     throw Error(detail::describe("segment mask size", mask->size(), "must equal the scan's " + std::to_string(n) + " beams"));
 
   const Vec2 origin = scan.pose.position();
-  const std::vector<Vec2>& directions = detail::beam_directions(scan);
   std::vector<Cluster> clusters;
   Cluster current;
   double previous_range = 0.0;
@@ -167,9 +171,8 @@ std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params,
   };
   for (std::size_t i = 0; i < n; ++i) {
     const double r = scan.ranges[i];
-    if (std::isnan(r) || r < 0.0) throw Error(detail::describe("scan ranges[" + std::to_string(i) + "]", r, "must be >= 0 or +inf"));
     if (!std::isfinite(r) || (mask && (*mask)[i] == 0)) continue;
-    const Vec2 p = origin + r * directions[i];
+    const Vec2& p = frame.beam_hits()[i];
     if (!current.points.empty() &&
         (p - current.points.back()).norm() > params.base_gap + params.range_gap_factor * std::max(r, previous_range))
       close(true);

@@ -1388,16 +1388,53 @@ class RobotPreset:
     @property
     def name(self) -> str:
         ...
+class ScoredRollout:
+    """
+    A rollout the planner scored: its sample, command, total, poses.
+    """
+    @property
+    def command(self) -> Twist:
+        ...
+    @property
+    def poses(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def sample(self) -> int:
+        ...
+    @property
+    def total(self) -> float:
+        ...
 class CycleReport:
     """
-    What a control cycle sensed and how it weighed it.
+    What a control cycle sensed, how it weighed it and what it chose.
     """
     def __repr__(self) -> str:
         ...
     @property
+    def best(self) -> list[ScoredRollout]:
+        """
+        The best admissible rollouts (ScoredRollout), best first.
+        """
+    @property
     def beta(self) -> float:
         """
         Clearance weight used; NaN without that critic.
+        """
+    @property
+    def chosen(self) -> int:
+        """
+        The chosen sample, -1 when none.
+        """
+    @property
+    def chosen_rollout(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def command(self) -> Twist:
+        ...
+    @property
+    def critic_vetoes(self) -> list[int]:
+        """
+        Per critic of the planner (in PlannerParams.critics order): samples it vetoed this cycle.
         """
     @property
     def delta(self) -> float:
@@ -1415,9 +1452,23 @@ class CycleReport:
         D (m); NaN without a global path.
         """
     @property
+    def key_node(self) -> int:
+        ...
+    @property
+    def reject_counts(self) -> dict:
+        ...
+    @property
     def sensed_points(self) -> int:
         """
         Lidar hits that neither the map nor the known discs explain.
+        """
+    @property
+    def status(self) -> Status:
+        ...
+    @property
+    def target(self) -> tuple[float, float]:
+        """
+        What the heading critic aimed at.
         """
 class Controller:
     """
@@ -2114,22 +2165,6 @@ class NavigatorParams:
         """
         Checks every field and the rules between them; raises FgdwaError naming the first bad one.
         """
-class ScoredRollout:
-    """
-    A rollout the planner scored: its sample, command, total, poses.
-    """
-    @property
-    def command(self) -> Twist:
-        ...
-    @property
-    def poses(self) -> numpy.typing.NDArray[numpy.float64]:
-        ...
-    @property
-    def sample(self) -> int:
-        ...
-    @property
-    def total(self) -> float:
-        ...
 class CycleRecord:
     """
     Everything one Navigator cycle decided.
@@ -2138,13 +2173,19 @@ class CycleRecord:
         ...
     @property
     def best(self) -> list[ScoredRollout]:
-        ...
+        """
+        The best admissible rollouts (ScoredRollout), best first.
+        """
     @property
     def beta(self) -> float:
-        ...
+        """
+        Clearance weight used; NaN without that critic.
+        """
     @property
     def chosen(self) -> int:
-        ...
+        """
+        The chosen sample, -1 when none.
+        """
     @property
     def chosen_rollout(self) -> numpy.typing.NDArray[numpy.float64]:
         ...
@@ -2152,19 +2193,30 @@ class CycleRecord:
     def command(self) -> Twist:
         ...
     @property
+    def control(self) -> CycleReport:
+        """
+        The controller's report (CycleReport).
+        """
+    @property
     def critic_vetoes(self) -> list[int]:
         """
         Per critic of the planner (in PlannerParams.critics order): samples it vetoed this cycle.
         """
     @property
     def delta(self) -> float:
-        ...
+        """
+        Similarity weight used; NaN without that critic.
+        """
     @property
     def density(self) -> float:
-        ...
+        """
+        I; NaN without a scan.
+        """
     @property
     def deviation(self) -> float:
-        ...
+        """
+        D (m); NaN without a global path.
+        """
     @property
     def failure(self) -> FailureReason:
         ...
@@ -2197,6 +2249,11 @@ class CycleRecord:
     def reject_counts(self) -> dict:
         ...
     @property
+    def sensed_points(self) -> int:
+        """
+        Lidar hits that neither the map nor the known discs explain.
+        """
+    @property
     def state(self) -> RobotState:
         ...
     @property
@@ -2204,14 +2261,16 @@ class CycleRecord:
         ...
     @property
     def target(self) -> tuple[float, float]:
-        ...
+        """
+        What the heading critic aimed at.
+        """
     @property
     def time(self) -> float:
         ...
     @property
     def times(self) -> dict:
         """
-        Wall-clock seconds per stage: map, global, perception, plan.
+        Wall-clock seconds per stage: tracking, map, global, perception, plan.
         """
     @property
     def tracked(self) -> list[Disc]:

@@ -61,7 +61,7 @@ Outcome drive(const PlannerParams& params) {
       out.reached = true;
       break;
     }
-    const Pose2 next = step(state.pose, result.command, params.dt);
+    const Pose2 next = unicycle_step(state.pose, result.command, params.dt);
     out.path_length += (next.position() - state.pose.position()).norm();
     state.pose = next;
     state.twist = result.command;

@@ -317,7 +317,7 @@ CorridorRun drive_corridor(const PlannerParams& params) {
       run.reached = true;
       break;
     }
-    const Pose2 next = step(state.pose, result.command, params.dt);
+    const Pose2 next = unicycle_step(state.pose, result.command, params.dt);
     run.distance += (next.position() - state.pose.position()).norm();
     state = RobotState{next, result.command};
     if (truth.in_collision(footprint, state.pose)) ++run.contacts;

@@ -343,10 +343,10 @@ TEST(Controller, SetMapMakesTheNewObstaclesCount) {
   params.sim_time = 1.0;
   Controller controller(RobotLimits{}, Footprint::circle(0.2), params);
   const RobotState state{Pose2{1.9, 1.0, 0.0}, Twist{1.0, 0.0}};
-  const PlanResult& blind = controller.step(state, Vec2(3.5, 1.0), nullptr);
+  const CycleReport& blind = controller.step(state, Vec2(3.5, 1.0), nullptr);
   EXPECT_NEAR(blind.command.v, 1.1, 1e-9);  // nothing in the way: the window's top speed
   controller.set_map(std::make_shared<const DistanceField>(truth));
-  const PlanResult& seen = controller.step(state, Vec2(3.5, 1.0), nullptr);
+  const CycleReport& seen = controller.step(state, Vec2(3.5, 1.0), nullptr);
   EXPECT_LT(seen.command.v, 1.0);  // the wall 0.4 m ahead makes it slow down
 }
 

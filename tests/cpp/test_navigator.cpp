@@ -50,7 +50,7 @@ const CycleRecord& drive(Navigator& nav, Drive& d, const LaserScanner* scanner, 
                          double dt) {
   if (scanner) scanner->scan(d.state.pose, {}, 0.0, rng, scan);
   const CycleRecord& r = nav.step(d.state, scanner ? &scan : nullptr, d.t);
-  d.state.pose = step(d.state.pose, r.command, dt);
+  d.state.pose = unicycle_step(d.state.pose, r.command, dt);
   d.state.twist = r.command;
   d.t += dt;
   return r;
@@ -78,12 +78,12 @@ TEST(Navigator, FollowsToTheGoalAndReportsGoalReached) {
     
     last = r.mode;
     if (r.planned) {
-      EXPECT_LE(r.best.size(), 5u);
-      for (std::size_t k = 1; k < r.best.size(); ++k) EXPECT_GE(r.best[k - 1].total, r.best[k].total);
-      if (r.chosen >= 0) {
-        ASSERT_FALSE(r.best.empty());
-        EXPECT_EQ(r.best[0].sample, r.chosen);
-        EXPECT_EQ(r.chosen_rollout.size(), static_cast<std::size_t>(gdwa().n_steps()));
+      EXPECT_LE(r.control.best.size(), 5u);
+      for (std::size_t k = 1; k < r.control.best.size(); ++k) EXPECT_GE(r.control.best[k - 1].total, r.control.best[k].total);
+      if (r.control.chosen >= 0) {
+        ASSERT_FALSE(r.control.best.empty());
+        EXPECT_EQ(r.control.best[0].sample, r.control.chosen);
+        EXPECT_EQ(r.control.chosen_rollout.size(), static_cast<std::size_t>(gdwa().n_steps()));
       }
     }
   }
@@ -157,7 +157,7 @@ TEST(Navigator, StallBacksUpWithinTheLimitsThenReplansAroundTheGivenUpPath) {
     EXPECT_GE(command.v, -params.backup_speed - 1e-12);
     EXPECT_LE(std::abs(command.v - s.twist.v), limits.acc_v * 0.15 + 1e-12);
     driven += -command.v * 0.15;
-    s.pose = step(s.pose, command, 0.15);
+    s.pose = unicycle_step(s.pose, command, 0.15);
     s.twist = command;
     const CycleRecord& r = nav.step(s, nullptr, t);
     t += 0.15;
@@ -201,7 +201,7 @@ TEST(Navigator, StallWithTheRearBlockedRotatesTowardOpenSpace) {
   t += 0.15;
   double turned = 0.0;
   for (int i = 0; i < 200; ++i, t += 0.15) {
-    s.pose = step(s.pose, command, 0.15);
+    s.pose = unicycle_step(s.pose, command, 0.15);
     s.twist = command;
     turned += std::abs(command.omega) * 0.15;
     const CycleRecord& next = nav.step(s, nullptr, t);
@@ -482,7 +482,7 @@ TEST(PlannerTerrain, RejectsRolloutsIntoGradeFourAndCapsTheWindow) {
   RobotState d = s;
   for (int i = 0; i < 80; ++i) {
     const PlanResult& p = planner.plan(d, Vec2(5.0, 1.5), open);
-    d.pose = step(d.pose, p.command, 0.15);
+    d.pose = unicycle_step(d.pose, p.command, 0.15);
     d.twist = p.command;
     ASSERT_LT(terrain->grade_at(d.pose.position()), 4) << "cycle " << i;
   }

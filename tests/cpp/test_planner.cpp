@@ -148,7 +148,7 @@ double braking_clearance(const ClearanceSource& world, const Footprint& fp, cons
   Pose2 pose = start;
   Twist twist = cmd;
   for (int period = 0; period < 10000 && (twist.v > 0.0 || twist.omega != 0.0); ++period) {
-    const Pose2 next = step(pose, twist, dt);
+    const Pose2 next = unicycle_step(pose, twist, dt);
     const double turn = angle_difference(next.theta, pose.theta);
     const int turns = fp.is_circle() ? 0 : static_cast<int>(std::ceil(std::abs(turn) / 0.01));
     for (int k = 1; k <= turns; ++k)
@@ -800,7 +800,7 @@ TEST(LocalPlanner, AnEvasionTakesTheSampleAfterWhichTheRobotGetsAwayBest) {
             twist.v = toward(twist.v, v_to, limits.acc_v, dt);
             twist.omega = toward(twist.omega, omega_to, limits.acc_omega, dt);
           }
-          const Pose2 next = step(pose, twist, dt);
+          const Pose2 next = unicycle_step(pose, twist, dt);
           for (int m = 1; m <= 15; ++m) {
             const double f = m / 15.0;
             if (touches(pose.position() + f * (next.position() - pose.position()), (k + f) * dt, twist)) {

@@ -212,12 +212,12 @@ TEST(Footprint, HeadingChordIsTheShortestChordAlongTheHeading) {
               0.33, 1e-12);
 }
 
-// step() turns first, then moves along the new heading.
+// unicycle_step() turns first, then moves along the new heading.
 TEST(Step, TurnsThenMovesAlongTheNewHeading) {
   const Pose2 start{1.0, 2.0, 0.3};
   const Twist twist{2.0, 0.5};
   const double dt = 0.1;
-  const Pose2 next = step(start, twist, dt);
+  const Pose2 next = unicycle_step(start, twist, dt);
   EXPECT_DOUBLE_EQ(next.theta, 0.35);
   EXPECT_DOUBLE_EQ(next.x, 1.0 + 2.0 * std::cos(0.35) * 0.1);
   EXPECT_DOUBLE_EQ(next.y, 2.0 + 2.0 * std::sin(0.35) * 0.1);
@@ -226,7 +226,7 @@ TEST(Step, TurnsThenMovesAlongTheNewHeading) {
 }
 
 TEST(Step, WrapsTheHeading) {
-  const Pose2 next = step(Pose2{0.0, 0.0, 3.1}, Twist{1.0, 1.0}, 0.1);
+  const Pose2 next = unicycle_step(Pose2{0.0, 0.0, 3.1}, Twist{1.0, 1.0}, 0.1);
   EXPECT_NEAR(next.theta, 3.2 - 2 * M_PI, 1e-12);
   EXPECT_NEAR(next.x, 0.1 * std::cos(3.2), 1e-15);
   EXPECT_NEAR(next.y, 0.1 * std::sin(3.2), 1e-15);
@@ -312,7 +312,7 @@ TEST(Rollout, EqualsRepeatedSteps) {
     ASSERT_EQ(poses.size(), static_cast<std::size_t>(n));
     Pose2 p = start;
     for (int k = 0; k < n; ++k) {
-      p = step(p, twist, dt);
+      p = unicycle_step(p, twist, dt);
       const Pose2& q = poses[static_cast<std::size_t>(k)];
       ASSERT_NEAR(q.x, p.x, 1e-12) << "trial " << trial << " k " << k;
       ASSERT_NEAR(q.y, p.y, 1e-12) << "trial " << trial << " k " << k;

@@ -6,6 +6,8 @@
 //
 // Lifecycle: construct once with the map; set_global_path when a path is
 // planned, set_map when the map grows; step() every control period.
+#include <array>
+#include <cstddef>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -13,16 +15,35 @@
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/perception.hpp"
 #include "fgdwa/planner.hpp"
+#include "fgdwa/scan_frame.hpp"
 #include "fgdwa/weights.hpp"
 
 namespace fgdwa {
 
+// One rollout the planner scored, as recorded.
+struct ScoredRollout {
+  int sample = -1;  // index into the cycle's samples
+  Twist command;
+  double total = 0.0;  // the planner's total score
+  Trajectory poses;
+};
+
+// What one control cycle sensed, how it weighed it and what the planner chose.
 struct CycleReport {
+  Twist command;
+  Status status = Status::Ok;
+  Vec2 target = Vec2::Zero();  // what the heading critic aimed at
+  int key_node = -1;
   double density = std::numeric_limits<double>::quiet_NaN();    // I; NaN without a scan
   double deviation = std::numeric_limits<double>::quiet_NaN();  // m, D; NaN without a global path
   double beta = std::numeric_limits<double>::quiet_NaN();       // clearance weight used; NaN without that critic
   double delta = std::numeric_limits<double>::quiet_NaN();      // similarity weight used; NaN without that critic
   std::size_t sensed_points = 0;                                // lidar hits the map and known discs do not explain
+  int chosen = -1;                  // the chosen sample, -1 when none
+  Trajectory chosen_rollout;        // its rollout (empty when none)
+  std::vector<ScoredRollout> best;  // the keep_best() best admissible rollouts, best first
+  std::array<int, kRejectReasonCount> reject_counts{};  // samples per reject reason
+  std::vector<int> critic_vetoes;   // per critic of the planner (PlanResult::critic_names): samples it vetoed
   double perception_time = 0.0;  // s, wall clock: sensed points, I, D and weights
   double plan_time = 0.0;        // s, wall clock: the local planner
 };
@@ -49,18 +70,33 @@ class Controller {
     planner_.set_terrain(std::move(terrain), factors);
   }
 
+  // How many of the best admissible rollouts each report keeps (0: none).
+  void keep_best(int count);
+
   // One cycle from `state` toward `goal`. `scan` (may be null) is this cycle's
   // lidar scan; `discs` the moving obstacles the robot knows, placed now.
-  const PlanResult& step(const RobotState& state, const Vec2& goal, const Scan* scan,
-                         const std::vector<Disc>& discs = {});
+  const CycleReport& step(const RobotState& state, const Vec2& goal, const Scan* scan,
+                          const std::vector<Disc>& discs = {});
+  // The same with the scan already taken apart this cycle (null: no scan).
+  const CycleReport& step(const RobotState& state, const Vec2& goal, const ScanFrame* frame,
+                          const std::vector<Disc>& discs = {});
+  const CycleReport& step(const RobotState& state, const Vec2& goal, std::nullptr_t,
+                          const std::vector<Disc>& discs = {}) {
+    return step(state, goal, static_cast<const ScanFrame*>(nullptr), discs);
+  }
 
   const CycleReport& report() const { return report_; }
+  // The planner's whole result of the last step (every sample, score and reason).
+  const PlanResult& plan_result() const { return planner_.last_result(); }
   // The last scan's hits that neither the map nor the known discs explain.
   const std::vector<Vec2>& sensed_points() const { return unexplained_; }
   const LocalPlanner& planner() const { return planner_; }
   const FieldClearance& world() const { return world_; }
 
  private:
+  // The plan's command, status, choice and best rollouts into the report.
+  void summarize(const PlanResult& plan);
+
   LocalPlanner planner_;
   std::shared_ptr<const DistanceField> map_;
   std::shared_ptr<const WeightPolicy> policy_;
@@ -68,7 +104,10 @@ class Controller {
   double range_noise_ = 0.0;
   FieldClearance world_;
   CycleReport report_;
-  std::vector<Vec2> hits_, unexplained_;  // this cycle's lidar hits, and those the map does not explain
+  int keep_best_ = 0;
+  std::vector<Vec2> unexplained_;  // this cycle's lidar hits that the map does not explain
+  std::vector<int> order_;         // scratch: admissible samples, best first
+  ScanFrame frame_;                // a scan given whole, taken apart
 };
 
 }  // namespace fgdwa

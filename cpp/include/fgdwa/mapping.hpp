@@ -25,6 +25,7 @@
 #include "fgdwa/params.hpp"
 #include "fgdwa/path.hpp"
 #include "fgdwa/perception.hpp"
+#include "fgdwa/scan_frame.hpp"
 
 namespace fgdwa {
 
@@ -87,6 +88,8 @@ class ScanMap {
   // dropped, and beams are clipped to it. Returns how many cells turned
   // occupied or stopped being occupied.
   std::size_t integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit = nullptr);
+  // The same for a scan already taken apart once this cycle.
+  std::size_t integrate(const ScanFrame& frame, const std::vector<std::uint8_t>* keep_hit = nullptr);
   // One hit on each cell holding these points; returns how many cells turned occupied.
   std::size_t mark(const std::vector<Vec2>& points);
 

@@ -104,7 +104,7 @@ class Footprint {
 
 // One unicycle step of length dt: theta first, then the position along the new
 // heading (Figure 2 of the paper): theta += omega dt; x += v cos(theta) dt; y += v sin(theta) dt.
-Pose2 step(const Pose2& pose, const Twist& twist, double dt);
+Pose2 unicycle_step(const Pose2& pose, const Twist& twist, double dt);
 
 // `n_steps` poses of a constant command, each after one more step; written into
 // `out` (resized) so a control loop can reuse the storage.

@@ -20,6 +20,7 @@
 #include "fgdwa/geometry.hpp"
 #include "fgdwa/params.hpp"
 #include "fgdwa/perception.hpp"
+#include "fgdwa/scan_frame.hpp"
 
 namespace fgdwa {
 
@@ -78,6 +79,9 @@ struct Cluster {
 // with fewer than min_points hits or longer than max_size are dropped. A scan
 // covering the full circle joins the cluster across its seam.
 std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params = {},
+                                  const std::vector<std::uint8_t>* mask = nullptr);
+// The same for a scan already taken apart once this cycle.
+std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& params = {},
                                   const std::vector<std::uint8_t>* mask = nullptr);
 
 enum class TrackStatus : std::uint8_t {

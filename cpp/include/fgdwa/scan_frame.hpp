@@ -1,0 +1,42 @@
+#pragma once
+// One scan as the robot's side reads it: checked once, each beam's world
+// direction and hit point worked out once, then handed to every stage of the
+// cycle (the map's rays, segmentation, the unexplained points, the density).
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "fgdwa/perception.hpp"
+
+namespace fgdwa {
+
+// Threads: a value; one thread fills it, any may read it afterwards.
+class ScanFrame {
+ public:
+  ScanFrame() = default;
+  // Throws fgdwa::Error if the scan is not valid (Scan::validate).
+  explicit ScanFrame(const Scan& scan) { assign(scan); }
+
+  // Takes this scan in place of the last, reusing the buffers. `beams` >= 0:
+  // the scanner's beam count, which the scan must match.
+  void assign(const Scan& scan, int beams = -1);
+
+  const Scan& scan() const { return scan_; }
+  std::size_t size() const { return scan_.ranges.size(); }
+  bool empty() const { return scan_.ranges.empty(); }
+  double range(std::size_t beam) const { return scan_.ranges[beam]; }
+  // Whether the beam hit something within the scanner's range.
+  bool has_hit(std::size_t beam) const { return std::isfinite(scan_.ranges[beam]); }
+  // (cos a, sin a) of each beam's world angle a = theta + angle_min + i angle_increment.
+  const std::vector<Vec2>& directions() const { return directions_; }
+  // Each beam's hit in the world ((0, 0) where it hit nothing).
+  const std::vector<Vec2>& beam_hits() const { return beam_hits_; }
+  // The hits alone, in beam order: Scan::hit_points().
+  const std::vector<Vec2>& hit_points() const { return hit_points_; }
+
+ private:
+  Scan scan_;
+  std::vector<Vec2> directions_, beam_hits_, hit_points_;
+};
+
+}  // namespace fgdwa

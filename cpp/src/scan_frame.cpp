@@ -1,0 +1,33 @@
+#include "fgdwa/scan_frame.hpp"
+
+#include <string>
+
+#include "fgdwa/error.hpp"
+
+namespace fgdwa {
+
+void ScanFrame::assign(const Scan& scan, int beams) {
+  if (beams >= 0 && scan.ranges.size() != static_cast<std::size_t>(beams))
+    throw Error("scan: " + std::to_string(scan.ranges.size()) + " ranges, but the lidar has " + std::to_string(beams) +
+                " beams");
+  scan.validate();
+  scan_.pose = scan.pose;
+  scan_.angle_min = scan.angle_min;
+  scan_.angle_increment = scan.angle_increment;
+  scan_.max_range = scan.max_range;
+  scan_.ranges.assign(scan.ranges.begin(), scan.ranges.end());
+  const std::size_t n = scan.ranges.size();
+  directions_.resize(n);
+  beam_hits_.assign(n, Vec2::Zero());
+  hit_points_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+    directions_[i] = Vec2(std::cos(a), std::sin(a));
+    const double r = scan.ranges[i];
+    if (!std::isfinite(r)) continue;
+    beam_hits_[i] = Vec2(scan.pose.x + r * directions_[i].x(), scan.pose.y + r * directions_[i].y());
+    hit_points_.push_back(beam_hits_[i]);
+  }
+}
+
+}  // namespace fgdwa
