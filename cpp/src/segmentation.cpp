@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <limits>
 #include <string>
 
@@ -144,6 +145,25 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
   }
 }
 
+// The `count` clusters nearest `origin` (by their centres; ties to the lower
+// beam), still in beam order.
+std::vector<Cluster> nearest_clusters(std::vector<Cluster> clusters, const Vec2& origin, std::size_t count) {
+  if (clusters.size() <= count) return clusters;
+  std::vector<std::size_t> order(clusters.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto nearer = [&](std::size_t a, std::size_t b) {
+    const double da = (clusters[a].center - origin).squaredNorm(), db = (clusters[b].center - origin).squaredNorm();
+    return da < db || (da == db && a < b);
+  };
+  std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count), order.end(), nearer);
+  order.resize(count);
+  std::sort(order.begin(), order.end());
+  std::vector<Cluster> nearest;
+  nearest.reserve(count);
+  for (const std::size_t i : order) nearest.push_back(std::move(clusters[i]));
+  return nearest;
+}
+
 }  // namespace
 
 std::vector<Cluster> segment_scan(const Scan& scan, const SegmentParams& params,
@@ -218,7 +238,7 @@ std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& p
     fit_disc(c, origin, scan.angle_increment, params, scratch);
     kept.push_back(std::move(c));
   }
-  return kept;
+  return nearest_clusters(std::move(kept), origin, static_cast<std::size_t>(params.max_clusters));
 }
 
 }  // namespace fgdwa

@@ -1632,10 +1632,12 @@ class SegmentParams:
       max_size (m): clusters whose oriented box is longer (walls) are not tracked
       min_radius (m): smallest fitted disc radius (the largest is max_size / 2)
       range_noise (m): range noise std the disc fit assumes when weighing hits against the apparent width
+      max_clusters: clusters kept per scan, the nearest to the scanner; farther ones are dropped (the tracker's work grows with their cube)
     """
     __hash__: typing.ClassVar[None] = None
     name: typing.ClassVar[str] = 'segment'
     base_gap: typing.Any
+    max_clusters: typing.Any
     max_size: typing.Any
     min_points: typing.Any
     min_radius: typing.Any

@@ -119,6 +119,29 @@ TEST(Segment, IsolatedHitsAreDroppedAsNoise) {
   EXPECT_EQ(segment_scan(scan, every).size(), 4u);
 }
 
+TEST(Segment, KeepsTheNearestClustersInBeamOrder) {
+  Scan scan;
+  scan.angle_min = -0.5 * M_PI;
+  scan.angle_increment = M_PI / 360.0;
+  scan.max_range = 10.0;
+  scan.ranges.assign(361, kInf);
+  // Six small objects, 20 beams apart, at ranges 6, 2, 5, 3, 4, 1 m.
+  const double ranges[] = {6.0, 2.0, 5.0, 3.0, 4.0, 1.0};
+  for (int k = 0; k < 6; ++k)
+    for (int i = 0; i < 4; ++i) scan.ranges[static_cast<std::size_t>(20 + 40 * k + i)] = ranges[k];
+  ASSERT_EQ(segment_scan(scan).size(), 6u);
+  SegmentParams bounded;
+  bounded.max_clusters = 3;
+  const auto clusters = segment_scan(scan, bounded);
+  ASSERT_EQ(clusters.size(), 3u);
+  // The 1, 2 and 3 m objects, in the order the beams met them.
+  EXPECT_EQ(clusters[0].first_beam, 60);
+  EXPECT_EQ(clusters[1].first_beam, 140);
+  EXPECT_EQ(clusters[2].first_beam, 220);
+  bounded.max_clusters = 0;
+  EXPECT_THROW(bounded.validate(), Error);
+}
+
 TEST(Segment, MaskedBeamsAreSkipped) {
   const LaserScanner scanner(LidarParams{}, nullptr);
   std::mt19937_64 rng(3);
