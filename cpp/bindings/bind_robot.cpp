@@ -71,7 +71,7 @@ void init_robot(py::module_& m) {
       });
 
   m.def(
-      "step",
+      "unicycle_step",
       [](py::handle pose, py::handle twist, FloatArg dt_arg) {
         const double dt = to_float(dt_arg, "dt");
         if (!(dt > 0.0) || !std::isfinite(dt)) throw Error("dt = " + number_text(dt) + ": must be > 0");

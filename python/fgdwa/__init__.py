@@ -85,7 +85,7 @@ from fgdwa._core import (
     rollout,
     sample_window,
     segment_scan,
-    step,
+    unicycle_step,
     wrap_angle,
 )
 from fgdwa.fuzzy import engine_from_dict, engine_from_yaml, engine_to_dict, paper_controller_config  # noqa: E402
@@ -181,6 +181,6 @@ __all__ = [
     "rollout",
     "sample_window",
     "segment_scan",
-    "step",
+    "unicycle_step",
     "wrap_angle",
 ]

@@ -1,7 +1,8 @@
 """The ``fgdwa`` command: ``demo``, ``run`` (one episode, its figure and GIF),
 ``experiment`` (the paper's experiments E1-E3, docs/algorithms.md), ``irsim``
-(an IR-SIM world driven by the fgdwa behavior) and ``replay`` (fgdwa_node's
-planner rerun on a ROS bag)."""
+(an IR-SIM world driven by the fgdwa behavior), ``replay`` (fgdwa_node's
+planner rerun on a ROS bag), ``params``, and the benchmarks ``barn`` and
+``dynamic`` (registered by :mod:`fgdwa.bench.barn` and :mod:`fgdwa.bench.dynamic`)."""
 
 from __future__ import annotations
 
@@ -35,8 +36,8 @@ def _cycle_line(cycle_times) -> str:
 
 
 def cmd_demo(args: argparse.Namespace) -> int:
-    from fgdwa.builtin import demo_scenario
-    from fgdwa.plotting import plot_episode
+    from fgdwa.io.builtin import demo_scenario
+    from fgdwa.plot.episode import plot_episode
     from fgdwa.sim import run_episode
 
     scenario = demo_scenario()
@@ -45,18 +46,18 @@ def cmd_demo(args: argparse.Namespace) -> int:
     print(f"scenario {scenario.name}: {scenario.description}")
     print("planner dwa (classic dynamic window, heading to the goal)")
     print(_format_metrics(result.metrics()))
-    if len(result.cycle_times):
-        print(_cycle_line(result.cycle_times))
+    if len(result.trace.cycle_times):
+        print(_cycle_line(result.trace.cycle_times))
     png = Path(args.out) / "demo.png"
     plot_episode(result, scenario.world, scenario.goal, png)
     print(f"figure: {png}")
-    return 0 if result.outcome == "success" else 1
+    return 0 if result.summary.outcome == "success" else 1
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from fgdwa.experiments import resolve_scenario
-    from fgdwa.plotting import plot_episode
-    from fgdwa.scenario import run_scenario, trial_variation
+    from fgdwa.bench.experiments import resolve_scenario
+    from fgdwa.plot.episode import plot_episode
+    from fgdwa.sim import run_scenario, trial_variation
 
     scenario = resolve_scenario(args.scenario)
     planner = args.planner or scenario.planner
@@ -74,27 +75,29 @@ def cmd_run(args: argparse.Namespace) -> int:
     print(f"scenario {scenario.name}: {scenario.description}")
     print(f"planner {planner}, seed {args.seed}")
     print(_format_metrics(result.metrics()))
-    print(_cycle_line(result.cycle_times))
+    print(_cycle_line(result.trace.cycle_times))
     print(f"  episode wall     {wall:.2f} s")
     out = Path(args.out)
     _, world, _ = trial_variation(scenario, args.seed)
     png = out / f"{scenario.name}_{planner}.png"
+    summary = result.summary
     plot_episode(result, world, scenario.goal, png, title=f"{scenario.name}, {planner}, seed {args.seed}: "
-                 f"{result.outcome}, {result.steps} steps, {result.mileage:.2f} m",
+                 f"{summary.outcome}, {summary.steps} steps, {summary.mileage:.2f} m",
                  footprint=scenario.footprint)
     print(f"figure: {png}")
     if args.gif:
-        from fgdwa.animation import write_gif
+        from fgdwa.plot.animation import write_gif
 
         tic = time.perf_counter()
         gif = write_gif(result, scenario, args.gif, planner=planner, seed=args.seed, max_frames=args.frames)
         print(f"animation: {gif} ({time.perf_counter() - tic:.1f} s to draw)")
-    return 0 if result.outcome == "success" else 1
+    return 0 if summary.outcome == "success" else 1
 
 
 def cmd_experiment(args: argparse.Namespace, argv) -> int:
-    from fgdwa.experiments import EXPERIMENTS, run_experiments, run_tasks
-    from fgdwa.report import save_experiment, terminal_report, write_results
+    from fgdwa.bench.experiments import EXPERIMENTS, run_experiments
+    from fgdwa.bench.report import save_experiment, terminal_report, write_results
+    from fgdwa.bench.runner import run_tasks
 
     names = list(EXPERIMENTS) if args.name == "all" else [args.name]
     out = Path(args.out)
@@ -110,7 +113,7 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
     drawn = [{} for _ in results]
     surfaces = None
     if not args.no_figures:
-        from fgdwa.figures import CONTROL_SURFACES, FigureJob, draw_figures
+        from fgdwa.plot.experiments import CONTROL_SURFACES, FigureJob, draw_figures
 
         jobs = []
         for result in results:
@@ -125,8 +128,8 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
         import scipy.stats  # noqa: F401
 
         figures_executor = "local" if args.executor == "local" else "serial"
-        figures = run_tasks(jobs, executor=figures_executor, workers=args.workers, progress=not args.no_progress,
-                            runner=draw_figures, label="figures")
+        figures = run_tasks(jobs, draw_figures, executor=figures_executor, workers=args.workers,
+                            progress=not args.no_progress, label="figures")
         drawn = figures[:len(results)]
         if len(figures) > len(results):
             surfaces = figures[-1][CONTROL_SURFACES]
@@ -161,7 +164,7 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
 
 def cmd_irsim(args: argparse.Namespace) -> int:
     try:
-        from fgdwa.irsim import format_run, run_world
+        from fgdwa.adapters.irsim import format_run, run_world
     except ImportError as error:
         raise FgdwaError(str(error)) from None
 
@@ -172,7 +175,7 @@ def cmd_irsim(args: argparse.Namespace) -> int:
 
 
 def cmd_replay(args: argparse.Namespace) -> int:
-    from fgdwa.replay import replay_command
+    from fgdwa.adapters.replay import replay_command
 
     return replay_command(args)
 
@@ -181,21 +184,18 @@ def _existing(path: Path):
     return path if path.exists() else None
 
 
-def _positive(text: str) -> int:
-    value = int(text)
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"{text}: must be an integer >= 1")
-    return value
-
-
 def build_parser() -> argparse.ArgumentParser:
+    from fgdwa.bench.barn import register_barn_commands
+    from fgdwa.bench.dynamic import register_dynamic_commands
+    from fgdwa.bench.options import add_executor_arguments, add_output_arguments, positive
+
     parser = argparse.ArgumentParser(prog="fgdwa", description="fgdwa: dynamic window local planning.")
     parser.add_argument("--version", action="version", version=f"fgdwa {importlib.metadata.version('fgdwa')}")
     sub = parser.add_subparsers(dest="command", required=True)
 
     demo = sub.add_parser("demo", help="run the classic DWA on the built-in demo scenario")
     demo.add_argument("--out", default="out/demo", help="directory for the figure (default: out/demo)")
-    demo.add_argument("--max-steps", type=_positive, default=1000)
+    demo.add_argument("--max-steps", type=positive, default=1000)
     demo.set_defaults(func=lambda args, argv: cmd_demo(args))
 
     run = sub.add_parser("run", help="run one episode of a scenario: metrics, a PNG and optionally a GIF")
@@ -205,8 +205,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--seed", type=int, default=0, help="trial seed: start jitter, obstacle phases, lidar noise")
     run.add_argument("--out", default="out/run", help="directory for the PNG (default: out/run)")
     run.add_argument("--gif", default=None, metavar="FILE", help="also write an animated GIF of the run")
-    run.add_argument("--frames", type=_positive, default=150, help="at most this many GIF frames (default 150)")
-    run.add_argument("--max-steps", type=_positive, default=None, help="override the scenario's max_steps")
+    run.add_argument("--frames", type=positive, default=150, help="at most this many GIF frames (default 150)")
+    run.add_argument("--max-steps", type=positive, default=None, help="override the scenario's max_steps")
     run.add_argument("--latency", type=int, default=0, metavar="CYCLES",
                      help="control cycles from a scan to its command reaching the wheels (default 0)")
     run.set_defaults(func=lambda args, argv: cmd_run(args))
@@ -214,27 +214,20 @@ def build_parser() -> argparse.ArgumentParser:
     exp = sub.add_parser("experiment", help="run the paper's experiments E1-E3 and write tables, figures "
                                             "and reports")
     exp.add_argument("name", choices=["e1", "e2", "e3", "all"])
-    exp.add_argument("--trials", type=_positive, default=15, help="trials per planner (default 15)")
+    exp.add_argument("--trials", type=positive, default=15, help="trials per planner (default 15)")
     exp.add_argument("--seed", type=int, default=0, help="base seed: trial i uses seed + i (default 0)")
-    exp.add_argument("--out", default=DEFAULT_EXPERIMENT_OUT,
-                     help=f"output directory (default {DEFAULT_EXPERIMENT_OUT})")
-    exp.add_argument("--executor", choices=["local", "dask", "serial"], default="local",
-                     help="local: a process pool on this machine (default); dask: a dask.distributed cluster; "
-                          "serial: this process")
-    exp.add_argument("--scheduler", default=None, metavar="ADDRESS",
-                     help="dask scheduler address (default: a LocalCluster on this machine)")
-    exp.add_argument("--workers", type=_positive, default=2, help="worker processes (default 2)")
-    exp.add_argument("--max-steps", type=_positive, default=None, help="override every scenario's max_steps")
+    exp.add_argument("--max-steps", type=positive, default=None, help="override every scenario's max_steps")
     exp.add_argument("--results-md", default=None, metavar="PATH",
                      help="also write the results page there (the repository's: docs/RESULTS.md, with "
                           "--out docs/results)")
-    exp.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
-    exp.add_argument("--no-progress", action="store_true", help="no progress bar")
+    add_executor_arguments(exp)
+    add_output_arguments(exp, DEFAULT_EXPERIMENT_OUT, "the tables, figures and reports, one folder per experiment",
+                         figures="the PNG figures")
     exp.set_defaults(func=cmd_experiment)
     irs = sub.add_parser("irsim", help="run an IR-SIM world whose robots name behavior fgdwa (needs ir-sim: "
                                        "pip install 'fgdwa[irsim]'); prints each robot's outcome by IR-SIM's flags")
     irs.add_argument("world", help="an IR-SIM world YAML file")
-    irs.add_argument("--max-steps", type=_positive, default=1000, help="steps before giving up (default 1000)")
+    irs.add_argument("--max-steps", type=positive, default=1000, help="steps before giving up (default 1000)")
     irs.add_argument("--seed", type=int, default=None, help="IR-SIM's random seed (lidar noise, random placements)")
     irs.add_argument("--render", action="store_true", help="draw the world in a window while it runs")
     irs.set_defaults(func=lambda args, argv: cmd_irsim(args))
@@ -251,11 +244,7 @@ def build_parser() -> argparse.ArgumentParser:
     par = sub.add_parser("params", help="list every parameter: name, unit, bounds, default, meaning "
                                         "(docs/parameters.md)")
     par.set_defaults(func=lambda args, argv: cmd_params())
-    from fgdwa.barn_cli import register_barn_commands
-
     register_barn_commands(sub)
-    from fgdwa.dynamic_benchmark import register_dynamic_commands
-
     register_dynamic_commands(sub)
     return parser
 

@@ -16,8 +16,8 @@ Every YAML document the package reads goes through :func:`load_yaml`, every
 
 The numbers a scenario or BARN file gives are held to the limits further down
 (resolution, map cells, coordinates, lengths, durations, counts); the scenario
-readers (``fgdwa.scenario_values``) and the BARN loader
-(``fgdwa.datasets.barn``) apply them. docs/scenarios.md and docs/barn.md list
+readers (``fgdwa.io.scenario_values``) and the BARN loader
+(``fgdwa.io.barn_data``) apply them. docs/scenarios.md and docs/barn.md list
 them. Messages show a value through :func:`short_repr`, which never formats
 more than a few dozen elements of it.
 """

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import fgdwa
-from fgdwa.datasets import load_barn
+from fgdwa.io import load_barn
 
 DEFAULT_BARN_DIR = Path("/work/shared/benchmarks/barn")
 

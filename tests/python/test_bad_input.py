@@ -144,7 +144,7 @@ def test_plan_arguments(open_world):
     with raises("weight"):
         planner.set_weight("heading", INF)
     with raises("dt"):
-        fgdwa.step((0, 0, 0), (1, 0), -0.1)
+        fgdwa.unicycle_step((0, 0, 0), (1, 0), -0.1)
     with raises("n_steps"):
         fgdwa.rollout((0, 0, 0), (1, 0), 0.1, 0)
 
@@ -188,7 +188,7 @@ def test_non_finite_inside_pose_objects(pose, field):
         with raises(field):
             fgdwa.CollisionWorld(_field().grid).clearance(footprint, pose)
     with raises(field):
-        fgdwa.step(pose, fgdwa.Twist(0.1, 0.0), 0.1)
+        fgdwa.unicycle_step(pose, fgdwa.Twist(0.1, 0.0), 0.1)
 
 
 @pytest.mark.parametrize("resolution", [5e-324, 1e-9, 1e200, 1e308])

@@ -14,17 +14,8 @@ from scipy.ndimage import binary_dilation
 
 import fgdwa
 from fgdwa import FgdwaError, planner_preset
-from fgdwa.barn_benchmark import (
-    BarnRun,
-    BarnSetup,
-    barn_tasks,
-    check_planners,
-    format_summary,
-    run_barn,
-    run_barn_task,
-    run_timing,
-    summarize,
-)
+from fgdwa.bench.barn import BarnSetup, barn_tasks, check_planners, format_summary, run_barn, run_barn_task
+from fgdwa.bench.runs import Run, run_timing, summarize
 
 # Worlds of the challenge's local test set, from open to tight fields.
 FIVE_WORLDS = [0, 60, 120, 210, 288]
@@ -67,7 +58,7 @@ def test_summary_rates_and_means_on_hand_made_rows():
     def run(planner, outcome, time, score):
         row = {"planner": planner, "outcome": outcome, "success": int(outcome == "success"), "time": time,
                "score": score, "cycle_ms_mean": 1.0}
-        return BarnRun(row=row, cells=np.zeros((1, 1)), extent=(0, 1, 0, 1), poses=np.zeros((1, 3)), paths=[])
+        return Run(row=row, cells=np.zeros((1, 1)), extent=(0, 1, 0, 1), poses=np.zeros((1, 3)), paths=[])
 
     runs = [run("a", "success", 10.0, 0.5), run("a", "success", 20.0, 0.25), run("a", "collision", 3.0, 0.0),
             run("a", "timeout", 100.0, 0.0), run("b", "timeout", 100.0, 0.0)]
@@ -230,7 +221,7 @@ def test_navigator_and_episode_reject_bad_settings():
     with pytest.raises(FgdwaError, match="points"):
         fgdwa.ScanMap(grid).mark(np.zeros((3, 3)))
     from fgdwa.sim import run_episode
-    from fgdwa.world import World
+    from fgdwa.sim.world import World
 
     with pytest.raises(FgdwaError, match="mapping"):
         run_episode(World(grid=grid), (0.5, 1.0, 0.0), (5.5, 1.0), mapping="lidar")

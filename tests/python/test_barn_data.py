@@ -19,8 +19,8 @@ import pytest
 import fgdwa
 from conftest import barn_locations
 from fgdwa import FgdwaError
-from fgdwa.barn_cli import barn_import_command, register_barn_commands
-from fgdwa.datasets import (
+from fgdwa.bench.barn import barn_import_command, register_barn_commands
+from fgdwa.io import (
     BarnDataset,
     barn_score,
     convert_barn_worlds,
@@ -29,7 +29,7 @@ from fgdwa.datasets import (
     load_barn,
     parse_world_selection,
 )
-from fgdwa.datasets.barn import GOAL, START
+from fgdwa.io.barn_data import GOAL, START
 
 CONVERTED_WORLDS = (0, 150, 299)  # the worlds whose original files are in worlds/
 
@@ -219,7 +219,7 @@ def test_converter_reproduces_the_shared_file_for_its_three_worlds(world_dir, ra
 
 def test_hole_filling_matters_for_the_converted_worlds(world_dir, raw):
     # Worlds 150 and 299 have solid blocks whose inner cylinders were dropped.
-    from fgdwa.datasets.barn_convert import _cylinder_positions
+    from fgdwa.io.barn_convert import _cylinder_positions
 
     k = int(np.flatnonzero(raw["world_ids"] == 299)[0])
     count = sum(1 for _, _, y in _cylinder_positions(world_dir / "world_299.world") if y >= 5.1)
@@ -530,7 +530,7 @@ def test_members_outside_the_format_are_never_opened(tmp_path):
 
 
 def test_converter_refuses_a_path_file_over_the_size_limit_unread(tmp_path):
-    from fgdwa.datasets.barn_convert import _read_path_cells
+    from fgdwa.io.barn_convert import _read_path_cells
 
     path = tmp_path / "path_0.npy"
     path.write_bytes(_npy_header_bytes((2**30, 2), np.int64))  # announces 16 GiB
@@ -581,4 +581,4 @@ def test_cli_barn_import_writes_the_file(world_dir, tmp_path):
 
     out = tmp_path / "barn.npz"
     assert main(["barn", "import", str(world_dir), "--out", str(out)]) == 0
-    assert len(fgdwa.datasets.barn.load_barn(out)) == 3
+    assert len(fgdwa.io.barn_data.load_barn(out)) == 3

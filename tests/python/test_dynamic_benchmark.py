@@ -9,7 +9,7 @@ import pytest
 
 import fgdwa
 from fgdwa import FgdwaError
-from fgdwa.dynamic_benchmark import (
+from fgdwa.bench.dynamic import (
     PLANNER_VARIANTS,
     DynamicSetup,
     DynamicTask,
@@ -18,9 +18,9 @@ from fgdwa.dynamic_benchmark import (
     parse_seeds,
     run_dynamic_task,
 )
-from fgdwa.dynamic_fields import LEVELS, closed_route, field_yaml, generate_field, write_field
-from fgdwa.scenario import run_scenario
-from fgdwa.scenario_file import load_scenario
+from fgdwa.io.dynamic_fields import LEVELS, closed_route, field_yaml, generate_field, write_field
+from fgdwa.sim.scenario import run_scenario
+from fgdwa.io.scenario_file import load_scenario
 
 
 def _distance_to_route(route, point):
@@ -78,8 +78,8 @@ def test_a_generated_file_loads_and_runs(tmp_path):
     np.testing.assert_array_equal(scenario.world.movers[0].waypoints, field["moving_obstacles"][0]["waypoints"])
     assert tuple(scenario.goal) == tuple(field["goal"])
     result = run_scenario(scenario, "fgdwa", seed=4, max_steps=30)
-    assert result.outcome in ("timeout", "collision", "success")
-    assert result.steps >= 1
+    assert result.summary.outcome in ("timeout", "collision", "success")
+    assert result.summary.steps >= 1
 
 
 def test_a_benchmark_run_is_the_run_of_its_scenario_file(tmp_path):
@@ -87,9 +87,9 @@ def test_a_benchmark_run_is_the_run_of_its_scenario_file(tmp_path):
     run = run_dynamic_task(task)
     path = write_field(generate_field("medium", 2), tmp_path / "f.yaml")
     replay = run_scenario(load_scenario(str(path)), "dwb", seed=2)
-    np.testing.assert_array_equal(run.poses, replay.poses)
-    assert run.row["outcome"] == replay.outcome
-    assert run.row["time"] == replay.sim_time
+    np.testing.assert_array_equal(run.poses, replay.motion.poses)
+    assert run.row["outcome"] == replay.summary.outcome
+    assert run.row["time"] == replay.summary.sim_time
     assert len(run.routes) == 4 and len(run.discs) == 4
     assert set(np.unique(run.cells)) == {0, 1, 2}  # free, on the map, missing from it
 
@@ -171,7 +171,7 @@ def test_bad_requests_are_named(tmp_path):
 def test_fields_left_by_an_earlier_run_go_unless_they_failed_again(tmp_path):
     from types import SimpleNamespace
 
-    from fgdwa.dynamic_benchmark import DynamicSetup, write_failed_fields
+    from fgdwa.bench.dynamic import DynamicSetup, write_failed_fields
 
     fields = tmp_path / "fields"
     fields.mkdir()

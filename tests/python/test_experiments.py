@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 from scipy import stats as sps
 
-from fgdwa import FgdwaError, builtin, stats
-from fgdwa.cli import main
-from fgdwa.experiments import (
+from fgdwa import FgdwaError
+from fgdwa.bench import stats
+from fgdwa.bench.experiments import (
     EXPERIMENTS,
     FINISHING,
     Claim,
@@ -21,11 +21,11 @@ from fgdwa.experiments import (
     comparable_runs,
     judge_claims,
     run_experiment,
-    run_tasks,
+    run_trial,
     trial_tasks,
     verdict,
 )
-from fgdwa.report import (
+from fgdwa.bench.report import (
     EXCLUSION_NOTE,
     per_trial_table,
     read_json,
@@ -35,6 +35,9 @@ from fgdwa.report import (
     write_json,
     write_markdown,
 )
+from fgdwa.bench.runner import run_tasks
+from fgdwa.cli import main
+from fgdwa.io import builtin
 
 A = [89.0, 88.6, 90.2, 81.9, 87.6, 88.6, 93.5]
 B = [113.4, 113.6, 115.8, 113.5, 113.2, 112.4, 111.0, 114.1]
@@ -192,12 +195,12 @@ def test_trials_share_seeds_across_planners():
 
 def test_bad_executor_arguments():
     with pytest.raises(FgdwaError, match="executor"):
-        run_tasks([], executor="threads")
+        run_tasks([], run_trial, executor="threads")
     with pytest.raises(FgdwaError, match="scheduler"):
-        run_tasks([], executor="local", scheduler="tcp://x:1")
+        run_tasks([], run_trial, executor="local", scheduler="tcp://x:1")
     scenario_object = ExperimentSpec("o", "o", builtin.demo_scenario(), ("gdwa",))
     with pytest.raises(FgdwaError, match="cannot be sent"):
-        run_tasks(trial_tasks(scenario_object, 1), executor="local", progress=False)
+        run_experiment(scenario_object, trials=1, executor="local", progress=False)
 
 
 def test_results_do_not_depend_on_the_executor():
@@ -252,7 +255,7 @@ def test_the_three_experiments_end_to_end(tmp_path, capsys):
 
 
 def test_results_page_counts_claims_read_back_from_json(tmp_path):
-    from fgdwa.report import write_results
+    from fgdwa.bench.report import write_results
 
     result = _hand_made_result()
     result.spec = ExperimentSpec("t", "T", "demo", ("fgdwa", "gdwa"),
@@ -267,7 +270,7 @@ def test_results_page_counts_claims_read_back_from_json(tmp_path):
     assert "Of the paper's 2 directional claims, 1 could be measured here; 1 show the same direction" in page
     assert f"1 claim(s) of no difference, 1 could be measured and {int(mileage_p >= 0.05)} hold" in page
     # Sections below the keep marker (the BARN results) survive a rewrite; the rest is regenerated.
-    from fgdwa.report import KEEP_MARKER
+    from fgdwa.bench.report import KEEP_MARKER
 
     (tmp_path / "R.md").write_text(page.replace("## The paper's claims", "## stale") + "\n" + KEEP_MARKER
                                    + "\n\n## BARN\n\nkept\n")
@@ -277,7 +280,7 @@ def test_results_page_counts_claims_read_back_from_json(tmp_path):
 
 
 def test_results_page_keeps_a_hand_written_head(tmp_path):
-    from fgdwa.report import HEAD_MARKER, KEEP_MARKER, write_results
+    from fgdwa.bench.report import HEAD_MARKER, KEEP_MARKER, write_results
 
     save_experiment(_hand_made_result(), tmp_path)
     head = "# Results\n\nContents and a summary.\n\n" + HEAD_MARKER

@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 
 import fgdwa
-from fgdwa.builtin import unknown_beside_path_scenario
+from fgdwa.io.builtin import unknown_beside_path_scenario
 from fgdwa.sim import World, run_episode, run_preset
 
 
@@ -37,11 +37,11 @@ def test_dwb_preset_follows_the_global_path_round_a_wall():
     cells[20:40, 48:52] = 1  # a wall across the straight line from start to goal
     world = World(grid=fgdwa.OccupancyGrid(cells, 0.1))
     result = run_preset(world, (1.0, 3.0, 0.0), (9.0, 3.0), "dwb", max_steps=400)
-    assert result.outcome == "success"
-    assert result.min_clearance > 0.0
+    assert result.summary.outcome == "success"
+    assert result.summary.min_clearance > 0.0
     # Its path critics keep it near the A* path around the wall.
-    assert result.max_deviation < 0.3
-    assert np.all(np.isnan(result.delta))  # no similarity critic to weigh
+    assert result.summary.max_deviation < 0.3
+    assert np.all(np.isnan(result.trace.delta))  # no similarity critic to weigh
 
 
 def test_fuzzy_weights_follow_the_rule_tables():
@@ -70,21 +70,21 @@ def test_fuzzy_weights_follow_the_rule_tables():
 def test_fgdwa_passes_unknown_obstacles_and_raises_beta_near_them():
     scenario = unknown_beside_path_scenario()
     result = run_preset(scenario.world, scenario.start, scenario.goal, "fgdwa", max_steps=500)
-    assert result.outcome == "success"
-    assert result.min_clearance > 0.0
-    assert len(result.beta) == result.steps
-    crowded = result.density > 0.6  # an unknown block fills part of the detect window
+    assert result.summary.outcome == "success"
+    assert result.summary.min_clearance > 0.0
+    assert len(result.trace.beta) == result.summary.steps
+    crowded = result.trace.density > 0.6  # an unknown block fills part of the detect window
     assert crowded.any() and (~crowded).any()
-    assert result.beta[crowded].mean() > result.beta[~crowded].mean() + 0.1
-    assert np.corrcoef(result.beta, result.density)[0, 1] > 0.8
-    assert np.all((result.delta >= 0.0) & (result.delta <= 5.0))
+    assert result.trace.beta[crowded].mean() > result.trace.beta[~crowded].mean() + 0.1
+    assert np.corrcoef(result.trace.beta, result.trace.density)[0, 1] > 0.8
+    assert np.all((result.trace.delta >= 0.0) & (result.trace.delta <= 5.0))
 
 
 def test_fixed_presets_keep_their_weights():
     scenario = unknown_beside_path_scenario()
     result = run_preset(scenario.world, scenario.start, scenario.goal, "gdwa_high_safety", max_steps=30)
-    assert np.all(result.beta == 1.0) and np.all(result.delta == 0.5)
-    assert np.all(np.isnan(result.density))  # a fixed preset needs no lidar unless asked
+    assert np.all(result.trace.beta == 1.0) and np.all(result.trace.delta == 0.5)
+    assert np.all(np.isnan(result.trace.density))  # a fixed preset needs no lidar unless asked
 
 
 def test_controller_runs_the_cycle_a_robot_would():

@@ -7,7 +7,7 @@ import fgdwa
 from fgdwa import file_limits
 from fgdwa.file_limits import MAX_YAML_ALIASES, MAX_YAML_BYTES, MAX_YAML_DEPTH, short_repr
 from fgdwa.fuzzy import engine_from_yaml
-from fgdwa.scenario_file import load_scenario
+from fgdwa.io.scenario_file import load_scenario
 
 
 def refused(load, source, *fragments):
@@ -167,5 +167,5 @@ def test_a_bomb_given_as_a_dict_is_reported_briefly():
     for _ in range(8):
         value = [value] * 9
     with pytest.raises(fgdwa.FgdwaError) as info:
-        fgdwa.scenario_file.scenario_from_dict({"map": value, "start": [1, 1], "goal": [2, 2]})
+        fgdwa.io.scenario_file.scenario_from_dict({"map": value, "start": [1, 1], "goal": [2, 2]})
     assert "map = " in str(info.value) and len(str(info.value)) < 1000

@@ -1,7 +1,7 @@
 """Seeded property-and-fuzz tests of the hardening contract, as a hostile user would run them.
 
 Every public function of fgdwa._core that takes numbers, and both file loaders
-(fgdwa.scenario_file.load_scenario, fgdwa.datasets.barn.load_barn), either
+(fgdwa.io.scenario_file.load_scenario, fgdwa.io.barn_data.load_barn), either
 returns a correct, finite answer or raises fgdwa.FgdwaError (a ValueError) whose
 message names the argument. Never a crash, a hang, another exception type for
 numeric input, or a silent wrong answer: NaN/inf out for finite in, or NaN, inf
@@ -46,8 +46,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import fgdwa
-from fgdwa import scenario_file
-from fgdwa.datasets.barn import load_barn
+from fgdwa.io import scenario_file
+from fgdwa.io.barn_data import load_barn
 
 # ---------------------------------------------------------------------------------------------
 # Limits (cpp/include/fgdwa/limits.hpp), restated so a changed limit is a visible test change.
@@ -400,7 +400,7 @@ def test_step_and_rollout(pose, twist, dt, n):
     (p, p_arg), (t, t_arg) = pose, twist
     dt_ok = within(dt, 0.0, MAX_DT) and dt > 0  # the bindings ask dt > 0 of step and rollout
     valid = both(pose_ok(p), twist_ok(t), dt_ok)
-    out = attempt(fgdwa.step, p_arg, t_arg, dt)
+    out = attempt(fgdwa.unicycle_step, p_arg, t_arg, dt)
     if expect(out, valid, "pose", "twist", "dt"):
         q = out.value
         assert_finite([q.x, q.y, q.theta], out)
@@ -422,7 +422,7 @@ def test_step_and_rollout(pose, twist, dt, n):
             scale = 1e-9 * max(abs(p[0]), abs(p[1]), expected * n, 1.0)
             assert np.all(np.abs(steps - expected) <= 1e-7 * expected + scale), \
                 f"{out.call}: step lengths {steps[:4]} differ from |v| dt = {expected}"
-            first = fgdwa.step(p_arg, t_arg, dt)
+            first = fgdwa.unicycle_step(p_arg, t_arg, dt)
             assert np.allclose(poses[0], [first.x, first.y, first.theta], rtol=1e-9,
                                atol=1e-9 * (1 + abs(p[0]) + abs(p[1]))), out.call
 
@@ -1244,12 +1244,15 @@ OCC_DEFAULTS = dict(hit=0.85, miss=-0.4, clamp_min=-2.0, clamp_max=3.5, occupied
                     clear_range=INF, hit_share=0.2)
 
 
+CLEAR_RANGE = next(e for e in fgdwa.OccupancyParams.schema() if e["name"] == "clear_range")
+
+
 def occupancy_valid(k):
     fin = all(math.isfinite(k[n]) for n in ("hit", "miss", "clamp_min", "clamp_max", "occupied", "free", "range_std"))
     log_odds_ok = all(abs(k[n]) <= 1e3 for n in ("hit", "miss", "clamp_min", "clamp_max"))  # kept as float32
     return (fin and log_odds_ok and k["hit"] > 0 and k["miss"] < 0 and k["clamp_min"] <= k["free"] < k["occupied"] <= k["clamp_max"]
             and k["hit"] >= k["occupied"] and k["range_std"] >= 0 and 0 < k["hit_share"] <= 1
-            and not math.isnan(k["clear_range"]) and k["clear_range"] >= 0)
+            and (k["clear_range"] == math.inf or CLEAR_RANGE["min"] <= k["clear_range"] <= CLEAR_RANGE["max"]))
 
 
 @st.composite
@@ -2056,7 +2059,7 @@ def numbers_of(obj, where="scenario", depth=0, seen=None):
 
 
 def check_loaded_scenario(s, call):
-    from fgdwa.scenario import params_with, resolve_planner
+    from fgdwa.sim.scenario import params_with, resolve_planner
 
     for where, value in numbers_of(s):
         if where.endswith("clear_range") and value == INF:
@@ -2274,7 +2277,7 @@ def _int_cases():
         "Footprint.circle (float)": (lambda n: fgdwa.Footprint.circle(n), "double", "radius"),
         "OccupancyGrid resolution (float)": (lambda n: fgdwa.OccupancyGrid(np.zeros((2, 2), np.uint8), n), "double",
                                              "resolution"),
-        "step dt (float)": (lambda n: fgdwa.step((0, 0, 0), (1, 0), n), "double", "dt"),
+        "unicycle_step dt (float)": (lambda n: fgdwa.unicycle_step((0, 0, 0), (1, 0), n), "double", "dt"),
         "Pose2 (float)": (lambda n: fgdwa.Pose2(0.0, n), "double", "y"),
         "Pose2.theta setter (float)": (set_attribute(fgdwa.Pose2(), "theta"), "double", "theta"),
         "Twist.omega setter (float)": (set_attribute(fgdwa.Twist(), "omega"), "double", "omega"),

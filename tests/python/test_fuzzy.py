@@ -7,13 +7,8 @@ import numpy as np
 import pytest
 
 import fgdwa
-from fgdwa.fuzzy import (
-    engine_from_dict,
-    engine_from_yaml,
-    engine_to_dict,
-    paper_controller_config,
-    plot_control_surfaces,
-)
+from fgdwa.fuzzy import engine_from_dict, engine_from_yaml, engine_to_dict, paper_controller_config
+from fgdwa.plot.fuzzy import plot_control_surfaces
 
 MF = fgdwa.MembershipFunction
 NAN = float("nan")

@@ -4,7 +4,7 @@ from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import dijkstra
 
 import fgdwa
-from fgdwa.builtin import c_trap_scenario
+from fgdwa.io.builtin import c_trap_scenario
 from fgdwa.global_planning import global_methods, plan_global
 from fgdwa.sim import run_episode
 from conftest import random_block_grid
@@ -245,14 +245,14 @@ def test_c_shaped_trap_dwa_is_stuck_gdwa_gets_through():
                        params=fgdwa.PlannerParams(heading_target="key_nodes"), max_steps=400)
     # Heading straight for the goal, DWA stalls in the trap; its recoveries cannot get it out,
     # and the navigator gives up after max_recoveries of them.
-    assert dwa.outcome == "failed"
-    assert {"BackingUp", "Rotating"} & set(dwa.modes)
-    assert np.hypot(*(dwa.poses[-1, :2] - scenario.goal)) > 4.0
-    assert gdwa.outcome == "success"
-    assert gdwa.min_clearance > 0.0
-    assert gdwa.global_path is not None and len(gdwa.key_nodes) >= 2
-    np.testing.assert_allclose(gdwa.key_nodes[-1], scenario.goal)
+    assert dwa.summary.outcome == "failed"
+    assert {"BackingUp", "Rotating"} & set(dwa.trace.modes)
+    assert np.hypot(*(dwa.motion.poses[-1, :2] - scenario.goal)) > 4.0
+    assert gdwa.summary.outcome == "success"
+    assert gdwa.summary.min_clearance > 0.0
+    assert gdwa.context.global_path is not None and len(gdwa.context.key_nodes) >= 2
+    np.testing.assert_allclose(gdwa.context.key_nodes[-1], scenario.goal)
     # The target walks through the key nodes in order.
-    seen = [tuple(t) for t in gdwa.targets]
-    order = [seen.index(tuple(k)) for k in gdwa.key_nodes if tuple(k) in seen]
+    seen = [tuple(t) for t in gdwa.trace.targets]
+    order = [seen.index(tuple(k)) for k in gdwa.context.key_nodes if tuple(k) in seen]
     assert order == sorted(order) and len(order) >= 2

@@ -11,7 +11,7 @@ import yaml
 irsim = pytest.importorskip("irsim")
 
 import fgdwa  # noqa: E402
-import fgdwa.irsim as fi  # noqa: E402
+import fgdwa.adapters.irsim as fi  # noqa: E402
 
 WORLDS = Path(fi.__file__).parent / "irsim_worlds"
 

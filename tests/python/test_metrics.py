@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import fgdwa
-from fgdwa.metrics import danger_point_clearance, danger_points, smoothness
+from fgdwa.sim.referee import danger_point_clearance, danger_points, smoothness
 from fgdwa.sim import path_length
 
 
@@ -41,14 +41,14 @@ def test_mileage_and_smoothness():
 
 
 def test_deviation_is_recorded_against_the_global_path():
-    from fgdwa.builtin import c_trap_scenario
+    from fgdwa.io.builtin import c_trap_scenario
     from fgdwa.sim import run_episode
 
     scenario = c_trap_scenario()
     result = run_episode(scenario.world, scenario.start, scenario.goal,
                          params=fgdwa.PlannerParams(heading_target="key_nodes"), max_steps=400)
-    path = fgdwa.GlobalPath(result.global_path)
-    expected = [path.deviation(p[:2]) for p in result.poses[:-1]]
-    np.testing.assert_allclose(result.deviation, expected)
-    assert result.mean_deviation == pytest.approx(np.mean(expected))
-    assert result.max_deviation == pytest.approx(np.max(expected))
+    path = fgdwa.GlobalPath(result.context.global_path)
+    expected = [path.deviation(p[:2]) for p in result.motion.poses[:-1]]
+    np.testing.assert_allclose(result.trace.deviation, expected)
+    assert result.summary.mean_deviation == pytest.approx(np.mean(expected))
+    assert result.summary.max_deviation == pytest.approx(np.max(expected))

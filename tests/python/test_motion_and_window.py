@@ -5,7 +5,7 @@ import fgdwa
 
 
 def test_step_turns_first_then_moves_along_the_new_heading():
-    pose = fgdwa.step((1.0, 2.0, 0.0), (1.0, np.pi / 2), 1.0)
+    pose = fgdwa.unicycle_step((1.0, 2.0, 0.0), (1.0, np.pi / 2), 1.0)
     assert (pose.x, pose.y, pose.theta) == pytest.approx((1.0, 3.0, np.pi / 2), abs=1e-12)
 
 
@@ -30,7 +30,7 @@ def test_rollout_equals_repeated_steps():
     pose = fgdwa.Pose2(0.0, 0.0, 3.0)
     poses = fgdwa.rollout(pose, (1.0, 0.7), 0.15, 40)
     for expected in poses:
-        pose = fgdwa.step(pose, (1.0, 0.7), 0.15)
+        pose = fgdwa.unicycle_step(pose, (1.0, 0.7), 0.15)
         assert (pose.x, pose.y) == pytest.approx(tuple(expected[:2]), abs=1e-12)
         assert fgdwa.angle_difference(pose.theta, expected[2]) == pytest.approx(0.0, abs=1e-12)
 

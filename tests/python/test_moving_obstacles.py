@@ -7,7 +7,7 @@ import pytest
 
 import fgdwa
 from fgdwa.sim import run_episode
-from fgdwa.world import MovingObstacle, World
+from fgdwa.sim.world import MovingObstacle, World
 
 LIDAR = fgdwa.LidarParams(noise_std=0.03, dropout=0.01)
 
@@ -40,20 +40,20 @@ def crossing():
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_the_robot_yields_to_a_head_on_mover(seed):
     result = run(head_on(), seed)
-    assert result.outcome == "success", result.outcome
+    assert result.summary.outcome == "success", result.summary.outcome
     # It stepped off the mover's line in time: predicted, the mover never came
     # within 0.15 m (seen as points where it stood, it came within 0.09 m).
-    assert np.max(np.abs(result.poses[:, 1] - 4.0)) > 0.5
-    assert result.min_clearance > 0.15
+    assert np.max(np.abs(result.motion.poses[:, 1] - 4.0)) > 0.5
+    assert result.summary.min_clearance > 0.15
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_the_robot_passes_behind_a_crossing_mover(seed):
     mover = crossing()
     result = run(mover, seed)
-    assert result.outcome == "success", result.outcome
+    assert result.summary.outcome == "success", result.summary.outcome
     # When the robot crosses x = 6, the mover is already past the robot's line.
-    k = int(np.argmax(result.poses[:, 0] >= 6.0))
+    k = int(np.argmax(result.motion.poses[:, 0] >= 6.0))
     position, _ = mover.state_at(k * fgdwa.planner_preset("fgdwa").params.dt)
-    assert position[1] > result.poses[k, 1] + 0.35
-    assert result.min_clearance > 0.15
+    assert position[1] > result.motion.poses[k, 1] + 0.35
+    assert result.summary.min_clearance > 0.15

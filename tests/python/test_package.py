@@ -1,3 +1,4 @@
+import importlib
 import subprocess
 import sys
 from pathlib import Path
@@ -13,6 +14,21 @@ SOURCE_STUB = Path(__file__).resolve().parents[2] / "python" / "fgdwa" / "_core.
 def test_typing_markers_ship_with_the_package():
     assert (PACKAGE / "py.typed").exists()
     assert (PACKAGE / "_core.pyi").exists()
+
+
+@pytest.mark.parametrize("package", ["fgdwa.sim", "fgdwa.io", "fgdwa.bench", "fgdwa.plot", "fgdwa.adapters"])
+def test_each_sub_package_says_its_role_and_exports_its_names(package):
+    module = importlib.import_module(package)
+    assert module.__doc__ and module.__all__
+    assert all(hasattr(module, name) for name in module.__all__)
+
+
+def test_the_top_level_package_and_the_fuzzy_module_draw_nothing():
+    # The algorithm's helpers load neither the simulator nor matplotlib: plots live in fgdwa.plot.
+    code = ("import sys, fgdwa, fgdwa.fuzzy; "
+            "print(sorted(m for m in sys.modules if m == 'matplotlib' or m.startswith(('fgdwa.sim', 'fgdwa.plot'))))")
+    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True).stdout
+    assert out.strip() == "[]"
 
 
 def test_stub_matches_the_compiled_module(tmp_path):

@@ -8,7 +8,7 @@ import pytest
 
 import fgdwa
 from fgdwa.params_doc import PARAMETER_SETS, parameter_reference
-from fgdwa.scenario_values import ValueReader, param_keys
+from fgdwa.io.scenario_values import ValueReader, param_keys
 
 ROOT = Path(__file__).resolve().parents[2]
 

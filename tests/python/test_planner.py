@@ -131,7 +131,7 @@ def test_admissible_samples_stop_before_contact():
             curvature = omega / v if v > 0 else 0.0
             while speed > 0:
                 for _ in range(10):
-                    p = fgdwa.step(p, (speed, speed * curvature), dt / 10)
+                    p = fgdwa.unicycle_step(p, (speed, speed * curvature), dt / 10)
                     travelled += speed * dt / 10
                     assert world.clearance(footprint, p) > 0.0
                 speed = max(speed - limits.acc_v * dt, 0.0)
@@ -152,5 +152,5 @@ def test_peer_case_python_robotics_dwa():
                                  critics=[("heading", 0.15), ("clearance", 1.0), ("velocity", 1.0)])
     result = run_episode(world, (0.0, 0.0, np.pi / 8), (10.0, 10.0), limits=limits,
                          footprint=fgdwa.Footprint.circle(1.0), params=params, max_steps=1500)
-    assert result.outcome == "success"
-    assert result.min_clearance > 0.0
+    assert result.summary.outcome == "success"
+    assert result.summary.min_clearance > 0.0

@@ -12,6 +12,6 @@ def test_readme_python_example_runs():
     namespace: dict = {}
     for block in blocks:
         exec(compile(block, str(README), "exec"), namespace)
-    assert namespace["result"].outcome == "success"
+    assert namespace["result"].summary.outcome == "success"
     assert namespace["plan"].status.name == "Ok"
-    assert namespace["fuzzy"].outcome == "success"
+    assert namespace["fuzzy"].summary.outcome == "success"

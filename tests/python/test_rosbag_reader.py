@@ -1,4 +1,4 @@
-"""fgdwa.rosbag_reader against bags written by ROS's own rosbag (Debian's
+"""fgdwa.io.rosbag_reader against bags written by ROS's own rosbag (Debian's
 python3-rosbag under /usr/bin/python3, which make test installs)."""
 
 import json
@@ -11,8 +11,8 @@ import pytest
 
 from fgdwa import FgdwaError
 from fgdwa.cli import main
-from fgdwa.replay import quaternion_yaw, scan_ranges
-from fgdwa.rosbag_reader import (
+from fgdwa.adapters.replay import quaternion_yaw, scan_ranges
+from fgdwa.io.rosbag_reader import (
     decode_diagnostics,
     decode_laser_scan,
     decode_odometry,

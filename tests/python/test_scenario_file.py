@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 import fgdwa
-from fgdwa.scenario import Scenario, run_scenario
-from fgdwa.scenario_file import load_scenario, shipped_scenarios
+from fgdwa.sim.scenario import Scenario, run_scenario
+from fgdwa.io.scenario_file import load_scenario, shipped_scenarios
 
 # A 3 m x 1.5 m map of 0.5 m cells: one obstacle cell at x 1.0-1.5, y 0-0.5.
 TINY = """\
@@ -77,7 +77,7 @@ def test_shipped_scenarios_hold_what_their_experiments_need():
 def test_e2_has_danger_points():
     """Global-path points closer to an obstacle (unknown ones included) than the footprint radius + 0.3 m."""
     from fgdwa.global_planning import plan_global
-    from fgdwa.metrics import danger_points
+    from fgdwa.sim.referee import danger_points
 
     e2 = load_scenario("e2")
     plan = plan_global(e2.world.grid, e2.start[:2], e2.goal, inflation_radius=e2.footprint.radius + 0.3)
@@ -88,7 +88,7 @@ def test_e2_has_danger_points():
 
 def test_a_loaded_scenario_runs():
     result = run_scenario(load_scenario("demo"), "fgdwa", seed=0, max_steps=5)
-    assert result.steps == 5 and result.outcome == "timeout"
+    assert result.summary.steps == 5 and result.summary.outcome == "timeout"
 
 
 def test_a_path_a_path_string_and_text_agree(tmp_path):
@@ -182,7 +182,7 @@ def test_rectangles_movers_and_sections():
     assert scenario.variability.mover_phase is False
     assert scenario.max_steps == 50 and scenario.goal_tolerance == 0.2
     result = run_scenario(scenario, seed=1, max_steps=3)
-    assert result.steps == 3
+    assert result.summary.steps == 3
 
 
 def test_png_map(tmp_path):
@@ -397,7 +397,7 @@ def test_no_python_errors_leak():
 
 
 def test_planner_overrides_are_the_bound_params_fields(tmp_path):
-    from fgdwa.scenario import PARAM_FIELDS
+    from fgdwa.sim.scenario import PARAM_FIELDS
 
     assert {"safety_margin", "key_nodes", "critics", "dt"} <= set(PARAM_FIELDS)
     defaults = fgdwa.PlannerParams()
@@ -410,7 +410,7 @@ def test_planner_overrides_are_the_bound_params_fields(tmp_path):
 
 
 def test_constructor_keywords_are_the_schemas_fields():
-    from fgdwa.scenario import init_keywords
+    from fgdwa.sim.scenario import init_keywords
 
     names = init_keywords(fgdwa.NavigatorParams)
     assert names[:2] == ("path_margin", "replan_period")

@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 
 import fgdwa
-from fgdwa.builtin import demo_scenario
+from fgdwa.io.builtin import demo_scenario
 from fgdwa.cli import main
 from fgdwa.sim import World, collides_during_step, path_length, run_episode
 
@@ -15,29 +15,29 @@ def test_path_length_of_a_hand_made_path():
 def test_demo_scenario_succeeds_with_classic_dwa():
     scenario = demo_scenario()
     result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=400)
-    assert result.outcome == "success"
-    assert np.hypot(*(result.poses[-1, :2] - scenario.goal)) <= 0.3
-    assert result.min_clearance > 0.0
-    assert result.steps == len(result.commands) == len(result.poses) - 1
-    assert result.sim_time == pytest.approx(result.steps * 0.15)
-    assert result.mileage == pytest.approx(path_length(result.poses))
-    assert result.mileage >= np.hypot(10.0, 0.0) - 0.3
-    assert 0 < result.min_clearance <= result.mean_clearance
-    assert result.planning_time > 0
+    assert result.summary.outcome == "success"
+    assert np.hypot(*(result.motion.poses[-1, :2] - scenario.goal)) <= 0.3
+    assert result.summary.min_clearance > 0.0
+    assert result.summary.steps == len(result.motion.commands) == len(result.motion.poses) - 1
+    assert result.summary.sim_time == pytest.approx(result.summary.steps * 0.15)
+    assert result.summary.mileage == pytest.approx(path_length(result.motion.poses))
+    assert result.summary.mileage >= np.hypot(10.0, 0.0) - 0.3
+    assert 0 < result.summary.min_clearance <= result.summary.mean_clearance
+    assert result.summary.planning_time > 0
 
 
 def test_episode_is_deterministic():
     scenario = demo_scenario()
     a = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=60)
     b = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=60)
-    np.testing.assert_array_equal(a.poses, b.poses)
+    np.testing.assert_array_equal(a.motion.poses, b.motion.poses)
 
 
 def test_timeout_when_steps_run_out():
     scenario = demo_scenario()
     result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=5)
-    assert result.outcome == "timeout"
-    assert result.steps == 5
+    assert result.summary.outcome == "timeout"
+    assert result.summary.steps == 5
 
 
 def test_a_disc_driving_into_the_robot_is_a_collision():
@@ -45,8 +45,8 @@ def test_a_disc_driving_into_the_robot_is_a_collision():
     params = fgdwa.PlannerParams(critics=[("heading", 1.0), ("velocity", 1.0)])
     result = run_episode(World(discs=[disc]), (0.0, 0.0, np.pi), (-20.0, 0.0),
                          limits=fgdwa.RobotLimits(v_max=0.2), params=params, max_steps=50)
-    assert result.outcome == "collision"
-    assert result.clearances[-1] == pytest.approx(0.0, abs=1e-6)
+    assert result.summary.outcome == "collision"
+    assert result.motion.clearances[-1] == pytest.approx(0.0, abs=1e-6)
 
 
 def test_contact_between_poses_is_found():
@@ -102,20 +102,20 @@ def test_cli_demo_writes_the_figure(tmp_path, capsys):
 
 
 def test_obstacles_missing_from_the_map_are_seen_by_the_lidar():
-    from fgdwa.builtin import hidden_obstacles_scenario
+    from fgdwa.io.builtin import hidden_obstacles_scenario
 
     scenario = hidden_obstacles_scenario()
     params = fgdwa.PlannerParams(heading_target="key_nodes")
     blind = run_episode(scenario.world, scenario.start, scenario.goal, params=params, max_steps=300)
-    assert blind.outcome == "collision"
+    assert blind.summary.outcome == "collision"
     sensing = run_episode(scenario.world, scenario.start, scenario.goal, params=params, lidar=fgdwa.LidarParams(),
                           max_steps=300)
-    assert sensing.outcome == "success"
-    assert sensing.min_clearance > 0.0
+    assert sensing.summary.outcome == "success"
+    assert sensing.summary.min_clearance > 0.0
     # The density of the detect window rises when the hidden blocks come into it.
-    assert sensing.density[0] == pytest.approx(0.5 ** (4 * np.sin(np.pi / 3)))
-    assert sensing.density.max() > 0.5
-    assert np.all(np.isfinite(sensing.deviation)) and sensing.deviation.max() > 0.3
+    assert sensing.trace.density[0] == pytest.approx(0.5 ** (4 * np.sin(np.pi / 3)))
+    assert sensing.trace.density.max() > 0.5
+    assert np.all(np.isfinite(sensing.trace.deviation)) and sensing.trace.deviation.max() > 0.3
 
 
 def test_hidden_layout_must_match_the_map():
@@ -139,30 +139,30 @@ def test_weight_policy_needs_a_lidar():
         run_episode(scenario.world, scenario.start, scenario.goal, weight_policy=Constant())
     result = run_episode(scenario.world, scenario.start, scenario.goal, weight_policy=Constant(),
                          lidar=fgdwa.LidarParams(), max_steps=20)
-    assert np.all(result.beta == 0.2)
+    assert np.all(result.trace.beta == 0.2)
     with pytest.raises(fgdwa.FgdwaError, match="dict"):
         run_episode(scenario.world, scenario.start, scenario.goal, weight_policy=Pair(), lidar=fgdwa.LidarParams(),
                     max_steps=5)
 
 
 def test_recorded_cycles_are_what_the_planner_scored_and_the_gif_replays_them(tmp_path):
-    from fgdwa.animation import write_gif
+    from fgdwa.plot.animation import write_gif
 
     scenario = demo_scenario()
     plain = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=30, lidar=fgdwa.LidarParams())
-    assert plain.cycles == []
+    assert plain.trace.cycles == []
     with pytest.raises(fgdwa.FgdwaError, match="record_cycles"):
         write_gif(plain, scenario, tmp_path / "x.gif", planner="dwa")
     result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=30, lidar=fgdwa.LidarParams(),
                          record_cycles=True, navigator=fgdwa.NavigatorParams(record_top_k=7))
-    assert len(result.cycles) == result.steps == 30
+    assert len(result.trace.cycles) == result.summary.steps == 30
     n_steps = fgdwa.PlannerParams().n_steps
-    for k, cycle in enumerate(result.cycles):
+    for k, cycle in enumerate(result.trace.cycles):
         assert cycle.rollouts.shape == (7, n_steps, 3)
         assert np.all(np.diff(cycle.totals) <= 0)  # best first
         np.testing.assert_allclose(cycle.chosen, cycle.rollouts[0])
         # The chosen rollout starts with the command the robot then executed.
-        after = fgdwa.step(tuple(result.poses[k]), tuple(result.commands[k]), 0.15)
+        after = fgdwa.unicycle_step(tuple(result.motion.poses[k]), tuple(result.motion.commands[k]), 0.15)
         np.testing.assert_allclose(cycle.chosen[0], (after.x, after.y, after.theta), atol=1e-9)
         assert cycle.hits.ndim == 2 and cycle.hits.shape[1] == 2 and len(cycle.hits) > 0
     gif = write_gif(result, scenario, tmp_path / "demo.gif", planner="dwa", max_frames=5)
@@ -170,7 +170,7 @@ def test_recorded_cycles_are_what_the_planner_scored_and_the_gif_replays_them(tm
 
 
 def test_the_footprint_is_drawn_as_it_is(tmp_path):
-    from fgdwa.plotting import footprint_patch, placed_outline, plot_episode
+    from fgdwa.plot.episode import footprint_patch, placed_outline, plot_episode
 
     jackal = fgdwa.robot_preset("jackal").footprint
     corners = placed_outline(jackal.vertices, (1.0, 2.0, np.pi / 2))
@@ -191,9 +191,9 @@ def test_episode_options_and_keyword_settings_agree():
     by_object = run_episode(scenario.world, scenario.start, scenario.goal, options)
     by_keywords = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=15, lidar=fgdwa.LidarParams(),
                               seed=3)
-    np.testing.assert_array_equal(by_object.poses, by_keywords.poses)
+    np.testing.assert_array_equal(by_object.motion.poses, by_keywords.motion.poses)
     # Keywords go on top of the object.
-    assert run_episode(scenario.world, scenario.start, scenario.goal, options, max_steps=5).steps == 5
+    assert run_episode(scenario.world, scenario.start, scenario.goal, options, max_steps=5).summary.steps == 5
     with pytest.raises(fgdwa.FgdwaError, match="max_step"):
         run_episode(scenario.world, scenario.start, scenario.goal, max_step=5)
 
@@ -210,15 +210,15 @@ def test_latency_delays_every_command_by_its_cycles():
     prompt = open_run(max_steps=12)
     late = open_run(max_steps=12, latency=1)
     # Nothing reaches the wheels in the first cycle: the robot stays at rest.
-    np.testing.assert_array_equal(late.commands[0], (0.0, 0.0))
-    np.testing.assert_array_equal(late.poses[1], late.poses[0])
+    np.testing.assert_array_equal(late.motion.commands[0], (0.0, 0.0))
+    np.testing.assert_array_equal(late.motion.poses[1], late.motion.poses[0])
     # Still at rest in the second cycle, the navigator computes what it computed in the first,
     # and that now reaches the wheels.
-    np.testing.assert_array_equal(late.commands[1], prompt.commands[0])
+    np.testing.assert_array_equal(late.motion.commands[1], prompt.motion.commands[0])
     later = open_run(max_steps=12, latency=3)
-    np.testing.assert_array_equal(later.commands[:3], np.zeros((3, 2)))
-    assert later.commands[3, 0] > 0
-    assert later.mileage < late.mileage < prompt.mileage
+    np.testing.assert_array_equal(later.motion.commands[:3], np.zeros((3, 2)))
+    assert later.motion.commands[3, 0] > 0
+    assert later.summary.mileage < late.summary.mileage < prompt.summary.mileage
 
 
 def test_actuation_lag_follows_the_command_as_a_first_order_lag():
@@ -226,20 +226,20 @@ def test_actuation_lag_follows_the_command_as_a_first_order_lag():
     lagging = open_run(max_steps=20, actuation_lag=tau)
     # From rest toward the first command: the mean of v over the cycle is
     # v_c (1 - tau / dt (1 - exp(-dt / tau))).
-    v_c = lagging.commands[0, 0]
+    v_c = lagging.motion.commands[0, 0]
     assert v_c > 0
-    assert lagging.twists[0, 0] == pytest.approx(v_c * (1 - tau / dt * (1 - np.exp(-dt / tau))), rel=1e-12)
-    assert np.all(lagging.twists[:5, 0] < lagging.commands[:5, 0])
-    assert lagging.mileage < open_run(max_steps=20).mileage
+    assert lagging.motion.twists[0, 0] == pytest.approx(v_c * (1 - tau / dt * (1 - np.exp(-dt / tau))), rel=1e-12)
+    assert np.all(lagging.motion.twists[:5, 0] < lagging.motion.commands[:5, 0])
+    assert lagging.summary.mileage < open_run(max_steps=20).summary.mileage
     # Without lag the robot moves exactly as commanded.
     prompt = open_run(max_steps=20)
-    np.testing.assert_array_equal(prompt.twists, prompt.commands)
+    np.testing.assert_array_equal(prompt.motion.twists, prompt.motion.commands)
 
 
 def test_actuation_noise_has_the_asked_spread():
     # A latency longer than the run: the wheels only ever get the noise on a standing command.
     result = open_run(max_steps=400, latency=1000, actuation_noise=(0.05, 0.1), seed=2)
-    v, omega = result.commands.T
+    v, omega = result.motion.commands.T
     # 400 draws: the sample std lies within 15 % of the true one with odds far beyond 1e-5.
     assert 0.85 * 0.05 < np.std(v) < 1.15 * 0.05
     assert 0.85 * 0.1 < np.std(omega) < 1.15 * 0.1
@@ -251,22 +251,24 @@ def test_odometry_drift_misleads_the_navigator_but_not_the_referee():
     start, goal = (1.2, 4.0, 0.0), (10.8, 4.0)
     result = run_episode(world, start, goal, max_steps=40, lidar=fgdwa.LidarParams(beams=181),
                          odometry_drift=(0.05, 0.05), seed=1)
-    assert result.outcome == "timeout"
-    np.testing.assert_array_equal(result.believed_poses[0], result.poses[0])
-    gap = np.hypot(*(result.believed_poses[:, :2] - result.poses[:, :2]).T)
+    assert result.summary.outcome == "timeout"
+    np.testing.assert_array_equal(result.motion.believed_poses[0], result.motion.poses[0])
+    gap = np.hypot(*(result.motion.believed_poses[:, :2] - result.motion.poses[:, :2]).T)
     assert gap[-1] > 1e-3
     # The scans were placed where the robot believed it was when it took them ...
-    last_scan = result.last_scan
-    np.testing.assert_allclose((last_scan.pose.x, last_scan.pose.y, last_scan.pose.theta), result.believed_poses[-2])
+    last_scan = result.context.last_scan
+    np.testing.assert_allclose((last_scan.pose.x, last_scan.pose.y, last_scan.pose.theta),
+                               result.motion.believed_poses[-2])
     # ... while the referee's poses follow the driven twists exactly, from the true start.
-    for k in range(result.steps):
-        pose = fgdwa.step(result.poses[k], result.twists[k], 0.15)
-        np.testing.assert_array_equal(result.poses[k + 1], (pose.x, pose.y, pose.theta))
+    for k in range(result.summary.steps):
+        pose = fgdwa.unicycle_step(result.motion.poses[k], result.motion.twists[k], 0.15)
+        np.testing.assert_array_equal(result.motion.poses[k + 1], (pose.x, pose.y, pose.theta))
     truth = fgdwa.CollisionWorld(world.true_grid())
-    assert result.clearances[-1] == pytest.approx(truth.clearance(fgdwa.Footprint.circle(0.25), result.poses[-1]))
+    final = result.motion.poses[-1]
+    assert result.motion.clearances[-1] == pytest.approx(truth.clearance(fgdwa.Footprint.circle(0.25), final))
     # Without drift the believed pose is the true one.
     plain = run_episode(world, start, goal, max_steps=10, lidar=fgdwa.LidarParams(beams=181), seed=1)
-    np.testing.assert_array_equal(plain.believed_poses, plain.poses)
+    np.testing.assert_array_equal(plain.motion.believed_poses, plain.motion.poses)
 
 
 def test_the_same_seed_repeats_a_noisy_episode_bit_for_bit():
@@ -277,20 +279,20 @@ def test_the_same_seed_repeats_a_noisy_episode_bit_for_bit():
     b = run_episode(scenario.world, scenario.start, scenario.goal, seed=11, **noisy)
     c = run_episode(scenario.world, scenario.start, scenario.goal, seed=12, **noisy)
     for name in ("poses", "believed_poses", "commands", "twists", "clearances"):
-        np.testing.assert_array_equal(getattr(a, name), getattr(b, name))
-    np.testing.assert_array_equal(a.last_scan.ranges, b.last_scan.ranges)
-    assert a.outcome == b.outcome and a.steps == b.steps
-    assert not np.array_equal(a.poses[:20], c.poses[:20])
+        np.testing.assert_array_equal(getattr(a.motion, name), getattr(b.motion, name))
+    np.testing.assert_array_equal(a.context.last_scan.ranges, b.context.last_scan.ranges)
+    assert a.summary.outcome == b.summary.outcome and a.summary.steps == b.summary.steps
+    assert not np.array_equal(a.motion.poses[:20], c.motion.poses[:20])
 
 
 def test_a_disc_driven_into_a_standing_robot_is_a_collision():
     disc = fgdwa.Disc((3.0, 0.0), 0.3, velocity=(-1.0, 0.0))
     # The robot is told to stand still throughout: no command reaches its wheels in time.
     result = run_episode(World(discs=[disc]), (0.0, 0.0, 0.0), (-20.0, 0.0), max_steps=60, latency=60)
-    assert result.outcome == "collision"
-    assert np.all(result.poses == result.poses[0])
+    assert result.summary.outcome == "collision"
+    assert np.all(result.motion.poses == result.motion.poses[0])
     # The disc's edge reaches the robot's after 2.45 s: in cycle 17 of 0.15 s.
-    assert result.steps == 17
+    assert result.summary.steps == 17
 
 
 def test_a_fast_disc_passing_a_standing_robot_within_one_step_is_a_collision():

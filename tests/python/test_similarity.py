@@ -3,7 +3,7 @@ import pytest
 
 import fgdwa
 from fgdwa.sim import run_episode
-from fgdwa.builtin import c_trap_scenario
+from fgdwa.io.builtin import c_trap_scenario
 
 
 def reference_dtw(a, b, band=None):
@@ -139,4 +139,4 @@ def test_sgdwa_gets_through_the_trap_too():
     params = fgdwa.PlannerParams(heading_target="key_nodes", critics=[("heading", 0.5), ("clearance", 0.15),
                                                                       ("velocity", 1.0), ("similarity", 0.5)])
     result = run_episode(scenario.world, scenario.start, scenario.goal, params=params, max_steps=400)
-    assert result.outcome == "success"
+    assert result.summary.outcome == "success"

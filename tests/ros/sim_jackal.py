@@ -1,7 +1,7 @@
 """A simulated BARN Jackal for fgdwa_node's test, as a ROS 1 node.
 
 Run by Debian's /usr/bin/python3 (rospy) with fgdwa's package on the path.
-The world is a BARN map (fgdwa.datasets.load_barn); the robot is the
+The world is a BARN map (fgdwa.io.load_barn); the robot is the
 ``jackal`` robot preset's footprint driven by ``cmd_vel`` in real time: each
 tick (``--tick`` s) its velocity moves toward the last command within the
 Jackal's accelerations (a command older than ``--cmd-timeout`` s counts as a
@@ -36,7 +36,7 @@ from sensor_msgs.msg import LaserScan
 from std_msgs.msg import Bool, Empty, String
 
 import fgdwa
-from fgdwa.datasets import load_barn
+from fgdwa.io import load_barn
 from fgdwa.sim import collides_during_step
 
 # m, m, rad: the challenge's UST-10 sits 0.065 m behind the Jackal's front mount (0.12 m ahead of base_link).
@@ -165,7 +165,7 @@ class SimJackal:
         self.v = toward(self.v, cmd_v, self.limits.acc_v * dt)
         self.omega = toward(self.omega, cmd_omega, self.limits.acc_omega * dt)
         before = self.pose.copy()
-        after = fgdwa.step(tuple(before), (self.v, self.omega), dt)
+        after = fgdwa.unicycle_step(tuple(before), (self.v, self.omega), dt)
         self.pose = np.array([after.x, after.y, after.theta])
         self.travelled += math.hypot(*(self.pose[:2] - before[:2]))
         self.min_clearance = min(self.min_clearance, float(self.truth.clearance(self.footprint, tuple(self.pose), 0.0)))

@@ -181,7 +181,7 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
     from std_msgs.msg import Bool, Empty, String
 
-    from fgdwa.datasets import load_barn
+    from fgdwa.io import load_barn
 
     rospy.init_node("fgdwa_test", disable_signals=True)
     node_exe = prefix / "share" / "fgdwa_ros" / "bin" / "fgdwa_node"

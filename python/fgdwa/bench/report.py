@@ -14,7 +14,7 @@ import os
 from pathlib import Path
 from typing import Optional, Sequence
 
-from fgdwa.stats import SIGNIFICANCE, finishing_rate
+from fgdwa.bench.stats import SIGNIFICANCE, finishing_rate
 
 
 EXCLUSION_NOTE = ("Runs that did not reach the goal (collision, fall or timeout) count in the finishing rate "
@@ -401,7 +401,7 @@ SURFACES_FILE = "control_surfaces.png"
 def save_experiment(result, directory: Path, figures: Optional[dict] = None) -> dict:
     """Write an ExperimentResult into ``directory/<name>/``: <name>.json, the CSVs and
     report.md, which shows ``figures`` ({caption: path}, made there beforehand by
-    ``fgdwa.figures.experiment_figures``). Returns its dictionary, with the figures'
+    ``fgdwa.plot.experiments.experiment_figures``). Returns its dictionary, with the figures'
     file names."""
     directory = Path(directory) / result.spec.name
     directory.mkdir(parents=True, exist_ok=True)

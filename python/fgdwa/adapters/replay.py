@@ -39,7 +39,7 @@ from fgdwa._core import (
     Scan,
     nearest_names,
 )
-from fgdwa.rosbag_reader import (
+from fgdwa.io.rosbag_reader import (
     decode_diagnostics,
     decode_laser_scan,
     decode_odometry,
@@ -290,35 +290,10 @@ def write_outputs(cycles: Sequence[ReplayCycle], out_dir, bag: str) -> dict:
                              f"{c.dv:.3g}", f"{c.domega:.3g}", c.note, c.gap])
     summary = {"bag": bag, **summarize(cycles)}
     (out / "replay.json").write_text(json.dumps(summary, indent=2) + "\n")
+    from fgdwa.plot.replay import plot_replay
+
     plot_replay(cycles, out / "replay.png", title=Path(bag).name)
     return summary
-
-
-def plot_replay(cycles: Sequence[ReplayCycle], path, title: str = "") -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    t = np.array([c.time for c in cycles])
-    fig, axes = plt.subplots(2, 1, figsize=(9, 5), sharex=True)
-    for ax, (name, unit, rec, rep) in zip(axes, [
-            ("v", "m/s", [c.v_recorded for c in cycles], [c.v_replayed for c in cycles]),
-            ("omega", "rad/s", [c.omega_recorded for c in cycles], [c.omega_replayed for c in cycles])]):
-        ax.plot(t, rec, color="0.3", lw=2.0, label="recorded (fgdwa_node)")
-        ax.plot(t, rep, color="tab:orange", lw=1.0, ls="--", label="replayed")
-        bad = np.array([not c.matches for c in cycles])
-        if bad.any():
-            ax.scatter(t[bad], np.asarray(rec)[bad], color="tab:red", s=14, zorder=3, label="differs")
-        ax.set_ylabel(f"{name} ({unit})")
-        ax.grid(alpha=0.3)
-    axes[0].legend(loc="best", fontsize=8)
-    axes[-1].set_xlabel("node time (s)")
-    s = summarize(cycles)
-    axes[0].set_title(f"{title}: {s['matching']} of {s['cycles']} commands the same")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
 
 
 def parse_overrides(items: Sequence[str]) -> Dict[str, object]:

@@ -25,8 +25,8 @@ from fgdwa._core import (
     RobotLimits,
     planner_preset,
 )
-from fgdwa.sim import EpisodeResult, run_episode
-from fgdwa.world import World
+from fgdwa.sim.episode import EpisodeResult, run_episode
+from fgdwa.sim.world import World
 
 def init_keywords(cls) -> tuple:
     """The top-level fields of a parameter class, in declaration order, from its

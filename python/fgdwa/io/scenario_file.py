@@ -2,7 +2,7 @@
 
 ``load_scenario(source)`` takes a path to a ``.yaml`` file, YAML text, or the
 name of a scenario shipped with the package (``shipped_scenarios()``), and
-returns a ``fgdwa.scenario.Scenario``. Every problem in the input raises
+returns a ``fgdwa.sim.scenario.Scenario``. Every problem in the input raises
 ``FgdwaError`` naming the file (``<text>`` for text), the key path (for example
 ``moving_obstacles[1].speed``) and the offending value, so a user can fix a file
 without reading a traceback.
@@ -33,13 +33,13 @@ from fgdwa._core import (
     preset_names,
 )
 from fgdwa.file_limits import clip, is_file, read_text
-from fgdwa.scenario import Scenario, Variability, params_with
-from fgdwa.scenario_checks import FeasibilityChecks
-from fgdwa.scenario_maps import MapReader
-from fgdwa.scenario_values import is_number, join_key, parse_yaml, short_repr
-from fgdwa.world import MOVER_MODES, MovingObstacle, World
+from fgdwa.io.scenario_checks import FeasibilityChecks
+from fgdwa.io.scenario_maps import MapReader
+from fgdwa.io.scenario_values import is_number, join_key, parse_yaml, short_repr
+from fgdwa.sim.scenario import Scenario, Variability, params_with
+from fgdwa.sim.world import MOVER_MODES, MovingObstacle, World
 
-SHIPPED_DIR = Path(__file__).resolve().parent / "scenarios"
+SHIPPED_DIR = Path(__file__).resolve().parents[1] / "scenarios"  # fgdwa/scenarios
 TEXT = "<text>"
 
 _TOP_KEYS = ("name", "description", "map", "terrain", "unknown_obstacles", "moving_obstacles", "start", "goal",

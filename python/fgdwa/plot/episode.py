@@ -1,4 +1,6 @@
-"""Figures of episodes: map, executed path and the last cycle's rollout fan."""
+"""Figures of episodes: map, executed path and the last cycle's rollout fan; and
+the drawing pieces every other figure shares (:func:`save_figure`,
+:func:`draw_world`, :func:`footprint_patch`)."""
 
 from __future__ import annotations
 
@@ -13,8 +15,8 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 
 from fgdwa._core import Footprint  # noqa: E402
-from fgdwa.sim import EpisodeResult  # noqa: E402
-from fgdwa.world import World  # noqa: E402
+from fgdwa.sim.episode import EpisodeResult  # noqa: E402
+from fgdwa.sim.world import World  # noqa: E402
 
 
 def save_figure(fig, path, dpi: int = 120, **options) -> Path:
@@ -83,16 +85,18 @@ def plot_episode(result: EpisodeResult, world: World, goal, path: Optional[Path]
     """Map, executed path, start and goal, the footprint (default a 0.25 m circle) at
     the end, and the rollouts the planner scored in its last cycle."""
     fig, ax = plt.subplots(figsize=(9, 6.5))
-    draw_world(ax, world, result.sim_time)
-    if result.global_path is not None:
-        ax.plot(*result.global_path.T, color="tab:red", linewidth=1.0, linestyle="--", label="global path")
-        ax.plot(*result.key_nodes.T, "+", color="tab:red", markersize=10, markeredgewidth=2, label="key nodes")
-    ax.plot(*result.poses[:, :2].T, color="tab:blue", linewidth=1.8, label="executed path")
-    ax.add_patch(footprint_patch(footprint if footprint is not None else Footprint.circle(0.25), result.poses[-1],
+    context, poses = result.context, result.motion.poses
+    draw_world(ax, world, result.summary.sim_time)
+    if context.global_path is not None:
+        ax.plot(*context.global_path.T, color="tab:red", linewidth=1.0, linestyle="--", label="global path")
+        ax.plot(*context.key_nodes.T, "+", color="tab:red", markersize=10, markeredgewidth=2, label="key nodes")
+    ax.plot(*poses[:, :2].T, color="tab:blue", linewidth=1.8, label="executed path")
+    ax.add_patch(footprint_patch(footprint if footprint is not None else Footprint.circle(0.25), poses[-1],
                                  fill=False, color="tab:blue"))
-    if result.last_plan is not None:
-        draw_rollout_fan(ax, result.last_rollouts, np.asarray(result.last_plan.total), result.last_plan.best_index)
-    ax.plot(*result.poses[0, :2], "o", color="tab:green", markersize=9, label="start")
+    if context.last_plan is not None:
+        draw_rollout_fan(ax, context.last_rollouts, np.asarray(context.last_plan.total),
+                         context.last_plan.best_index)
+    ax.plot(*poses[0, :2], "o", color="tab:green", markersize=9, label="start")
     ax.plot(*np.asarray(goal)[:2], "*", color="tab:orange", markersize=15, label="goal")
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")

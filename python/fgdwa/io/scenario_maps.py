@@ -15,8 +15,8 @@ import numpy as np
 from fgdwa import file_limits as limits
 from fgdwa._core import FgdwaError, OccupancyGrid, TerrainGrid
 from fgdwa.file_limits import clip, load_npy
-from fgdwa.scenario_values import ValueReader, join_key
-from fgdwa.world import World
+from fgdwa.io.scenario_values import ValueReader, join_key
+from fgdwa.sim.world import World
 
 _MAP_SOURCES = ("ascii", "png", "npy", "size")
 

@@ -21,9 +21,9 @@ from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.patches import Circle, Wedge  # noqa: E402
 
 from fgdwa._core import FgdwaError  # noqa: E402
-from fgdwa.plotting import draw_world, footprint_patch, placed_outline  # noqa: E402
-from fgdwa.scenario import Scenario, scenario_params, trial_variation  # noqa: E402
-from fgdwa.sim import EpisodeResult  # noqa: E402
+from fgdwa.plot.episode import draw_world, footprint_patch, placed_outline  # noqa: E402
+from fgdwa.sim.episode import EpisodeResult  # noqa: E402
+from fgdwa.sim.scenario import Scenario, scenario_params, trial_variation  # noqa: E402
 
 
 def frame_indices(steps: int, max_frames: int = 150) -> np.ndarray:
@@ -38,21 +38,22 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
               max_frames: int = 150, dpi: int = 70, fps: int = 10) -> Path:
     """Animate ``result``, the run of ``planner`` on ``scenario`` with ``seed`` recorded
     with ``record_cycles=True``, into a GIF at ``path``."""
-    if len(result.cycles) != result.steps:
+    trace, paths = result.trace, result.context.paths
+    if len(trace.cycles) != result.summary.steps:
         raise FgdwaError("write_gif replays the recorded cycles: run the episode with record_cycles=True")
     _, params = scenario_params(scenario, planner)
     _, world, _ = trial_variation(scenario, seed)
     footprint = scenario.footprint
     radius = footprint.radius
     window = scenario.window
-    steps = result.steps
+    steps = result.summary.steps
     frames = frame_indices(steps, max_frames)
 
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     draw_world(ax, dataclasses.replace(world, discs=(), movers=()), 0.0)
     # The global path in force at each frame (the navigator replans), from the recorded paths.
     (global_line,) = ax.plot([], [], "--", color="tab:red", linewidth=1.0)
-    path_starts = [cycle for cycle, _ in result.paths]
+    path_starts = [cycle for cycle, _ in paths]
     ax.plot(*np.asarray(scenario.goal)[:2], "*", color="tab:orange", markersize=13)
     ax.set_aspect("equal")
     if world.grid is not None:
@@ -69,7 +70,7 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
     sector = Wedge((0, 0), window.radius, 0, 0, facecolor="tab:cyan", edgecolor="tab:blue", alpha=0.18,
                    linestyle="--")
     ax.add_patch(sector)
-    body = footprint_patch(footprint, result.poses[0], facecolor="tab:blue", edgecolor="k", alpha=0.6, zorder=5)
+    body = footprint_patch(footprint, result.motion.poses[0], facecolor="tab:blue", edgecolor="k", alpha=0.6, zorder=5)
     ax.add_patch(body)
     (heading,) = ax.plot([], [], color="k", linewidth=1.2, zorder=6)
     discs = [Circle((0, 0), max(d.radius, 0.05), color="tab:purple", alpha=0.7, zorder=3)
@@ -79,7 +80,7 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
     label = ax.set_title("", fontsize=8)
     fig.tight_layout()
 
-    poses, dt = result.poses, params.dt
+    poses, dt = result.motion.poses, params.dt
 
     def draw(k):
         x, y, theta = poses[k]
@@ -96,10 +97,10 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
         for patch, disc in zip(discs, world.discs_at(t)):
             patch.center = tuple(disc.center)
         held = np.searchsorted(path_starts, k, side="right") - 1
-        points = np.asarray(result.paths[held][1]) if held >= 0 else np.zeros((0, 2))
+        points = np.asarray(paths[held][1]) if held >= 0 else np.zeros((0, 2))
         global_line.set_data(points[:, 0], points[:, 1]) if len(points) else global_line.set_data([], [])
         if k < steps:
-            cycle = result.cycles[k]
+            cycle = trace.cycles[k]
             hits.set_offsets(cycle.hits if len(cycle.hits) else np.zeros((0, 2)))
             fan_lines.set_segments([np.vstack([[x, y], r[:, :2]]) for r in cycle.rollouts])
             best = np.vstack([[x, y], cycle.chosen[:, :2]]) if len(cycle.chosen) else np.zeros((0, 2))
@@ -109,13 +110,13 @@ def write_gif(result: EpisodeResult, scenario: Scenario, path, planner=None, see
             fan_lines.set_segments([])
             chosen.set_data([], [])
         text = f"t = {t:5.2f} s  step {k}/{steps}"
-        if k < steps and result.cycles[k].mode not in ("Following", "Replanning"):
-            text += f"  {result.cycles[k].mode}"
-        for name, values in (("beta", result.beta), ("delta", result.delta), ("I", result.density)):
+        if k < steps and trace.cycles[k].mode not in ("Following", "Replanning"):
+            text += f"  {trace.cycles[k].mode}"
+        for name, values in (("beta", trace.beta), ("delta", trace.delta), ("I", trace.density)):
             if k < len(values) and np.isfinite(values[k]):
                 text += f"  {name} {values[k]:.2f}"
         if k == steps:
-            text += f"  {result.outcome}"
+            text += f"  {result.summary.outcome}"
         label.set_text(text)
         return [fan_lines, chosen, driven, hits, sector, body, heading, label, global_line, *discs]
 

@@ -3,13 +3,14 @@ compared metric by metric.
 
 An experiment runs ``trials`` trials of each of its planners; trial ``i`` uses
 seed ``base_seed + i`` for every planner, so the planners meet the same start
-jitter, moving-obstacle phases and lidar noise. Trials run in worker processes
-(``executor="local"``), on a dask.distributed cluster (``"dask"``) or in this
-process (``"serial"``); a trial's result depends only on its task, never on
-where it ran (the wall-clock planning time aside).
+jitter, moving-obstacle phases and lidar noise. Trials run through
+:func:`fgdwa.bench.runner.run_tasks`: in worker processes (``executor="local"``),
+on a dask.distributed cluster (``"dask"``) or in this process (``"serial"``); a
+trial's result depends only on its task, never on where it ran (the wall-clock
+planning time aside).
 
 The first planner of an experiment is the proposed one; every other planner
-is compared with it (``fgdwa.stats.compare``). Runs that did not reach the
+is compared with it (``fgdwa.bench.stats.compare``). Runs that did not reach the
 goal count in the finishing rate only: their time, steps, mileage and
 clearances are left out of the comparisons, as the paper leaves out GDWA's
 unfinished runs in Tables 15-18.
@@ -20,19 +21,16 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
-from typing import Callable, Iterable, Optional, Sequence, Union
+from typing import Iterable, Optional, Sequence, Union
 
 import numpy as np
 
-from fgdwa import stats
-from fgdwa.stats import SIGNIFICANCE, finishing_rate
 from fgdwa._core import FgdwaError
-from fgdwa.scenario import Scenario, run_scenario
-
-EXECUTORS = ("local", "dask", "serial")
-DEFAULT_WORKERS = 2
+from fgdwa.bench import stats
+from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
+from fgdwa.bench.stats import SIGNIFICANCE, finishing_rate
+from fgdwa.sim.scenario import Scenario, run_scenario
 
 
 @dataclass(frozen=True)
@@ -75,7 +73,7 @@ def planner_label(name: str) -> str:
 class Claim:
     """What the paper reports for one metric of the proposed planner against another.
 
-    ``paper_effect`` is in % as ``fgdwa.stats.effect_percent`` defines it (the
+    ``paper_effect`` is in % as ``fgdwa.bench.stats.effect_percent`` defines it (the
     sign gives the direction). ``kind`` "direction": our effect should have the
     same sign; "no_difference": the paper found none, so ours should not be
     significant."""
@@ -175,7 +173,7 @@ def resolve_scenario(source) -> Scenario:
         return scenario
     if not isinstance(source, str):
         raise FgdwaError(f"scenario = {source!r}: expected a name, a YAML path or text, a callable or a Scenario")
-    from fgdwa.scenario_file import load_scenario
+    from fgdwa.io.scenario_file import load_scenario
 
     return load_scenario(source)
 
@@ -225,12 +223,13 @@ def run_trial(task: TrialTask) -> TrialRecord:
     tic = time.perf_counter()
     result = run_scenario(scenario, task.planner, task.seed, **dict(task.options))
     wall = time.perf_counter() - tic
+    summary, trace = result.summary, result.trace
     return TrialRecord(
         experiment=task.experiment, planner=task.planner, trial=task.trial, seed=task.seed,
-        metrics=result.metrics(), wall_time=wall, poses=result.poses, cycle_times=result.cycle_times,
-        beta=result.beta, delta=result.delta, density=result.density, deviation=result.deviation,
-        global_path=result.global_path, key_nodes=result.key_nodes,
-        dt=result.sim_time / result.steps if result.steps else float("nan"),
+        metrics=result.metrics(), wall_time=wall, poses=result.motion.poses, cycle_times=trace.cycle_times,
+        beta=trace.beta, delta=trace.delta, density=trace.density, deviation=trace.deviation,
+        global_path=result.context.global_path, key_nodes=result.context.key_nodes,
+        dt=summary.sim_time / summary.steps if summary.steps else float("nan"),
     )
 
 
@@ -243,74 +242,11 @@ def trial_tasks(spec: ExperimentSpec, trials: int, base_seed: int = 0, options: 
             for i in range(int(trials)) for planner in spec.planners]
 
 
-def run_tasks(tasks: Sequence, executor: str = "local", scheduler: Optional[str] = None,
-              workers: int = DEFAULT_WORKERS, progress: bool = True, runner: Callable = run_trial,
-              label: str = "trials") -> list:
-    """Run the tasks and return their records in the tasks' order.
-
-    executor "local": a ProcessPoolExecutor of ``workers`` processes; "dask": a
-    dask.distributed Client at ``scheduler``, or a LocalCluster of ``workers``
-    single-threaded processes when no address is given; "serial": one after
-    another in this process. A progress bar (tqdm, on stderr) labelled ``label`` counts the tasks
-    (TrialTask by default, or whatever ``runner`` takes)."""
-    if executor not in EXECUTORS:
-        raise FgdwaError(f"executor = {executor!r}: expected one of {', '.join(EXECUTORS)}")
-    if scheduler is not None and executor != "dask":
-        raise FgdwaError(f"scheduler = {scheduler!r}: only the dask executor takes a scheduler address")
-    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
-        raise FgdwaError(f"workers = {workers!r}: must be an integer >= 1")
-    tasks = list(tasks)
-    if executor != "serial":
-        _check_picklable(tasks)
-    from tqdm import tqdm
-
-    results = [None] * len(tasks)
-    with tqdm(total=len(tasks), desc=label, unit="run", disable=not progress, leave=False,
-              dynamic_ncols=True) as bar:
-        if executor == "serial":
-            for i, task in enumerate(tasks):
-                results[i] = runner(task)
-                bar.update()
-        elif executor == "local":
-            with ProcessPoolExecutor(max_workers=int(workers)) as pool:
-                futures = {pool.submit(runner, task): i for i, task in enumerate(tasks)}
-                for future in as_completed(futures):
-                    results[futures[future]] = future.result()
-                    bar.update()
-        else:
-            _run_dask(tasks, scheduler, int(workers), bar, results, runner)
-    return results
-
-
-def _check_picklable(tasks: Sequence[TrialTask]) -> None:
-    for task in tasks:
-        if isinstance(getattr(task, "scenario", None), Scenario):
-            raise FgdwaError("a Scenario object cannot be sent to worker processes: give the experiment a "
-                             "scenario name, file or a module-level factory function, or use executor='serial'")
-
-
-def _run_dask(tasks, scheduler, workers, bar, results, runner) -> None:
-    try:
-        from dask.distributed import Client, LocalCluster
-        from dask.distributed import as_completed as dask_completed
-    except ImportError as error:  # pragma: no cover - dask is a dependency
-        raise FgdwaError(f"executor 'dask' needs dask[distributed]: {error}") from error
-    cluster = None
-    if scheduler is None:
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
-        client = Client(cluster)
-    else:
-        client = Client(scheduler)
-    try:
-        futures = client.map(runner, tasks, pure=False)
-        index = {future.key: i for i, future in enumerate(futures)}
-        for future in dask_completed(futures):
-            results[index[future.key]] = future.result()
-            bar.update()
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
+def check_portable(task: TrialTask) -> None:
+    """FgdwaError when a trial cannot be sent to a worker process: its scenario is a Scenario object."""
+    if isinstance(task.scenario, Scenario):
+        raise FgdwaError("a Scenario object cannot be sent to worker processes: give the experiment a "
+                         "scenario name, file or a module-level factory function, or use executor='serial'")
 
 
 # --------------------------------------------------------------------------------------------- results
@@ -484,7 +420,8 @@ def run_experiments(specs: Sequence[Union[ExperimentSpec, str]], trials: int = 1
             raise FgdwaError(f"experiment {spec!r}: expected one of {', '.join(EXPERIMENTS)} or an ExperimentSpec")
     tasks = [task for spec in specs for task in trial_tasks(spec, trials, base_seed, options)]
     tic = time.perf_counter()
-    records = run_tasks(tasks, executor=executor, scheduler=scheduler, workers=workers, progress=progress)
+    records = run_tasks(tasks, run_trial, executor=executor, scheduler=scheduler, workers=workers, progress=progress,
+                        check_task=check_portable)
     wall = time.perf_counter() - tic
     out = []
     for spec in specs:

@@ -1,8 +1,12 @@
-"""Episodes: a robot driven by a local planner through a world until it
-reaches the goal, collides, or runs out of steps (docs/algorithms.md, "Episodes and metrics").
+"""Episodes: a robot driven by the navigator through a world until it reaches
+the goal, collides, falls, or runs out of steps (docs/algorithms.md, "Episodes
+and metrics").
 
-The planner sees the world through a fast ``FieldClearance``; the simulator
-judges collisions with the exact FCL ``CollisionWorld``.
+``run_episode`` is the world's side of every cycle: it scans the true world,
+steps the :class:`fgdwa.Navigator`, moves the body (:mod:`fgdwa.sim.body`) and
+the discs, and asks the referee (:mod:`fgdwa.sim.referee`) whether the step
+touched anything. The planner sees the world through a fast ``FieldClearance``;
+the referee judges with the exact FCL ``CollisionWorld``.
 """
 
 from __future__ import annotations
@@ -17,7 +21,6 @@ import numpy as np
 from fgdwa._core import (
     CollisionWorld,
     DetectWindowParams,
-    Disc,
     DistanceField,
     FgdwaError,
     Footprint,
@@ -37,14 +40,14 @@ from fgdwa._core import (
     RobotState,
     Twist,
     planner_preset,
-    step,
-    wrap_angle,
+    unicycle_step,
 )
-from fgdwa.actuation import Body, body_settings, check_seed
 from fgdwa.global_planning import plan_global
 from fgdwa.mapping import check_mapping
-from fgdwa.metrics import DANGER_MARGIN, danger_point_clearance, danger_points, smoothness
-from fgdwa.world import MovingObstacle, World  # noqa: F401  (World is part of this module's API)
+from fgdwa.sim.body import Body, body_settings, check_seed
+from fgdwa.sim.referee import (DANGER_MARGIN, collides_during_step, danger_point_clearance, danger_points, falls,
+                               path_length, smoothness)
+from fgdwa.sim.world import World
 
 OUTCOMES = ("success", "collision", "fall", "failed", "timeout")
 SCAN_SEED_STRIDE = 1_000_003  # the lidar's seed in cycle k of a run with `seed`: seed * stride + k
@@ -65,58 +68,76 @@ class CycleTrace:
 
 
 @dataclass
-class EpisodeResult:
-    """The executed run and its metrics."""
+class EpisodeSummary:
+    """The scalar metrics of a run; ``EpisodeResult.metrics()`` is this as a dict."""
 
-    outcome: str
+    outcome: str  # one of OUTCOMES
     steps: int
     sim_time: float  # s, simulated
     planning_time: float  # s, wall clock spent choosing commands
     mileage: float  # m, length of the executed path
     min_clearance: float  # m, exact (FCL) clearance along the executed path
     mean_clearance: float  # m
-    poses: np.ndarray  # (steps + 1, 3) x, y, theta, start included: where the robot was
-    commands: np.ndarray  # (steps, 2) v, omega the wheels got (after latency, actuation noise, terrain)
-    clearances: np.ndarray  # (steps + 1,) m
     danger_clearance: float = float("nan")  # m, mean obstacle distance at the global path's danger points
     mean_deviation: float = float("nan")  # m, from the global path
     max_deviation: float = float("nan")  # m
     smoothness: float = 0.0  # rad/s, sum of |change of omega| between cycles
-    statuses: list = field(default_factory=list)  # per cycle: the planner's status, or the navigator's mode when it did not plan
-    modes: list = field(default_factory=list)  # per cycle: the navigator's mode (NavigatorMode names)
-    cycle_times: np.ndarray = field(default_factory=lambda: np.zeros(0))  # s, per cycle
-    last_plan: Optional[PlanResult] = None
-    last_rollouts: Optional[np.ndarray] = None  # (samples, n_steps, 3)
-    global_path: Optional[np.ndarray] = None  # (n, 2), when the planner followed one
-    key_nodes: Optional[np.ndarray] = None  # (k, 2) key-node positions
-    targets: Optional[np.ndarray] = None  # (steps, 2) the heading's target each cycle
-    density: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) I per cycle (nan unsensed)
-    deviation: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) D per cycle, m (nan without path)
-    beta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) clearance weight per cycle
-    delta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) similarity weight (nan without)
-    last_scan: Optional[object] = None  # the last cycle's Scan, when sensing
-    mapping: str = "known"  # "known": the planners had the map; "scan": they had the robot's own map
-    scan_map: Optional[np.ndarray] = None  # (rows, cols) the robot's map at the end, with mapping="scan"
-    paths: list = field(default_factory=list)  # (cycle, (n, 2) points) per global path followed, in order
-    cycles: list = field(default_factory=list)  # CycleTrace per cycle, with record_cycles=True
+
+
+@dataclass
+class Motion:
+    """What the robot did, step by step."""
+
+    poses: np.ndarray  # (steps + 1, 3) x, y, theta, start included: where the robot was
+    commands: np.ndarray  # (steps, 2) v, omega the wheels got (after latency, actuation noise, terrain)
+    clearances: np.ndarray  # (steps + 1,) m
     twists: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))  # (steps, 2) mean v, omega driven per cycle
     believed_poses: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))  # (steps + 1, 3) the odometry's
 
+
+@dataclass
+class PlannerTrace:
+    """What the navigator read and decided, cycle by cycle."""
+
+    statuses: list = field(default_factory=list)  # the planner's status, or the navigator's mode when it did not plan
+    modes: list = field(default_factory=list)  # the navigator's mode (NavigatorMode names)
+    cycle_times: np.ndarray = field(default_factory=lambda: np.zeros(0))  # s
+    targets: Optional[np.ndarray] = None  # (steps, 2) the heading's target
+    density: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) I (nan unsensed)
+    deviation: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) D, m (nan without path)
+    beta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) clearance weight
+    delta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) similarity weight (nan without)
+    cycles: list = field(default_factory=list)  # CycleTrace per cycle, with record_cycles=True
+
+
+@dataclass
+class NavigationContext:
+    """The paths and the map the navigator worked with, and its last cycle."""
+
+    mapping: str = "known"  # "known": the planners had the map; "scan": they had the robot's own map
+    global_path: Optional[np.ndarray] = None  # (n, 2), the path followed at the end, when the planner followed one
+    key_nodes: Optional[np.ndarray] = None  # (k, 2) its key-node positions
+    paths: list = field(default_factory=list)  # (cycle, (n, 2) points) per global path followed, in order
+    scan_map: Optional[np.ndarray] = None  # (rows, cols) the robot's map at the end, with mapping="scan"
+    last_plan: Optional[PlanResult] = None
+    last_rollouts: Optional[np.ndarray] = None  # (samples, n_steps, 3)
+    last_scan: Optional[object] = None  # the last cycle's Scan, when sensing
+
+
+@dataclass
+class EpisodeResult:
+    """The executed run: its metrics (``summary``), the robot's steps
+    (``motion``), the navigator's cycles (``trace``) and what it navigated by
+    (``context``)."""
+
+    summary: EpisodeSummary
+    motion: Motion
+    trace: PlannerTrace = field(default_factory=PlannerTrace)
+    context: NavigationContext = field(default_factory=NavigationContext)
+
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
-        return {
-            "outcome": self.outcome,
-            "steps": self.steps,
-            "sim_time": self.sim_time,
-            "planning_time": self.planning_time,
-            "mileage": self.mileage,
-            "min_clearance": self.min_clearance,
-            "mean_clearance": self.mean_clearance,
-            "danger_clearance": self.danger_clearance,
-            "mean_deviation": self.mean_deviation,
-            "max_deviation": self.max_deviation,
-            "smoothness": self.smoothness,
-        }
+        return {f.name: getattr(self.summary, f.name) for f in dataclasses.fields(EpisodeSummary)}
 
 
 def _as_pose(value, name: str) -> np.ndarray:
@@ -131,101 +152,6 @@ def _as_point(value, name: str) -> np.ndarray:
     if point.shape != (2,) or not np.all(np.isfinite(point)):
         raise FgdwaError(f"{name}: expected a finite (x, y), got {value!r}")
     return point
-
-
-def path_length(points: np.ndarray) -> float:
-    """Length of a polyline given as (n, >=2) points."""
-    points = np.asarray(points, dtype=float)
-    if len(points) < 2:
-        return 0.0
-    return float(np.sum(np.hypot(*np.diff(points[:, :2], axis=0).T)))
-
-
-def _along_step(before, after, spacing: float, other_travel: float = 0.0):
-    """(f, x, y) along the straight part of a step, f in (0, 1], in pieces short
-    enough that the robot and something else moving ``other_travel`` metres in
-    the same step close at most ``spacing`` metres between two samples."""
-    x0, y0, x1, y1 = before[0], before[1], after[0], after[1]
-    pieces = max(1, int(np.ceil((np.hypot(x1 - x0, y1 - y0) + other_travel) / spacing)))
-    for i in range(1, pieces + 1):
-        f = i / pieces
-        yield f, x0 + f * (x1 - x0), y0 + f * (y1 - y0)
-
-
-def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, after, t: float, dt: float,
-                         spacing: float = 0.05, discs_at=None, start_clearance: Optional[float] = None) -> bool:
-    """Whether the footprint touches an obstacle anywhere along one step,
-    whoever moves into whom.
-
-    A step turns first and then moves straight along the new heading. The turn
-    is swept at the start position (a polygon's outline moves; a circle's does
-    not): each heading's exact clearance bounds how far the outline may turn
-    before it could touch, so a contact deeper than ``TURN_RESOLUTION`` rad
-    times the footprint's radius is never missed. The drive is checked at
-    instants of the step close enough that neither the robot nor any disc moves
-    more than ``spacing`` metres between two of them together: the robot's
-    position lies on the segment from ``before`` to ``after``, and the discs are
-    where ``discs_at(time)`` puts them (the truth's own discs are restored
-    afterwards) or, without it, the truth's discs moved at their velocities.
-    ``start_clearance``, when given, is the truth's clearance of the footprint
-    at ``before`` at time ``t`` (as ``truth.clearance`` gives it): the turn's
-    sweep starts from it instead of measuring it again.
-    """
-    if start_clearance is not None and (isinstance(start_clearance, bool) or
-                                        not isinstance(start_clearance, (int, float, np.floating, np.integer))
-                                        or np.isnan(start_clearance)):
-        raise FgdwaError(f"start_clearance = {start_clearance!r}: must be a number (m, +inf when nothing is near) "
-                         "or None")
-    if discs_at is None:
-        discs = truth.discs
-        return _step_collides(truth, footprint, before, after, t, dt, spacing, _disc_travel(discs, dt), None,
-                              start_clearance)
-    # Copies: the truth hands out views of its own discs, which setting new ones overwrites.
-    kept = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
-    try:
-        travel = max(_disc_travel(discs_at(t), dt), _disc_travel(discs_at(t + dt), dt))
-        return _step_collides(truth, footprint, before, after, t, dt, spacing, travel, discs_at, start_clearance)
-    finally:
-        truth.discs = kept
-
-
-def _disc_travel(discs, dt: float) -> float:
-    """The farthest any of the discs moves in ``dt`` at its velocity, m."""
-    return max((float(np.hypot(*d.velocity)) * dt for d in discs), default=0.0)
-
-
-def _step_collides(truth, footprint, before, after, t, dt, spacing, disc_travel, discs_at, start_clearance) -> bool:
-    def clock(time: float) -> float:
-        """The time to query the truth at for the discs to be where they are at ``time``."""
-        if discs_at is None:
-            return time
-        truth.discs = discs_at(time)
-        return 0.0
-
-    if not footprint.is_circle and _turn_collides(truth, footprint, before, after[2], clock(t), start_clearance):
-        return True
-    return any(truth.in_collision(footprint, (x, y, after[2]), clock(t + f * dt))
-               for f, x, y in _along_step(before, after, spacing, disc_travel))
-
-
-TURN_RESOLUTION = 1e-3  # rad, the smallest heading step of the referee's turn sweep
-
-
-def _turn_collides(truth: CollisionWorld, footprint: Footprint, before, heading: float, t: float,
-                   start_clearance: Optional[float] = None) -> bool:
-    turn = wrap_angle(heading - before[2])
-    turned = 0.0
-    while True:
-        if turned == 0.0 and start_clearance is not None:
-            clearance = start_clearance
-        else:
-            clearance = truth.clearance(footprint, (before[0], before[1], before[2] + np.copysign(turned, turn)), t)
-        if clearance <= 0.0:
-            return True
-        if turned >= abs(turn):
-            return False
-        # No point of the outline moves farther than radius x angle.
-        turned = min(abs(turn), turned + max(clearance / footprint.radius, TURN_RESOLUTION))
 
 
 @dataclass(frozen=True)
@@ -298,7 +224,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     ``LidarParams()``) hits.
 
     The robot's body is as honest as asked (all off by default; see
-    :class:`fgdwa.actuation.Body`): ``latency`` cycles pass before a command
+    :class:`fgdwa.sim.body.Body`): ``latency`` cycles pass before a command
     reaches the wheels (they keep the previous one meanwhile),
     ``actuation_noise`` (std_v m/s, std_omega rad/s) perturbs the command they
     get, ``actuation_lag`` (s) is the time constant with which (v, omega)
@@ -306,12 +232,12 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     turned) makes the pose the navigator believes wander from the true one: it
     gets the believed pose, its scans are taken from the true pose but placed at
     the believed one (so its map takes the error), while the referee (goal,
-    collision, fall, clearances, ``poses``) always uses the true pose;
-    ``believed_poses`` holds the odometry's. Every random draw (lidar noise and
+    collision, fall, clearances, ``motion.poses``) always uses the true pose;
+    ``motion.believed_poses`` holds the odometry's. Every random draw (lidar noise and
     dropped beams, actuation, odometry) comes from ``seed``: the same seed gives
     the same episode, bit for bit.
 
-    ``record_cycles`` keeps a :class:`CycleTrace` per cycle in ``cycles`` (the
+    ``record_cycles`` keeps a :class:`CycleTrace` per cycle in ``trace.cycles`` (the
     scored rollouts, the chosen one, the scan's hits): what the GIF replays.
     About 10 kB a cycle with a 541-beam lidar, so it is off for experiments.
     """
@@ -415,7 +341,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         factor = world.passing_factors[world.grade_at(position)]
         command = Twist(min(command.v, factor * limits.v_max), command.omega)
         driven = body.drive(command)
-        pose = step(pose, driven, dt)
+        pose = unicycle_step(pose, driven, dt)
         believed = body.odometry(believed, driven, pose)
         commands.append((command.v, command.omega))
         twists.append((driven.v, driven.omega))
@@ -430,7 +356,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
                                 start_clearance=None if world.has_moving else clearances[-2]):
             outcome = "collision"
             break
-        if world.terrain is not None and _falls(world, poses[-2], poses[-1]):
+        if world.terrain is not None and falls(world, poses[-2], poses[-1]):
             outcome = "fall"
             break
     else:
@@ -451,7 +377,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         danger = danger_point_clearance(poses_arr[:, :2], points, true_field)
     finite = clear_arr[np.isfinite(clear_arr)]
     steps = len(commands)
-    return EpisodeResult(
+    summary = EpisodeSummary(
         outcome=outcome,
         steps=steps,
         sim_time=steps * dt,
@@ -463,30 +389,37 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         mean_deviation=float(np.mean(deviations)) if len(deviations) else float("nan"),
         max_deviation=float(np.max(deviations)) if len(deviations) else float("nan"),
         smoothness=smoothness(np.array(commands, dtype=float).reshape(-1, 2)),
+    )
+    motion = Motion(
         poses=poses_arr,
         commands=np.array(commands, dtype=float).reshape(-1, 2),
+        clearances=clear_arr,
         twists=np.array(twists, dtype=float).reshape(-1, 2),
         believed_poses=np.array(believed_poses),
-        clearances=clear_arr,
+    )
+    trace = PlannerTrace(
         statuses=statuses,
         modes=modes,
         cycle_times=np.array(cycle_times),
-        last_plan=robot.plan_result if planned else None,
-        # The planner keeps its last cycle's rollouts: copied once, not every cycle.
-        last_rollouts=robot.planner.rollouts() if planned else None,
-        global_path=None if path is None else path.points,
-        key_nodes=None if path is None else path.points[robot.planner.key_nodes],
         targets=np.array(targets, dtype=float).reshape(-1, 2),
         density=np.array(density, dtype=float),
         deviation=np.array(deviation, dtype=float),
         beta=np.array(betas, dtype=float),
         delta=np.array(deltas, dtype=float),
-        last_scan=scan,
-        mapping=mapping,
-        scan_map=robot.map.cells if scanning else None,
-        paths=paths,
         cycles=cycles,
     )
+    context = NavigationContext(
+        mapping=mapping,
+        global_path=None if path is None else path.points,
+        key_nodes=None if path is None else path.points[robot.planner.key_nodes],
+        paths=paths,
+        scan_map=robot.map.cells if scanning else None,
+        last_plan=robot.plan_result if planned else None,
+        # The planner keeps its last cycle's rollouts: copied once, not every cycle.
+        last_rollouts=robot.planner.rollouts() if planned else None,
+        last_scan=scan,
+    )
+    return EpisodeResult(summary, motion, trace, context)
 
 
 def _trace(record, scan, n_steps: int) -> CycleTrace:
@@ -509,11 +442,6 @@ def _navigator_map(world: World, start, goal) -> OccupancyGrid:
     low = np.minimum(start[:2], goal) - margin
     size = np.ceil((np.maximum(start[:2], goal) + margin - low) / resolution).astype(int)
     return OccupancyGrid(np.zeros((size[1], size[0]), dtype=np.uint8), resolution, tuple(low))
-
-
-def _falls(world: World, before, after, spacing: float = 0.05) -> bool:
-    """Whether the robot's centre enters grade-4 terrain during a step."""
-    return any(world.grade_at((x, y)) >= 4 for _, x, y in _along_step(before, after, spacing))
 
 
 def _given_path(world: World, start, goal, footprint: Footprint, robot: Navigator, given, method: str,

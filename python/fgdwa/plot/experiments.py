@@ -15,10 +15,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.transforms import blended_transform_factory  # noqa: E402
 
-from fgdwa.experiments import METRIC_BY_KEY, ExperimentResult, TrialRecord, planner_label, resolve_scenario  # noqa: E402
-from fgdwa.plotting import draw_world, save_figure  # noqa: E402
-from fgdwa.report import fmt_p  # noqa: E402
-from fgdwa.stats import finite  # noqa: E402
+from fgdwa.bench.experiments import (METRIC_BY_KEY, ExperimentResult, TrialRecord, planner_label,  # noqa: E402
+                                     resolve_scenario)
+from fgdwa.bench.report import fmt_p  # noqa: E402
+from fgdwa.bench.stats import finite  # noqa: E402
+from fgdwa.plot.episode import draw_world, save_figure  # noqa: E402
+from fgdwa.plot.fuzzy import plot_control_surfaces  # noqa: E402
 
 DPI = 100
 COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown")
@@ -32,7 +34,7 @@ def _save(fig, path: Path) -> Path:
 def danger_points_of(scenario, global_path: np.ndarray) -> np.ndarray:
     """The global path's danger points, as the episodes compute them."""
     from fgdwa._core import DistanceField
-    from fgdwa.metrics import DANGER_MARGIN, danger_points
+    from fgdwa.sim.referee import DANGER_MARGIN, danger_points
 
     grid = scenario.world.true_grid()
     if grid is None or global_path is None:
@@ -43,7 +45,7 @@ def danger_points_of(scenario, global_path: np.ndarray) -> np.ndarray:
 def paths_figure(result: ExperimentResult, path: Path, trial: int = 0, scenario=None) -> Path:
     """The map with the global path, its key nodes and danger points, and every planner's
     executed path: trial ``trial`` bold, the other trials faint."""
-    from fgdwa.scenario import trial_variation
+    from fgdwa.sim.scenario import trial_variation
 
     scenario = scenario if scenario is not None else resolve_scenario(result.spec.scenario)
     first = result.record(result.spec.proposed, trial)
@@ -168,8 +170,6 @@ def experiment_figures(result: ExperimentResult, directory: Path, trial: int = 0
 
 def control_surfaces_figure(path: Path) -> Path:
     """The paper's fuzzy controller as control surfaces beta(I, D) and delta(I, D)."""
-    from fgdwa.fuzzy import plot_control_surfaces
-
     return _save(plot_control_surfaces("paper", None, points=41), path)
 
 

@@ -1,12 +1,12 @@
 """The dynamic benchmark ``fgdwa dynamic``: planners on DynaBARN-style fields
-of moving discs (:mod:`fgdwa.dynamic_fields`), scored by outcome and time.
+of moving discs (:mod:`fgdwa.io.dynamic_fields`), scored by outcome and time.
 
 One run is one field (level, seed) and one planner label. Each run loads the
 field's scenario document exactly as ``fgdwa run FILE`` loads the file, and
 runs it with ``run_scenario(scenario, preset, seed)``: the seed that made the
 field also draws the start's jitter, the discs' phases and the lidar's noise,
 so ``fgdwa run FIELD.yaml --planner PRESET --seed SEED`` replays a run. The
-outputs are those of ``fgdwa barn`` (:func:`fgdwa.barn_benchmark.write_run_outputs`):
+outputs are those of ``fgdwa barn`` (:func:`fgdwa.bench.runs.write_run_outputs`):
 runs.csv, summary.json, failures.png, plus the scenario file of every field a
 run failed on (``fields/``).
 """
@@ -22,14 +22,16 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from fgdwa._core import FgdwaError, NavigatorParams
-from fgdwa.barn_benchmark import BarnRun, check_sensing, format_table, run_timing, write_run_outputs
-from fgdwa.datasets.barn import parse_world_selection
-from fgdwa.dynamic_fields import (DROPOUT, NOISE_STD, check_field_seed, check_level, closed_route, field_name,
-                                  generate_field, write_field)
-from fgdwa.experiments import run_tasks
-from fgdwa.scenario import run_scenario, trial_variation
-from fgdwa.scenario_file import scenario_from_dict
+from fgdwa._core import NavigatorParams
+from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
+                                 check_executor_arguments, check_sensing, planner_list)
+from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
+from fgdwa.bench.runs import Run, episode_columns, format_table, paths_followed, write_run_outputs, written_files
+from fgdwa.io.barn_data import parse_world_selection
+from fgdwa.io.dynamic_fields import (DROPOUT, LEVELS, NOISE_STD, check_field_seed, check_level, closed_route,
+                                     field_name, generate_field, write_field)
+from fgdwa.io.scenario_file import scenario_from_dict
+from fgdwa.sim.scenario import run_scenario, trial_variation
 
 # A planner label -> (planner preset, NavigatorParams overrides). A variant of a
 # preset is one more row, e.g. "fgdwa-slow-replan": ("fgdwa", {"replan_period": 2.0}).
@@ -75,15 +77,7 @@ class DynamicTask:
 
 def check_variants(planners) -> list:
     """The planner labels (a list or comma-separated text), checked against PLANNER_VARIANTS, without repeats."""
-    if isinstance(planners, str):
-        planners = [p.strip() for p in planners.split(",") if p.strip()]
-    planners = list(dict.fromkeys(planners))
-    if not planners:
-        raise FgdwaError("planners: name at least one (e.g. fgdwa,dwb)")
-    for name in planners:
-        if name not in PLANNER_VARIANTS:
-            raise FgdwaError(f"planner {name!r} unknown (known: {', '.join(PLANNER_VARIANTS)})")
-    return planners
+    return planner_list(planners, PLANNER_VARIANTS)
 
 
 def parse_seeds(text) -> list:
@@ -113,7 +107,7 @@ def field_document(task: DynamicTask) -> dict:
     return generate_field(task.level, task.seed, task.setup.noise_std, task.setup.dropout)
 
 
-def run_dynamic_task(task: DynamicTask) -> BarnRun:
+def run_dynamic_task(task: DynamicTask) -> Run:
     """Run one task (in whatever process calls it)."""
     scenario = scenario_from_dict(field_document(task), where=field_name(task.level, task.seed))
     preset, overrides = PLANNER_VARIANTS[task.planner]
@@ -121,31 +115,27 @@ def run_dynamic_task(task: DynamicTask) -> BarnRun:
     result = run_scenario(scenario, preset, task.seed, navigator=NavigatorParams(**overrides),
                           latency=task.setup.latency)
     wall = time.perf_counter() - tic
-    row = {
-        "level": task.level, "seed": task.seed, "planner": task.planner, "outcome": result.outcome,
-        "success": int(result.outcome == "success"), "time": result.sim_time, "mileage": result.mileage,
-        "min_clearance": result.min_clearance, "replans": max(0, len(result.paths) - 1),
-        "backing_up": result.statuses.count("BackingUp"), **run_timing(wall, result.cycle_times), "wall_time": wall,
-    }
+    outcome = result.summary.outcome
+    row = {"level": task.level, "seed": task.seed, "planner": task.planner, "outcome": outcome,
+           "success": int(outcome == "success"), **episode_columns(result, wall)}
     _, world, _ = trial_variation(scenario, task.seed)
     grid = world.grid
     cells = (np.asarray(grid.cells) != 0).astype(np.uint8)
     if world.hidden is not None:
         cells[(cells == 0) & (np.asarray(world.hidden.cells) != 0)] = 2
-    paths = result.paths if result.paths else ([] if result.global_path is None else [(0, result.global_path)])
-    return BarnRun(row=row, cells=cells, extent=tuple(grid.extent), poses=result.poses, paths=paths,
-                   label=f"{task.level} seed {task.seed}",
-                   routes=[closed_route(m.waypoints, m.mode) for m in world.movers],
-                   discs=[(d.center[0], d.center[1], d.radius) for d in world.discs_at(result.sim_time)])
+    return Run(row=row, cells=cells, extent=tuple(grid.extent), poses=result.motion.poses,
+               paths=paths_followed(result), label=f"{task.level} seed {task.seed}",
+               routes=[closed_route(m.waypoints, m.mode) for m in world.movers],
+               discs=[(d.center[0], d.center[1], d.radius) for d in world.discs_at(result.summary.sim_time)])
 
 
 def run_dynamic(level: str, seeds: Sequence[int], planners: Sequence[str], setup: Optional[DynamicSetup] = None,
-                executor: str = "local", scheduler: Optional[str] = None, workers: int = 2,
+                executor: str = "local", scheduler: Optional[str] = None, workers: int = DEFAULT_WORKERS,
                 progress: bool = True) -> list:
-    """Every run, in task order (:func:`fgdwa.experiments.run_tasks` runs them)."""
+    """Every run, in task order (:func:`fgdwa.bench.runner.run_tasks` runs them)."""
     tasks = dynamic_tasks(level, seeds, planners, setup)
-    return run_tasks(tasks, executor=executor, scheduler=scheduler, workers=workers, progress=progress,
-                     runner=run_dynamic_task)
+    return run_tasks(tasks, run_dynamic_task, executor=executor, scheduler=scheduler, workers=workers,
+                     progress=progress)
 
 
 def replay_command(path, planner: str, seed: int, latency: int) -> str:
@@ -159,7 +149,7 @@ def replay_command(path, planner: str, seed: int, latency: int) -> str:
     return command
 
 
-def write_failed_fields(runs: Sequence[BarnRun], out_dir, setup: DynamicSetup) -> list:
+def write_failed_fields(runs: Sequence[Run], out_dir, setup: DynamicSetup) -> list:
     """Write the scenario file of every field a run failed on into ``out_dir``/fields;
     return one entry per failed run: planner, seed, outcome, file, replay command.
     Field files of the same levels that an earlier run left and no run failed on
@@ -188,8 +178,7 @@ def write_failed_fields(runs: Sequence[BarnRun], out_dir, setup: DynamicSetup) -
 
 def dynamic_command(args) -> int:
     """``fgdwa dynamic``: run, print the table, write the outputs."""
-    if args.scheduler is not None and args.executor != "dask":
-        raise FgdwaError("--scheduler needs --executor dask")
+    check_executor_arguments(args)
     level = check_level(args.level)
     seeds = parse_seeds(args.seeds)
     planners = check_variants(args.planners)
@@ -203,8 +192,7 @@ def dynamic_command(args) -> int:
             "failed": failed}
     summary = write_run_outputs(runs, args.out, RUN_FIELDS, head, figure=not args.no_figures, outcomes=OUTCOMES)
     print(format_table(summary, f"dynamic fields, level {level}, {describe_seeds(seeds)}", OUTCOMES))
-    print(f"{len(runs)} runs in {wall:.1f} s; wrote {Path(args.out) / 'runs.csv'}, summary.json"
-          + ("" if args.no_figures else ", failures.png")
+    print(written_files(runs, wall, args.out, figure=not args.no_figures)
           + (f", {len({f['file'] for f in failed})} field file(s) of failed runs in {Path(args.out) / 'fields'}"
              if failed else ""))
     return 0
@@ -223,9 +211,6 @@ def generate_command(args) -> int:
 def register_dynamic_commands(subparsers) -> None:
     """Add ``dynamic`` (run the benchmark) and ``dynamic generate`` to an argparse
     sub-parser set; the handlers are stored as ``func(args, argv) -> int``."""
-    from fgdwa.barn_cli import add_executor_arguments, add_output_arguments, add_sensing_arguments
-    from fgdwa.dynamic_fields import LEVELS
-
     dynamic = subparsers.add_parser(
         "dynamic", help="run planners on DynaBARN-style fields of moving discs (or: dynamic generate)",
         description="Run planners on fields of discs moving across the robot's way, unknown to the planner "

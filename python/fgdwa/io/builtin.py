@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from fgdwa._core import OccupancyGrid, TerrainGrid
-from fgdwa.scenario import Scenario
-from fgdwa.world import World
+from fgdwa.sim.scenario import Scenario
+from fgdwa.sim.world import World
 
 
 def _fill(cells: np.ndarray, resolution: float, x0: float, y0: float, x1: float, y1: float) -> None:

@@ -8,64 +8,39 @@ and the simulator. Outcomes follow the challenge (docs/barn.md): success is
 ending within the goal radius without collision before the time limit; the
 score is ``success * OT / clip(T, 2 OT, 8 OT)`` with T simulated time.
 
-:func:`run_barn` returns one :class:`BarnRun` per run; :func:`summarize`
-turns them into the per-planner table; :func:`write_barn_outputs` writes
-runs.csv, summary.json and failures.png (docs/barn.md, "Running the benchmark").
+:func:`run_barn` returns one :class:`fgdwa.bench.runs.Run` per run;
+:func:`write_barn_outputs` writes runs.csv, summary.json and failures.png
+(docs/barn.md, "Running the benchmark"). ``fgdwa barn`` and ``fgdwa barn
+import`` are registered by :func:`register_barn_commands`.
 """
 
 from __future__ import annotations
 
-import csv
 import dataclasses
-import json
 import math
 import time
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Optional, Sequence
 
 import numpy as np
 
 from fgdwa._core import (FgdwaError, LidarParams, NavigatorParams, OccupancyGrid, RobotLimits, planner_preset, preset_names,
                          robot_preset)
-from fgdwa.datasets.barn import BarnDataset, barn_score
-from fgdwa.experiments import run_tasks
-from fgdwa.mapping import check_mapping
-from fgdwa.report import json_safe
-from fgdwa.scenario import params_with
-from fgdwa.sim import run_episode
-from fgdwa.world import World
+from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
+                                 check_executor_arguments, check_sensing, planner_list)
+from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
+from fgdwa.bench.runs import (OUTCOMES, Run, episode_columns, format_table, paths_followed, write_run_outputs,
+                              written_files)
+from fgdwa.io.barn_convert import convert_barn_worlds
+from fgdwa.io.barn_data import BarnDataset, barn_score, describe_world_ids, find_barn_file, load_barn
+from fgdwa.mapping import MAPPING_MODES, check_mapping
+from fgdwa.sim.episode import run_episode
+from fgdwa.sim.scenario import params_with
+from fgdwa.sim.world import World
 
 BARN_PLANNERS = ("dwa", "gdwa", "sgdwa", "fgdwa", "dwb")
-OUTCOMES = ("success", "collision", "timeout")
 RUN_FIELDS = ("world", "planner", "mapping", "trial", "seed", "outcome", "success", "time", "score", "optimal_time",
               "mileage", "min_clearance", "replans", "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time")
-
-
-def run_timing(wall: float, cycle_times) -> dict:
-    """A run's cost per control cycle (ms): the Navigator's step (mean, 95th
-    percentile) and the simulator's own share, everything else the run's wall
-    time held (world, lidar, referee, set-up)."""
-    cycle_times = np.asarray(cycle_times, dtype=float)
-    if not len(cycle_times):
-        return {"cycle_ms_mean": float("nan"), "cycle_ms_p95": float("nan"), "sim_ms_mean": float("nan")}
-    return {"cycle_ms_mean": 1e3 * float(np.mean(cycle_times)),
-            "cycle_ms_p95": 1e3 * float(np.percentile(cycle_times, 95)),
-            "sim_ms_mean": 1e3 * max(0.0, wall - float(np.sum(cycle_times))) / len(cycle_times)}
-
-
-def check_sensing(owner: str, noise_std, dropout, latency) -> None:
-    """Checks a benchmark's lidar range noise (m), dropped-beam rate and command latency (cycles)."""
-    def number(value) -> bool:
-        return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool) \
-            and math.isfinite(value)
-
-    if not (number(noise_std) and noise_std >= 0):
-        raise FgdwaError(f"{owner}.noise_std = {noise_std!r}: must be a finite number >= 0 (m)")
-    if not (number(dropout) and 0 <= dropout < 1):
-        raise FgdwaError(f"{owner}.dropout = {dropout!r}: must be in [0, 1) (a probability)")
-    if isinstance(latency, bool) or not isinstance(latency, (int, np.integer)) or latency < 0:
-        raise FgdwaError(f"{owner}.latency = {latency!r}: must be an integer >= 0 (control cycles)")
 
 
 @dataclass(frozen=True)
@@ -149,30 +124,6 @@ class BarnTask:
     setup: BarnSetup = field(default_factory=BarnSetup)
 
 
-@dataclass
-class BarnRun:
-    """One run's row of runs.csv, plus the trace failures.png draws (the
-    dynamic benchmark's runs too: they add the movers' routes and discs)."""
-
-    row: dict
-    cells: np.ndarray  # (rows, cols) the world's grid (1: on the map, 2: missing from it)
-    extent: tuple  # (x0, x1, y0, y1) m, the grid's
-    poses: np.ndarray  # (steps + 1, 3)
-    paths: list  # (cycle, (n, 2) points) per global path followed
-    scan_map: Optional[np.ndarray] = None  # scan mode: the robot's map at the end
-    label: str = ""  # names the world in the figure; default "world <id>"
-    routes: list = field(default_factory=list)  # (k, 2) waypoints of each moving obstacle's route, closed
-    discs: list = field(default_factory=list)  # (x, y, radius) of each moving obstacle when the run ended
-
-    @property
-    def outcome(self) -> str:
-        return self.row["outcome"]
-
-    @property
-    def title(self) -> str:
-        return self.label or f"world {self.row['world']}"
-
-
 def barn_tasks(dataset: BarnDataset, world_ids: Sequence[int], planners: Sequence[str], mapping: str,
                trials: int = 1, base_seed: int = 0, setup: Optional[BarnSetup] = None) -> list:
     """One task per world, planner and trial (world-major, so a progress bar
@@ -197,19 +148,10 @@ def barn_tasks(dataset: BarnDataset, world_ids: Sequence[int], planners: Sequenc
 
 def check_planners(planners: Sequence[str]) -> list:
     """The planner names, checked against the presets, without repeats."""
-    if isinstance(planners, str):
-        planners = [p.strip() for p in planners.split(",") if p.strip()]
-    planners = list(dict.fromkeys(planners))
-    if not planners:
-        raise FgdwaError("planners: name at least one (e.g. fgdwa,dwb)")
-    known = preset_names()
-    for name in planners:
-        if name not in known:
-            raise FgdwaError(f"planner {name!r} unknown (known: {', '.join(known)})")
-    return planners
+    return planner_list(planners, preset_names())
 
 
-def run_barn_task(task: BarnTask) -> BarnRun:
+def run_barn_task(task: BarnTask) -> Run:
     """Run one task (in whatever process calls it)."""
     setup = task.setup
     preset = planner_preset(task.planner)
@@ -224,72 +166,26 @@ def run_barn_task(task: BarnTask) -> BarnRun:
                          navigator=setup.navigator(), latency=setup.latency)
     wall = time.perf_counter() - tic
     # The challenge knows three outcomes; running out of steps is its timeout.
-    outcome = result.outcome if result.outcome in OUTCOMES else "timeout"
+    outcome = result.summary.outcome if result.summary.outcome in OUTCOMES else "timeout"
     success = outcome == "success"
-    paths = result.paths if result.paths else ([] if result.global_path is None else [(0, result.global_path)])
     row = {
         "world": task.world_id, "planner": task.planner, "mapping": task.mapping, "trial": task.trial,
-        "seed": task.seed, "outcome": outcome, "success": int(success), "time": result.sim_time,
-        "score": barn_score(success, result.sim_time, task.optimal_time), "optimal_time": task.optimal_time,
-        "mileage": result.mileage, "min_clearance": result.min_clearance,
-        "replans": max(0, len(result.paths) - 1), "backing_up": result.statuses.count("BackingUp"),
-        **run_timing(wall, result.cycle_times), "wall_time": wall,
+        "seed": task.seed, "outcome": outcome, "success": int(success),
+        "score": barn_score(success, result.summary.sim_time, task.optimal_time), "optimal_time": task.optimal_time,
+        **episode_columns(result, wall),
     }
-    grid = world.grid
-    return BarnRun(row=row, cells=task.cells, extent=tuple(grid.extent), poses=result.poses, paths=paths,
-                   scan_map=result.scan_map)
+    return Run(row=row, cells=task.cells, extent=tuple(world.grid.extent), poses=result.motion.poses,
+               paths=paths_followed(result), scan_map=result.context.scan_map)
 
 
 def run_barn(dataset: BarnDataset, worlds="all", planners: Sequence[str] = BARN_PLANNERS, mapping: str = "known",
              trials: int = 1, base_seed: int = 0, setup: Optional[BarnSetup] = None, executor: str = "local",
-             scheduler: Optional[str] = None, workers: int = 2, progress: bool = True) -> list:
+             scheduler: Optional[str] = None, workers: int = DEFAULT_WORKERS, progress: bool = True) -> list:
     """Every run of the selection, in task order (see :func:`barn_tasks` and
-    :func:`fgdwa.experiments.run_tasks` for the executors)."""
+    :func:`fgdwa.bench.runner.run_tasks` for the executors)."""
     tasks = barn_tasks(dataset, dataset.select_ids(worlds), planners, mapping, trials, base_seed, setup)
-    return run_tasks(tasks, executor=executor, scheduler=scheduler, workers=workers, progress=progress,
-                     runner=run_barn_task)
-
-
-def summarize(runs: Sequence[BarnRun], outcomes: Sequence[str] = OUTCOMES) -> dict:
-    """Per planner, in order of first appearance: n, the rate of each outcome,
-    mean_time (s, successful runs; NaN when none), mean_score (all runs; when
-    the rows have a score) and the mean planning cycle (ms)."""
-    table = {}
-    for planner in dict.fromkeys(run.row["planner"] for run in runs):
-        rows = [run.row for run in runs if run.row["planner"] == planner]
-        n = len(rows)
-        times = [r["time"] for r in rows if r["success"]]
-        entry = {
-            "n": n,
-            **{outcome: sum(r["outcome"] == outcome for r in rows) / n for outcome in outcomes},
-            "mean_time": float(np.mean(times)) if times else float("nan"),
-        }
-        if all("score" in r for r in rows):
-            entry["mean_score"] = float(np.mean([r["score"] for r in rows]))
-        for key in ("cycle_ms_mean", "sim_ms_mean"):
-            if all(key in r for r in rows):
-                entry[key] = float(np.nanmean([r[key] for r in rows]))
-        table[planner] = entry
-    return table
-
-
-def format_table(summary: dict, title: str, outcomes: Sequence[str] = OUTCOMES) -> str:
-    """The terminal table of a :func:`summarize` summary: one line per planner."""
-    scored = all("mean_score" in s for s in summary.values())
-    header = f"{'planner':<14} {'n':>5}" + "".join(f" {o:>9}" for o in outcomes) + f" {'mean time':>10}"
-    simulated = all("sim_ms_mean" in s for s in summary.values())
-    header += f" {'mean score':>11}" * scored + f" {'cycle ms':>9}" + f" {'sim ms':>7}" * simulated
-    lines = [title, header]
-    for planner, s in summary.items():
-        mean_time = "-" if math.isnan(s["mean_time"]) else f"{s['mean_time']:.1f} s"
-        line = f"{planner:<14} {s['n']:>5}" + "".join(f" {s[o]:>9.3f}" for o in outcomes) + f" {mean_time:>10}"
-        if scored:
-            line += f" {s['mean_score']:>11.3f}"
-        line += f" {s['cycle_ms_mean']:>9.2f}"
-        if simulated:
-            line += f" {s['sim_ms_mean']:>7.2f}"
-        lines.append(line)
-    return "\n".join(lines)
+    return run_tasks(tasks, run_barn_task, executor=executor, scheduler=scheduler, workers=workers,
+                     progress=progress)
 
 
 def format_summary(summary: dict, mapping: str) -> str:
@@ -297,47 +193,16 @@ def format_summary(summary: dict, mapping: str) -> str:
     return format_table(summary, f"BARN, map {mapping}")
 
 
-def write_run_outputs(runs: Sequence[BarnRun], out_dir, fields: Sequence[str], head: dict, figure: bool = True,
-                      outcomes: Sequence[str] = OUTCOMES) -> dict:
-    """Write runs.csv (columns ``fields``), summary.json (``head`` then the
-    per-planner summary) and (``figure``) failures.png into ``out_dir``;
-    return the summary."""
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    with open(out / "runs.csv", "w", newline="") as handle:
-        writer = csv.DictWriter(handle, fieldnames=list(fields))
-        writer.writeheader()
-        for run in runs:
-            writer.writerow({k: _csv_value(run.row[k]) for k in fields})
-    summary = summarize(runs, outcomes)
-    document = {**head, "planners": json_safe(summary)}
-    (out / "summary.json").write_text(json.dumps(document, indent=2) + "\n")
-    if figure:
-        from fgdwa.barn_figures import plot_failures
-
-        plot_failures(runs, out / "failures.png")
-    return summary
-
-
-def write_barn_outputs(runs: Sequence[BarnRun], out_dir, mapping: str, meta: Optional[dict] = None,
+def write_barn_outputs(runs: Sequence[Run], out_dir, mapping: str, meta: Optional[dict] = None,
                        figure: bool = True) -> dict:
     """Write runs.csv, summary.json and (``figure``) failures.png into ``out_dir``;
     return the summary."""
     return write_run_outputs(runs, out_dir, RUN_FIELDS, {"mapping": mapping, **(meta or {})}, figure)
 
 
-def _csv_value(value):
-    if isinstance(value, float):
-        return "" if math.isnan(value) else f"{value:.6g}"
-    return value
-
-
 def barn_command(args) -> int:
     """``fgdwa barn``: run, print the table, write the outputs."""
-    from fgdwa.datasets.barn import find_barn_file, load_barn
-
-    if args.scheduler is not None and args.executor != "dask":
-        raise FgdwaError("--scheduler needs --executor dask")
+    check_executor_arguments(args)
     dataset = load_barn(find_barn_file(args.data))
     world_ids = dataset.select_ids(args.worlds)
     planners = check_planners(args.planners)
@@ -351,6 +216,51 @@ def barn_command(args) -> int:
             "setup": dataclasses.asdict(setup), "wall_time": wall}
     summary = write_barn_outputs(runs, args.out, args.mapping, meta, figure=not args.no_figures)
     print(format_summary(summary, args.mapping))
-    print(f"{len(runs)} runs in {wall:.1f} s; wrote {Path(args.out) / 'runs.csv'}, summary.json"
-          + ("" if args.no_figures else ", failures.png"))
+    print(written_files(runs, wall, args.out, figure=not args.no_figures))
     return 0
+
+
+def barn_import_command(world_dir: str, out: str, worlds: Optional[str] = None) -> int:
+    """``fgdwa barn import WORLD_DIR --out FILE [--worlds IDS]``: convert the
+    challenge's world and path files to a barn.npz-format file. Returns the exit
+    status; errors are raised as FgdwaError (the CLI prints them)."""
+    convert_barn_worlds(world_dir, out, worlds)
+    dataset = load_barn(out)  # what was written must load
+    print(f"wrote {out}: {len(dataset)} BARN worlds ({describe_world_ids(dataset.world_ids)}) from {world_dir}")
+    return 0
+
+
+def register_barn_commands(subparsers) -> None:
+    """Add ``barn`` (run the benchmark) and ``barn import`` to an argparse
+    sub-parser set (``parser.add_subparsers()``); the handlers are stored as
+    ``func(args, argv) -> int``, as fgdwa.cli expects."""
+    barn = subparsers.add_parser(
+        "barn", help="run planners on BARN worlds (or: barn import)",
+        description="Run planners on BARN worlds and score them as the BARN challenge does; "
+                    "`fgdwa barn import` makes the data file.")
+    barn.add_argument("--data", default=None, metavar="FILE",
+                      help="the barn.npz file (or its directory); default: $FGDWA_BARN_DATA")
+    barn.add_argument("--worlds", default="all", metavar="IDS",
+                      help="world ids: 'all' (default), '0,6,12', '0-49', '0-299:6'")
+    barn.add_argument("--planners", default="fgdwa,dwb", metavar="LIST",
+                      help="comma-separated planner presets (default fgdwa,dwb; the comparison set is "
+                           "dwa,gdwa,sgdwa,fgdwa,dwb)")
+    barn.add_argument("--map", dest="mapping", choices=list(MAPPING_MODES), default="known",
+                      help="known: the planners get the whole grid; scan: the robot maps what its lidar hits "
+                           "and replans on that (default known)")
+    barn.add_argument("--trials", type=int, default=1, help="runs per world and planner (default 1)")
+    barn.add_argument("--seed", type=int, default=0, help="base seed: trial i uses seed + i (lidar noise)")
+    add_sensing_arguments(barn, BarnSetup())
+    add_executor_arguments(barn)
+    add_output_arguments(barn, "out/barn", "runs.csv, summary.json, failures.png")
+    barn.set_defaults(func=lambda args, *_: barn_command(args))
+    barn_sub = barn.add_subparsers(dest="barn_command", required=False, metavar="{import}")
+    imp = barn_sub.add_parser(
+        "import", help="convert the BARN challenge's world_<i>.world and path_<i>.npy files to a barn.npz file")
+    imp.add_argument("world_dir", metavar="WORLD_DIR",
+                     help="directory with world_<i>.world, and path_<i>.npy beside them or in path_files/ "
+                          "(the challenge's jackal_helper/worlds/BARN)")
+    imp.add_argument("--out", required=True, metavar="FILE", help="the barn.npz file to write")
+    imp.add_argument("--worlds", default=None, metavar="IDS",
+                     help="world ids to convert: 'all' (default), '0,6,12', '0-49' or '0-299:6'")
+    imp.set_defaults(func=lambda args, *_: barn_import_command(args.world_dir, args.out, args.worlds))

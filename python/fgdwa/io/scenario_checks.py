@@ -10,11 +10,9 @@ from typing import Any
 
 from fgdwa._core import CollisionWorld, FgdwaError, Footprint
 from fgdwa.file_limits import clip, short_repr
-from fgdwa.world import World
-
-
-from fgdwa.scenario_maps import Layout
-from fgdwa.scenario_values import ValueReader
+from fgdwa.io.scenario_maps import Layout
+from fgdwa.io.scenario_values import ValueReader
+from fgdwa.sim.world import World
 
 
 class FeasibilityChecks(ValueReader):

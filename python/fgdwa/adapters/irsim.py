@@ -1,6 +1,6 @@
 """fgdwa as an IR-SIM behavior (docs/irsim.md).
 
-``import fgdwa.irsim`` registers the behavior ``fgdwa`` for IR-SIM's
+``import fgdwa.adapters.irsim`` registers the behavior ``fgdwa`` for IR-SIM's
 differential-drive robots. A world YAML then names it::
 
     robot:
@@ -56,8 +56,8 @@ from fgdwa._core import (
     planner_preset,
     preset_names,
 )
-from fgdwa.scenario import init_keywords, params_with
-from fgdwa.scenario_values import ValueReader, param_keys
+from fgdwa.io.scenario_values import ValueReader, param_keys
+from fgdwa.sim.scenario import init_keywords, params_with
 
 try:
     # IR-SIM prints every matplotlib backend it fails to load when imported;
@@ -67,7 +67,7 @@ try:
         from irsim.lib import register_behavior_class
         from irsim.lib.behavior.behavior_registry import behaviors_class_map
 except ImportError as error:  # pragma: no cover - depends on the environment
-    raise ImportError(f"fgdwa.irsim needs IR-SIM: pip install 'fgdwa[irsim]' ({error})") from error
+    raise ImportError(f"fgdwa.adapters.irsim needs IR-SIM: pip install 'fgdwa[irsim]' ({error})") from error
 
 BEHAVIOR = "fgdwa"
 MAPPINGS = ("auto", "known", "scan")

@@ -16,7 +16,7 @@ from collections import deque
 from dataclasses import dataclass
 import numpy as np
 
-from fgdwa._core import FgdwaError, Twist, step, wrap_angle
+from fgdwa._core import FgdwaError, Twist, unicycle_step, wrap_angle
 
 ACTUATION_STREAM = 1  # the second word of the actuators' generator seed: (seed, ACTUATION_STREAM)
 ODOMETRY_STREAM = 2
@@ -127,7 +127,7 @@ class Body:
         from ``believed``; the true pose itself when odometry does not drift."""
         if not self.drifts:
             return np.array([true_pose.x, true_pose.y, true_pose.theta])
-        pose = step(believed, driven, self.dt)
+        pose = unicycle_step(believed, driven, self.dt)
         std_xy, std_theta = self.settings.odometry_drift
         travelled, turned = abs(driven.v) * self.dt, abs(driven.omega) * self.dt
         ex, ey, etheta = self._odometry_rng.normal(

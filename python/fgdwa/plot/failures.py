@@ -12,7 +12,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from fgdwa.plotting import save_figure  # noqa: E402
+from fgdwa.plot.episode import save_figure  # noqa: E402
 
 OUTCOME_COLOURS = {"collision": "tab:red", "timeout": "tab:orange", "failed": "tab:brown", "success": "tab:green"}
 MAX_PANELS = 30

@@ -1,5 +1,5 @@
 """Converting the BARN challenge's files (Gazebo world_<i>.world and path_<i>.npy) into
-the barn.npz format that :mod:`fgdwa.datasets.barn` loads."""
+the barn.npz format that :mod:`fgdwa.io.barn_data` loads."""
 
 from __future__ import annotations
 
@@ -12,7 +12,8 @@ from typing import Iterable, List, NamedTuple, Optional, Tuple, Union
 import numpy as np
 
 from fgdwa._core import FgdwaError
-from fgdwa.datasets.barn import (
+from fgdwa.file_limits import load_npy, short_repr
+from fgdwa.io.barn_data import (
     _ALIGN_TOL,
     BARN_FIELD_SIZE,
     CYLINDER_RADIUS,
@@ -32,7 +33,6 @@ from fgdwa.datasets.barn import (
     TIME_LIMIT,
     parse_world_selection,
 )
-from fgdwa.file_limits import load_npy, short_repr
 
 
 class ConvertedWorld(NamedTuple):

@@ -1,0 +1,159 @@
+"""The referee of an episode: whether a step touched an obstacle or fell, and the
+metrics of the executed run (docs/algorithms.md, "Episodes and metrics").
+
+It judges with what really stands there (the exact FCL ``CollisionWorld`` and
+the true distance field), never with what the navigator believes.
+"""
+
+from __future__ import annotations
+
+from typing import Optional
+
+import numpy as np
+
+from fgdwa._core import CollisionWorld, Disc, DistanceField, FgdwaError, Footprint, wrap_angle
+from fgdwa.sim.world import World
+
+DANGER_MARGIN = 0.3  # m beyond the footprint's radius: the default danger clearance
+
+
+def danger_points(path: np.ndarray, static: DistanceField, danger_clearance: float, spacing: float = 1.0,
+                  step: float = 0.05) -> np.ndarray:
+    """Points of the global path whose static clearance is below ``danger_clearance`` (m).
+
+    The path is walked every ``step`` metres; of the points that qualify, one is
+    kept per ``spacing`` metres of path (Figures 17-18's circled spots).
+    """
+    path = np.asarray(path, dtype=float)
+    if len(path) < 2:
+        return np.zeros((0, 2))
+    legs = np.diff(path, axis=0)
+    lengths = np.hypot(legs[:, 0], legs[:, 1])
+    ends = np.concatenate([[0.0], np.cumsum(lengths)])
+    s = np.arange(0.0, ends[-1] + 1e-12, step)
+    x = np.interp(s, ends, path[:, 0])
+    y = np.interp(s, ends, path[:, 1])
+    points = np.column_stack([x, y])
+    near = static.distance(points) < danger_clearance
+    kept, last = [], -np.inf
+    for arc, point, flag in zip(s, points, near):
+        if flag and arc - last >= spacing:
+            kept.append(point)
+            last = arc
+    return np.array(kept).reshape(-1, 2)
+
+
+def danger_point_clearance(executed: np.ndarray, points: np.ndarray, static: DistanceField) -> float:
+    """Mean, over danger points, of the obstacle distance at the executed position nearest to each."""
+    executed = np.asarray(executed, dtype=float)[:, :2]
+    if len(points) == 0 or len(executed) == 0:
+        return float("nan")
+    nearest = np.argmin(np.hypot(executed[None, :, 0] - points[:, None, 0], executed[None, :, 1] - points[:, None, 1]),
+                        axis=1)
+    return float(np.mean(static.distance(executed[nearest])))
+
+
+def smoothness(commands: np.ndarray) -> float:
+    """Sum of |change of omega| between consecutive commands (rad/s)."""
+    commands = np.asarray(commands, dtype=float).reshape(-1, 2)
+    return float(np.sum(np.abs(np.diff(commands[:, 1])))) if len(commands) > 1 else 0.0
+
+
+def path_length(points: np.ndarray) -> float:
+    """Length of a polyline given as (n, >=2) points."""
+    points = np.asarray(points, dtype=float)
+    if len(points) < 2:
+        return 0.0
+    return float(np.sum(np.hypot(*np.diff(points[:, :2], axis=0).T)))
+
+
+def _along_step(before, after, spacing: float, other_travel: float = 0.0):
+    """(f, x, y) along the straight part of a step, f in (0, 1], in pieces short
+    enough that the robot and something else moving ``other_travel`` metres in
+    the same step close at most ``spacing`` metres between two samples."""
+    x0, y0, x1, y1 = before[0], before[1], after[0], after[1]
+    pieces = max(1, int(np.ceil((np.hypot(x1 - x0, y1 - y0) + other_travel) / spacing)))
+    for i in range(1, pieces + 1):
+        f = i / pieces
+        yield f, x0 + f * (x1 - x0), y0 + f * (y1 - y0)
+
+
+def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, after, t: float, dt: float,
+                         spacing: float = 0.05, discs_at=None, start_clearance: Optional[float] = None) -> bool:
+    """Whether the footprint touches an obstacle anywhere along one step,
+    whoever moves into whom.
+
+    A step turns first and then moves straight along the new heading. The turn
+    is swept at the start position (a polygon's outline moves; a circle's does
+    not): each heading's exact clearance bounds how far the outline may turn
+    before it could touch, so a contact deeper than ``TURN_RESOLUTION`` rad
+    times the footprint's radius is never missed. The drive is checked at
+    instants of the step close enough that neither the robot nor any disc moves
+    more than ``spacing`` metres between two of them together: the robot's
+    position lies on the segment from ``before`` to ``after``, and the discs are
+    where ``discs_at(time)`` puts them (the truth's own discs are restored
+    afterwards) or, without it, the truth's discs moved at their velocities.
+    ``start_clearance``, when given, is the truth's clearance of the footprint
+    at ``before`` at time ``t`` (as ``truth.clearance`` gives it): the turn's
+    sweep starts from it instead of measuring it again.
+    """
+    if start_clearance is not None and (isinstance(start_clearance, bool) or
+                                        not isinstance(start_clearance, (int, float, np.floating, np.integer))
+                                        or np.isnan(start_clearance)):
+        raise FgdwaError(f"start_clearance = {start_clearance!r}: must be a number (m, +inf when nothing is near) "
+                         "or None")
+    if discs_at is None:
+        discs = truth.discs
+        return _step_collides(truth, footprint, before, after, t, dt, spacing, _disc_travel(discs, dt), None,
+                              start_clearance)
+    # Copies: the truth hands out views of its own discs, which setting new ones overwrites.
+    kept = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
+    try:
+        travel = max(_disc_travel(discs_at(t), dt), _disc_travel(discs_at(t + dt), dt))
+        return _step_collides(truth, footprint, before, after, t, dt, spacing, travel, discs_at, start_clearance)
+    finally:
+        truth.discs = kept
+
+
+def _disc_travel(discs, dt: float) -> float:
+    """The farthest any of the discs moves in ``dt`` at its velocity, m."""
+    return max((float(np.hypot(*d.velocity)) * dt for d in discs), default=0.0)
+
+
+def _step_collides(truth, footprint, before, after, t, dt, spacing, disc_travel, discs_at, start_clearance) -> bool:
+    def clock(time: float) -> float:
+        """The time to query the truth at for the discs to be where they are at ``time``."""
+        if discs_at is None:
+            return time
+        truth.discs = discs_at(time)
+        return 0.0
+
+    if not footprint.is_circle and _turn_collides(truth, footprint, before, after[2], clock(t), start_clearance):
+        return True
+    return any(truth.in_collision(footprint, (x, y, after[2]), clock(t + f * dt))
+               for f, x, y in _along_step(before, after, spacing, disc_travel))
+
+
+TURN_RESOLUTION = 1e-3  # rad, the smallest heading step of the referee's turn sweep
+
+
+def _turn_collides(truth: CollisionWorld, footprint: Footprint, before, heading: float, t: float,
+                   start_clearance: Optional[float] = None) -> bool:
+    turn = wrap_angle(heading - before[2])
+    turned = 0.0
+    while True:
+        if turned == 0.0 and start_clearance is not None:
+            clearance = start_clearance
+        else:
+            clearance = truth.clearance(footprint, (before[0], before[1], before[2] + np.copysign(turned, turn)), t)
+        if clearance <= 0.0:
+            return True
+        if turned >= abs(turn):
+            return False
+        # No point of the outline moves farther than radius x angle.
+        turned = min(abs(turn), turned + max(clearance / footprint.radius, TURN_RESOLUTION))
+
+
+def falls(world: World, before, after, spacing: float = 0.05) -> bool:
+    """Whether the robot's centre enters grade-4 terrain during a step."""
+    return any(world.grade_at((x, y)) >= 4 for _, x, y in _along_step(before, after, spacing))
