@@ -4,8 +4,10 @@
 
 #include <sstream>
 
+#include "bind_params.hpp"
 #include "convert.hpp"
 #include "fgdwa/critics.hpp"
+#include "fgdwa/dwb_critics.hpp"
 
 namespace py = pybind11;
 using namespace fgdwa;
@@ -106,6 +108,14 @@ void init_critics(py::module_& m) {
       .value("Reward", CriticSense::Reward)
       .value("Cost", CriticSense::Cost);
   refuse_unnamed_values(critic_sense_enum);
+
+  // The built-in critics' parameters, given in a CriticConfig's params by these names.
+  bind_params<ClearanceParams>(m, "ClearanceParams", "The parameters of critic 'clearance'.");
+  bind_params<SimilarityParams>(m, "SimilarityParams", "The parameters of critic 'similarity'.");
+  bind_params<DwbObstacleParams>(m, "DwbObstacleParams", "The parameters of critic 'dwb_obstacle'.");
+  bind_params<DwbGridParams>(m, "DwbGridParams",
+                             "The parameters of the map-grid critics dwb_path_dist, dwb_goal_dist, dwb_path_align "
+                             "and dwb_goal_align (forward_point_distance: the align ones only).");
   py::class_<CriticConfig> config_class(m, "CriticConfig",
                                         "A critic by registered name, its weight, and its own parameters "
                                         "(e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).");

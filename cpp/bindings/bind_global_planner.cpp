@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "bind_params.hpp"
 #include "convert.hpp"
 #include "fgdwa/error.hpp"
 #include "fgdwa/global_planner.hpp"
@@ -13,13 +14,19 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 namespace {
-TerrainCost terrain_cost(double w_risk, py::handle risk) {
-  TerrainCost cost;
-  cost.w_risk = w_risk;
-  auto r = float_array(risk, "risk", 1, 4);
-  for (std::size_t g = 0; g < 4; ++g) cost.risk[g] = r.data()[g];
-  cost.validate();
-  return cost;
+
+// `params` (or the defaults) with the keyword arguments set on it by name, checked.
+template <class P>
+P params_with(std::optional<P> params, const py::kwargs& fields) {
+  P out = params.value_or(P{});
+  for (auto item : fields) set_param(out, py::str(item.first), item.second, P::kName);
+  out.validate();
+  return out;
+}
+
+std::optional<TerrainGrid> terrain_of(const TerrainGrid* terrain) {
+  if (!terrain) return std::nullopt;
+  return *terrain;
 }
 
 }  // namespace
@@ -57,25 +64,20 @@ void init_global_planner(py::module_& m) {
       "(rows, cols) uint8, 1 where a robot of that radius cannot centre: obstacles, cells nearer than the "
       "radius to one, and grade-4 terrain.");
 
+  bind_params<TerrainCost>(m, "TerrainCost", "Terrain risk in a global planner's cost: step length x (1 + w_risk x risk[grade]).");
+  bind_params<AStarParams>(m, "AStarParams", "Grid A*: inflation, simplification, terrain and unknown-cell costs.");
+  bind_params<OmplParams>(m, "OmplParams", "OMPL's planners: which, budget, seed, cost weights, output spacing.");
+
   py::class_<AStarPlanner>(m, "AStarPlanner",
                            "8-connected grid A* (octile heuristic, no corner cutting, inflated obstacles, optional "
                            "terrain cost = step length x (1 + w_risk x risk[grade])).")
-      .def(py::init([](const OccupancyGrid& grid, FloatArg inflation_radius, bool simplify, const TerrainGrid* terrain,
-                       FloatArg w_risk, py::handle risk, FloatArg unknown_cost) {
-             AStarParams params;
-             params.inflation_radius = to_float(inflation_radius, "inflation_radius");
-             params.simplify = simplify;
-             params.terrain = terrain_cost(to_float(w_risk, "w_risk"), risk);
-             params.unknown_cost = to_float(unknown_cost, "unknown_cost");
-             std::optional<TerrainGrid> t;
-             if (terrain) t = *terrain;
-             return AStarPlanner(grid, params, t);
+      .def(py::init([](const OccupancyGrid& grid, std::optional<AStarParams> params, const TerrainGrid* terrain,
+                       const py::kwargs& fields) {
+             return AStarPlanner(grid, params_with(std::move(params), fields), terrain_of(terrain));
            }),
-           py::arg("grid"), py::arg("inflation_radius") = 0.25, py::arg("simplify") = true,
-           py::arg("terrain") = nullptr, py::arg("w_risk") = 1.0,
-           py::arg("risk") = py::make_tuple(0.0, 0.5, 1.0, 2.0), py::arg("unknown_cost") = 0.0,
-           "unknown_cost: extra cost per metre through the cells set_unknown() marks (a step costs 1 + unknown_cost "
-           "times more).")
+           py::arg("grid"), py::arg("params") = py::none(), py::arg("terrain") = nullptr,
+           "params: AStarParams, or its fields as keywords (AStarPlanner(grid, inflation_radius=0.3, "
+           "terrain_cost={'w_risk': 2.0})); terrain: a TerrainGrid on the grid's layout.")
       .def(
           "set_unknown",
           [](AStarPlanner& p, py::object unknown) {
@@ -107,34 +109,20 @@ void init_global_planner(py::module_& m) {
   py::class_<OmplPlanner>(m, "OmplPlanner",
                           "OMPL's sampling-based planners over the same map, with a weighted cost of path length, "
                           "clearance and terrain risk; seeded and time-bounded.")
-      .def(py::init([](const OccupancyGrid& grid, const Footprint& footprint, const std::string& planner,
-                       FloatArg time_limit, FloatArg range, IntArg max_iterations, IntArg seed,
-                       py::object inflation_radius, FloatArg w_length, FloatArg w_clearance,
-                       FloatArg clearance_reference, const TerrainGrid* terrain, FloatArg w_risk, py::handle risk,
-                       bool simplify, FloatArg interpolation, bool verbose) {
-             OmplParams params;
-             params.planner = planner;
-             params.time_limit = to_float(time_limit, "time_limit");
-             params.range = to_float(range, "range");
-             params.max_iterations = to_int<std::uint32_t>(max_iterations, "max_iterations");
-             params.seed = to_int<std::uint32_t>(seed, "seed");
-             params.inflation_radius = inflation_radius.is_none() ? footprint.radius() : to_number(inflation_radius, "inflation_radius");
-             params.w_length = to_float(w_length, "w_length");
-             params.w_clearance = to_float(w_clearance, "w_clearance");
-             params.clearance_reference = to_float(clearance_reference, "clearance_reference");
-             params.terrain = terrain_cost(to_float(w_risk, "w_risk"), risk);
-             params.simplify = simplify;
-             params.interpolation = to_float(interpolation, "interpolation");
-             params.verbose = verbose;
-             std::optional<TerrainGrid> t;
-             if (terrain) t = *terrain;
-             return std::make_unique<OmplPlanner>(grid, footprint, params, t);
+      .def(py::init([](const OccupancyGrid& grid, const Footprint& footprint, std::optional<OmplParams> params,
+                       const TerrainGrid* terrain, const py::kwargs& fields) {
+             // Without a radius given, the footprint's own.
+             if (!params && !fields.contains("inflation_radius")) {
+               params = OmplParams{};
+               params->inflation_radius = footprint.radius();
+             }
+             return std::make_unique<OmplPlanner>(grid, footprint, params_with(std::move(params), fields),
+                                                  terrain_of(terrain));
            }),
-           py::arg("grid"), py::arg("footprint"), py::arg("planner") = "RRTstar", py::arg("time_limit") = 1.0,
-           py::arg("range") = 1.0, py::arg("max_iterations") = 0, py::arg("seed") = 0, py::arg("inflation_radius") = py::none(), py::arg("w_length") = 1.0,
-           py::arg("w_clearance") = 0.5, py::arg("clearance_reference") = 1.0, py::arg("terrain") = nullptr,
-           py::arg("w_risk") = 1.0, py::arg("risk") = py::make_tuple(0.0, 0.5, 1.0, 2.0), py::arg("simplify") = true,
-           py::arg("interpolation") = 0.1, py::arg("verbose") = false)
+           py::arg("grid"), py::arg("footprint"), py::arg("params") = py::none(), py::arg("terrain") = nullptr,
+           "params: OmplParams, or its fields as keywords (OmplPlanner(grid, footprint, planner='PRMstar', "
+           "time_limit=0.5)); without an inflation_radius, the footprint's radius; terrain: a TerrainGrid on the "
+           "grid's layout.")
       .def(
           "plan",
           [](const OmplPlanner& p, py::handle start, py::handle goal) {

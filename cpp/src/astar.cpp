@@ -19,22 +19,6 @@ const char* to_string(GlobalStatus status) {
   return "?";
 }
 
-void TerrainCost::validate() const {
-  detail::require_non_negative("w_risk", w_risk);
-  detail::require_at_most("w_risk", w_risk, 1e6);
-  for (std::size_t g = 0; g < risk.size(); ++g) {
-    detail::require_non_negative("risk[" + std::to_string(g) + "]", risk[g]);
-    detail::require_at_most("risk[" + std::to_string(g) + "]", risk[g], 1e6);
-  }
-}
-
-void AStarParams::validate() const {
-  detail::require_distance("inflation_radius", inflation_radius);
-  detail::require_non_negative("unknown_cost", unknown_cost);
-  detail::require_at_most("unknown_cost", unknown_cost, 1e6);
-  terrain.validate();
-}
-
 std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_radius, const TerrainGrid* terrain) {
   detail::require_distance("inflation_radius", inflation_radius);
   if (terrain && !terrain->matches(grid)) throw Error("terrain: its cells must match the occupancy grid's");
@@ -122,7 +106,7 @@ AStarPlanner::AStarPlanner(const OccupancyGrid& grid, const AStarParams& params,
 int AStarPlanner::grade(std::size_t cell) const { return terrain_ ? terrain_->grades()[cell] : 0; }
 
 double AStarPlanner::multiplier(std::size_t cell) const {
-  const double terrain = params_.terrain.multiplier(std::min(grade(cell), TerrainGrid::kMaxGrade - 1));
+  const double terrain = params_.terrain_cost.multiplier(std::min(grade(cell), TerrainGrid::kMaxGrade - 1));
   return !unknown_.empty() && unknown_[cell] ? terrain * (1.0 + params_.unknown_cost) : terrain;
 }
 
@@ -206,8 +190,8 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
   const double res = grid_.resolution();
   const std::size_t n = static_cast<std::size_t>(rows) * cols;
   const std::size_t start_cell = grid_.index(sr, sc), goal_cell = grid_.index(gr, gc);
-  double min_multiplier = params_.terrain.multiplier(0);
-  for (int g = 1; g < TerrainGrid::kMaxGrade; ++g) min_multiplier = std::min(min_multiplier, params_.terrain.multiplier(g));
+  double min_multiplier = params_.terrain_cost.multiplier(0);
+  for (int g = 1; g < TerrainGrid::kMaxGrade; ++g) min_multiplier = std::min(min_multiplier, params_.terrain_cost.multiplier(g));
   const auto heuristic = [&](int r, int c) {
     const double dr = std::abs(r - gr), dc = std::abs(c - gc);
     return res * min_multiplier * (std::max(dr, dc) + (M_SQRT2 - 1.0) * std::min(dr, dc));

@@ -18,22 +18,33 @@ double HeadingCritic::score(const Rollout& rollout) const {
   return M_PI - std::abs(angle_difference(bearing, last.theta));
 }
 
-ClearanceCritic::ClearanceCritic(double cap) : cap_(cap) { detail::require_positive("clearance cap", cap); }
+ClearanceCritic::ClearanceCritic(const ClearanceParams& params) : cap_(params.cap) { params.validate(); }
 
 double ClearanceCritic::score(const Rollout& rollout) const {
   return std::clamp(rollout.min_clearance, 0.0, cap_);
 }
 
-void SimilarityParams::validate() const {
-  detail::require_positive("v_ref_min", v_ref_min);
-  if (band < kNoBand) throw Error(detail::describe("band", band, "must be >= 0, or -1 for no band"));
+const char* to_string(ReferenceSpeed speed) {
+  switch (speed) {
+    case ReferenceSpeed::Current: return "current";
+    case ReferenceSpeed::Limit: return "limit";
+  }
+  return "?";
+}
+
+const char* to_string(DtwPrecision precision) {
+  switch (precision) {
+    case DtwPrecision::Single: return "single";
+    case DtwPrecision::Double: return "double";
+  }
+  return "?";
 }
 
 SimilarityCritic::SimilarityCritic(const SimilarityParams& params) : params_(params) { params_.validate(); }
 
 void SimilarityCritic::prepare(const CriticContext& context) {
   if (!context.path) throw Error("critic 'similarity' needs a global path");
-  const double v_ref = params_.speed == ReferenceSpeed::Limit ? std::max(context.v_max, params_.v_ref_min)
+  const double v_ref = params_.reference_speed == ReferenceSpeed::Limit ? std::max(context.v_max, params_.v_ref_min)
                                                              : std::max(context.state.twist.v, params_.v_ref_min);
   reference_samples(*context.path, context.state.pose.position(), v_ref, context.dt, context.n_steps,
                     params_.sampling, reference_);
@@ -117,20 +128,57 @@ namespace {
 using Params = std::map<std::string, double>;
 using Options = std::map<std::string, std::string>;
 
-std::string take_option(Options& options, const std::string& key, const std::string& fallback) {
-  auto it = options.find(key);
-  if (it == options.end()) return fallback;
-  const std::string value = it->second;
-  options.erase(it);
-  return value;
-}
+// A critic's parameters from its configuration's numbers and words, by its
+// schema: what is read is taken out, so what is left over was misspelt.
+template <class P>
+struct ConfigReader {
+  const std::string& critic;
+  Params& numbers;
+  Options& words;
+  P& out;
 
-double take(Params& params, const std::string& key, double fallback) {
-  auto it = params.find(key);
-  if (it == params.end()) return fallback;
-  const double value = it->second;
-  params.erase(it);
-  return value;
+  std::string where(const char* name) const { return "critic " + critic + ": " + name; }
+  void real(const char* name, double P::*member, const char*, Bounds, const char*) {
+    const auto it = numbers.find(name);
+    if (it == numbers.end()) return;
+    out.*member = it->second;
+    numbers.erase(it);
+  }
+  template <class I>
+  void integer(const char* name, I P::*member, const char*, Bounds bounds, const char*) {
+    const auto it = numbers.find(name);
+    if (it == numbers.end()) return;
+    const double x = it->second;
+    numbers.erase(it);
+    if (x != std::floor(x)) throw Error(detail::describe(where(name), x, "must be a whole number"));
+    if (!bounds.contains(x)) fail_param(where(name), x, bounds, "");
+    out.*member = static_cast<I>(x);
+  }
+  template <class E>
+  void choice(const char* name, E P::*member, const char*) {
+    const auto it = words.find(name);
+    if (it == words.end()) return;
+    const std::string word = it->second;
+    words.erase(it);
+    std::string known;
+    for (const E value : enum_values(E{})) {
+      if (word == to_string(value)) {
+        out.*member = value;
+        return;
+      }
+      known += (known.empty() ? "'" : ", '") + std::string(to_string(value)) + "'";
+    }
+    throw Error(where(name) + " = '" + word + "': expected one of " + known);
+  }
+};
+
+template <class P>
+P critic_params(const std::string& critic, Params& numbers, Options& words) {
+  P params;
+  ConfigReader<P> reader{critic, numbers, words, params};
+  P::fields(reader);
+  params.validate();
+  return params;
 }
 
 using Factory = CriticFactory;
@@ -140,65 +188,35 @@ std::mutex& registry_mutex() {
   return mutex;
 }
 
-std::unique_ptr<Critic> make_similarity(Params& p, Options& o) {
-  SimilarityParams params;
-  const std::string sampling = take_option(o, "sampling", "polyline");
-  if (sampling == "segment")
-    params.sampling = ReferenceSampling::Segment;
-  else if (sampling != "polyline")
-    throw Error("critic similarity: sampling = '" + sampling + "': expected 'polyline' or 'segment'");
-  const std::string speed = take_option(o, "reference_speed", "limit");
-  if (speed == "current")
-    params.speed = ReferenceSpeed::Current;
-  else if (speed != "limit")
-    throw Error("critic similarity: reference_speed = '" + speed + "': expected 'limit' or 'current'");
-  params.v_ref_min = take(p, "v_ref_min", params.v_ref_min);
-  const double band = take(p, "band", kNoBand);
-  if (band != std::floor(band)) throw Error(detail::describe("critic similarity: band", band, "must be a whole number"));
-  params.band = static_cast<int>(band);
-  const std::string precision = take_option(o, "precision", "single");
-  if (precision == "double")
-    params.precision = DtwPrecision::Double;
-  else if (precision != "single")
-    throw Error("critic similarity: precision = '" + precision + "': expected 'single' or 'double'");
-  return std::make_unique<SimilarityCritic>(params);
-}
-
-std::unique_ptr<Critic> make_dwb_obstacle(Params& p, Options& o) {
-  DwbObstacleParams params;
-  params.cost_scaling_factor = take(p, "cost_scaling_factor", params.cost_scaling_factor);
-  params.inflation_margin = take(p, "inflation_margin", params.inflation_margin);
-  const std::string aggregation = take_option(o, "aggregation", "last");
-  if (aggregation == "sum")
-    params.aggregation = DwbAggregation::Sum;
-  else if (aggregation != "last")
-    throw Error("critic dwb_obstacle: aggregation = '" + aggregation + "': expected 'last' or 'sum'");
-  return std::make_unique<DwbObstacleCritic>(params);
+// A critic of type T built from its parameters P.
+template <class T, class P>
+Factory made_from(const std::string& critic) {
+  return [critic](Params& p, Options& o) -> std::unique_ptr<Critic> {
+    return std::make_unique<T>(critic_params<P>(critic, p, o));
+  };
 }
 
 // The map-grid critics; only the align ones look ahead of the last pose.
-template <typename T>
-Factory dwb_grid(bool forward_point) {
-  return [forward_point](Params& p, Options&) -> std::unique_ptr<Critic> {
-    DwbGridParams params;
-    params.resolution = take(p, "resolution", params.resolution);
-    params.local_extent = take(p, "local_extent", params.local_extent);
-    if (forward_point) params.forward_point_distance = take(p, "forward_point_distance", params.forward_point_distance);
-    return std::make_unique<T>(params);
+template <class T>
+Factory dwb_grid(const std::string& critic, bool forward_point) {
+  return [critic, forward_point](Params& p, Options& o) -> std::unique_ptr<Critic> {
+    if (!forward_point && p.count("forward_point_distance"))
+      throw Error("critic '" + critic + "' has no parameter 'forward_point_distance'");
+    return std::make_unique<T>(critic_params<DwbGridParams>(critic, p, o));
   };
 }
 
 std::map<std::string, Factory>& registry() {
   static std::map<std::string, Factory> factories = {
       {"heading", [](Params&, Options&) { return std::make_unique<HeadingCritic>(); }},
-      {"clearance", [](Params& p, Options&) { return std::make_unique<ClearanceCritic>(take(p, "cap", 2.0)); }},
+      {"clearance", made_from<ClearanceCritic, ClearanceParams>("clearance")},
       {"velocity", [](Params&, Options&) { return std::make_unique<VelocityCritic>(); }},
-      {"similarity", make_similarity},
-      {"dwb_obstacle", make_dwb_obstacle},
-      {"dwb_path_dist", dwb_grid<DwbPathDistCritic>(false)},
-      {"dwb_goal_dist", dwb_grid<DwbGoalDistCritic>(false)},
-      {"dwb_path_align", dwb_grid<DwbPathAlignCritic>(true)},
-      {"dwb_goal_align", dwb_grid<DwbGoalAlignCritic>(true)},
+      {"similarity", made_from<SimilarityCritic, SimilarityParams>("similarity")},
+      {"dwb_obstacle", made_from<DwbObstacleCritic, DwbObstacleParams>("dwb_obstacle")},
+      {"dwb_path_dist", dwb_grid<DwbPathDistCritic>("dwb_path_dist", false)},
+      {"dwb_goal_dist", dwb_grid<DwbGoalDistCritic>("dwb_goal_dist", false)},
+      {"dwb_path_align", dwb_grid<DwbPathAlignCritic>("dwb_path_align", true)},
+      {"dwb_goal_align", dwb_grid<DwbGoalAlignCritic>("dwb_goal_align", true)},
   };
   return factories;
 }

@@ -19,9 +19,12 @@ void push_distinct(std::vector<Vec2>& points, const Vec2& p) {
 }
 }  // namespace
 
-void DwbObstacleParams::validate() const {
-  detail::require_positive("cost_scaling_factor", cost_scaling_factor);
-  detail::require_positive("inflation_margin", inflation_margin);
+const char* to_string(DwbAggregation aggregation) {
+  switch (aggregation) {
+    case DwbAggregation::Last: return "last";
+    case DwbAggregation::Sum: return "sum";
+  }
+  return "?";
 }
 
 double dwb_inflation_cost(double clearance, const DwbObstacleParams& params) {
@@ -52,11 +55,6 @@ double DwbObstacleCritic::score(const Rollout& rollout) const {
   return cost;
 }
 
-void DwbGridParams::validate() const {
-  detail::require_positive("resolution", resolution);
-  detail::require_positive("local_extent", local_extent);
-  detail::require_positive("forward_point_distance", forward_point_distance);
-}
 
 void dwb_local_path(const GlobalPath& path, const Vec2& robot, double half_extent, DwbLocalPath& out) {
   out.points.clear();

@@ -32,23 +32,15 @@ namespace og = ompl::geometric;
 
 namespace fgdwa {
 
-void OmplParams::validate() const {
+void OmplParams::check_relations(const ParamPath& path) const {
   const auto names = OmplPlanner::planner_names();
   if (std::find(names.begin(), names.end(), planner) == names.end()) {
     std::string known;
     for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-    throw Error("planner = '" + planner + "': unknown OMPL planner (known: " + known + ")");
+    fail_param(path.field("planner"), "'" + planner + "'", "unknown OMPL planner (known: " + known + ")");
   }
-  detail::require_positive("time_limit", time_limit);
-  detail::require_at_most("time_limit", time_limit, limits::kMaxHorizon);
-  detail::require_distance("range", range);
-  detail::require_distance("inflation_radius", inflation_radius);
-  detail::require_non_negative("w_length", w_length);
-  detail::require_non_negative("w_clearance", w_clearance);
-  detail::require_length("clearance_reference", clearance_reference);
-  detail::require_in_range("interpolation", interpolation, limits::kMinResolution, limits::kMaxLength);
-  terrain.validate();
-  if (w_length + w_clearance + terrain.w_risk <= 0.0) throw Error("OMPL cost: every weight is 0");
+  if (w_length + w_clearance + terrain_cost.w_risk <= 0.0)
+    fail_param(path.field("w_length"), std::to_string(w_length), "every weight of the cost (w_length, w_clearance, terrain_cost.w_risk) is 0");
 }
 
 namespace {
@@ -244,15 +236,15 @@ GlobalPlan OmplPlanner::plan(const Vec2& start, const Vec2& goal) const {
                                 pose_of),
                             im.params.w_clearance);
   }
-  if (im.terrain && im.params.terrain.w_risk > 0.0) {
+  if (im.terrain && im.params.terrain_cost.w_risk > 0.0) {
     objective->addObjective(std::make_shared<PoseCostObjective>(
                                 si,
                                 [&im](const Pose2& p) {
                                   const int g = std::min(im.terrain->grade_at(p.position()), TerrainGrid::kMaxGrade - 1);
-                                  return im.params.terrain.risk[static_cast<std::size_t>(g)];
+                                  return im.params.terrain_cost.risk[static_cast<std::size_t>(g)];
                                 },
                                 pose_of),
-                            im.params.terrain.w_risk);
+                            im.params.terrain_cost.w_risk);
   }
   objective->lock();
 

@@ -8,6 +8,14 @@
 
 namespace fgdwa {
 
+const char* to_string(ReferenceSampling sampling) {
+  switch (sampling) {
+    case ReferenceSampling::Segment: return "segment";
+    case ReferenceSampling::Polyline: return "polyline";
+  }
+  return "?";
+}
+
 GlobalPath::GlobalPath(std::vector<Vec2> points) {
   if (points.size() < 2)
     throw Error(detail::describe("global path points", points.size(), "a path needs at least 2 points"));

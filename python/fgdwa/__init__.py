@@ -6,7 +6,9 @@ episodes, scenarios, experiments and figures on top of it.
 """
 
 from fgdwa._core import (
+    AStarParams,
     AStarPlanner,
+    ClearanceParams,
     ClearanceSource,
     Cluster,
     CollisionWorld,
@@ -19,6 +21,8 @@ from fgdwa._core import (
     DetectWindowParams,
     Disc,
     DistanceField,
+    DwbGridParams,
+    DwbObstacleParams,
     FailureReason,
     FgdwaError,
     FieldClearance,
@@ -42,6 +46,7 @@ from fgdwa._core import (
     NavigatorParams,
     OccupancyGrid,
     OccupancyParams,
+    OmplParams,
     OmplPlanner,
     OrientedBox,
     PathProjection,
@@ -57,7 +62,9 @@ from fgdwa._core import (
     ScanMap,
     ScoredRollout,
     SegmentParams,
+    SimilarityParams,
     Status,
+    TerrainCost,
     TerrainGrid,
     Track,
     TrackStatus,
@@ -95,7 +102,9 @@ from fgdwa.global_planning import global_methods, plan_global  # noqa: E402
 __version__ = "0.1.0"
 
 __all__ = [
+    "AStarParams",
     "AStarPlanner",
+    "ClearanceParams",
     "ClearanceSource",
     "Cluster",
     "CollisionWorld",
@@ -108,6 +117,8 @@ __all__ = [
     "DetectWindowParams",
     "Disc",
     "DistanceField",
+    "DwbGridParams",
+    "DwbObstacleParams",
     "FailureReason",
     "FgdwaError",
     "FieldClearance",
@@ -131,6 +142,7 @@ __all__ = [
     "NavigatorParams",
     "OccupancyGrid",
     "OccupancyParams",
+    "OmplParams",
     "OmplPlanner",
     "OrientedBox",
     "PathProjection",
@@ -146,7 +158,9 @@ __all__ = [
     "ScanMap",
     "ScoredRollout",
     "SegmentParams",
+    "SimilarityParams",
     "Status",
+    "TerrainCost",
     "TerrainGrid",
     "Track",
     "TrackStatus",

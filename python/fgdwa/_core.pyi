@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarPlanner', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'Status', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
+__all__: list[str] = ['AStarParams', 'AStarPlanner', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -409,6 +409,210 @@ class CriticSense:
     @property
     def value(self) -> int:
         ...
+class ClearanceParams:
+    """
+    The parameters of critic 'clearance'.
+    
+    Keyword arguments, attributes (SI units, radians):
+      cap (m): clearance beyond which a rollout scores no higher (the detect window's radius)
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'clearance'
+    cap: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> ClearanceParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> ClearanceParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
+class SimilarityParams:
+    """
+    The parameters of critic 'similarity'.
+    
+    Keyword arguments, attributes (SI units, radians):
+      sampling: reference samples along the path's arc (polyline) or straight along its current segment (segment, Eq. 9 as written)
+      reference_speed: the samples' spacing is v_ref dt with v_ref the speed limit (limit) or the current speed (current, Eq. 9 as written)
+      v_ref_min (m/s): least v_ref: keeps the samples from collapsing at standstill
+      band: Sakoe-Chiba band of the DTW in samples (-1: the full DTW)
+      precision: arithmetic of the full DTW: single (vectorised float) or double (a banded one is double)
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'similarity'
+    band: typing.Any
+    precision: typing.Any
+    reference_speed: typing.Any
+    sampling: typing.Any
+    v_ref_min: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> SimilarityParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> SimilarityParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
+class DwbObstacleParams:
+    """
+    The parameters of critic 'dwb_obstacle'.
+    
+    Keyword arguments, attributes (SI units, radians):
+      cost_scaling_factor (1/m): decay of the cost with clearance (Nav2 local costmap's inflation layer)
+      inflation_margin (m): footprint clearance from which the cost is 0
+      aggregation: the last pose's cost (last, DWB's default) or every pose's summed (sum)
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'dwb_obstacle'
+    aggregation: typing.Any
+    cost_scaling_factor: typing.Any
+    inflation_margin: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> DwbObstacleParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> DwbObstacleParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
+class DwbGridParams:
+    """
+    The parameters of the map-grid critics dwb_path_dist, dwb_goal_dist, dwb_path_align and dwb_goal_align (forward_point_distance: the align ones only).
+    
+    Keyword arguments, attributes (SI units, radians):
+      resolution (m): cell size, the unit of the scores (Nav2's local costmap)
+      local_extent (m): half the side of the square window the local path lives in (Nav2's 3 m x 3 m rolling costmap)
+      forward_point_distance (m): ahead of the last pose, for the align critics (DWB's default)
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'dwb_grid'
+    forward_point_distance: typing.Any
+    local_extent: typing.Any
+    resolution: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> DwbGridParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> DwbGridParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
 class CriticConfig:
     """
     A critic by registered name, its weight, and its own parameters (e.g. CriticConfig('clearance', 0.15, {'cap': 2.0})).
@@ -733,13 +937,186 @@ class GlobalPlan:
     @property
     def status(self) -> GlobalStatus:
         ...
+class TerrainCost:
+    """
+    Terrain risk in a global planner's cost: step length x (1 + w_risk x risk[grade]).
+    
+    Keyword arguments, attributes (SI units, radians):
+      w_risk: weight of the terrain risk in the cost
+      risk: risk of grades 0-3 (grade 4 is impassable)
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'terrain_cost'
+    risk: typing.Any
+    w_risk: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> TerrainCost:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> TerrainCost:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
+class AStarParams:
+    """
+    Grid A*: inflation, simplification, terrain and unknown-cell costs.
+    
+    Keyword arguments, attributes (SI units, radians):
+      inflation_radius (m): cells nearer an obstacle than this are closed (usually the footprint's radius)
+      simplify: shortcut the cell path by line of sight
+      terrain_cost: step cost through terrain: length x (1 + w_risk x risk[grade])
+      unknown_cost: extra cost per metre through cells the map has not observed (set_unknown; 0: unknown is free)
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'astar'
+    inflation_radius: typing.Any
+    simplify: typing.Any
+    terrain_cost: typing.Any
+    unknown_cost: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> AStarParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> AStarParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
+class OmplParams:
+    """
+    OMPL's planners: which, budget, seed, cost weights, output spacing.
+    
+    Keyword arguments, attributes (SI units, radians):
+      planner: RRTstar, InformedRRTstar, PRMstar, BITstar or RRTConnect
+      time_limit (s): planning time budget
+      range (m): longest tree edge of the planners that have one (0: OMPL's default)
+      max_iterations: stop after this many planner iterations too (0: time only)
+      seed: with max_iterations binding, the same seed gives the same path (a time budget alone lets the machine's speed decide)
+      inflation_radius (m): for a circle footprint: cells nearer an obstacle than this are closed
+      w_length: weight of path length in the cost
+      w_clearance: weight of the clearance cost
+      clearance_reference (m): clearance beyond which a state costs nothing
+      terrain_cost: terrain risk in the cost (its weight: terrain_cost.w_risk)
+      simplify: OMPL's path simplifier
+      interpolation (m): spacing of the interpolated output path
+      verbose: OMPL's console output
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'ompl'
+    clearance_reference: typing.Any
+    inflation_radius: typing.Any
+    interpolation: typing.Any
+    max_iterations: typing.Any
+    planner: typing.Any
+    range: typing.Any
+    seed: typing.Any
+    simplify: typing.Any
+    terrain_cost: typing.Any
+    time_limit: typing.Any
+    verbose: typing.Any
+    w_clearance: typing.Any
+    w_length: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> OmplParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> OmplParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
 class AStarPlanner:
     """
     8-connected grid A* (octile heuristic, no corner cutting, inflated obstacles, optional terrain cost = step length x (1 + w_risk x risk[grade])).
     """
-    def __init__(self, grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing.SupportsIndex = 0.25, simplify: bool = True, terrain: TerrainGrid = None, w_risk: typing.SupportsFloat | typing.SupportsIndex = 1.0, risk: typing.Any = (0.0, 0.5, 1.0, 2.0), unknown_cost: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, grid: OccupancyGrid, params: AStarParams | None = None, terrain: TerrainGrid = None, **kwargs) -> None:
         """
-        unknown_cost: extra cost per metre through the cells set_unknown() marks (a step costs 1 + unknown_cost times more).
+        params: AStarParams, or its fields as keywords (AStarPlanner(grid, inflation_radius=0.3, terrain_cost={'w_risk': 2.0})); terrain: a TerrainGrid on the grid's layout.
         """
     def __repr__(self) -> str:
         ...
@@ -759,8 +1136,10 @@ class OmplPlanner:
     @staticmethod
     def planner_names() -> list[str]:
         ...
-    def __init__(self, grid: OccupancyGrid, footprint: Footprint, planner: str = 'RRTstar', time_limit: typing.SupportsFloat | typing.SupportsIndex = 1.0, range: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_iterations: typing.SupportsInt | typing.SupportsIndex = 0, seed: typing.SupportsInt | typing.SupportsIndex = 0, inflation_radius: typing.Any = None, w_length: typing.SupportsFloat | typing.SupportsIndex = 1.0, w_clearance: typing.SupportsFloat | typing.SupportsIndex = 0.5, clearance_reference: typing.SupportsFloat | typing.SupportsIndex = 1.0, terrain: TerrainGrid = None, w_risk: typing.SupportsFloat | typing.SupportsIndex = 1.0, risk: typing.Any = (0.0, 0.5, 1.0, 2.0), simplify: bool = True, interpolation: typing.SupportsFloat | typing.SupportsIndex = 0.1, verbose: bool = False) -> None:
-        ...
+    def __init__(self, grid: OccupancyGrid, footprint: Footprint, params: OmplParams | None = None, terrain: TerrainGrid = None, **kwargs) -> None:
+        """
+        params: OmplParams, or its fields as keywords (OmplPlanner(grid, footprint, planner='PRMstar', time_limit=0.5)); without an inflation_radius, the footprint's radius; terrain: a TerrainGrid on the grid's layout.
+        """
     def plan(self, start: typing.Any, goal: typing.Any) -> GlobalPlan:
         ...
 class Status:

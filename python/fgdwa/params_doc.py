@@ -5,11 +5,17 @@ from __future__ import annotations
 
 import math
 
-from fgdwa._core import DetectWindowParams, LidarParams, NavigatorParams, PlannerParams, RobotLimits
+from fgdwa._core import (AStarParams, ClearanceParams, DetectWindowParams, DwbGridParams, DwbObstacleParams, LidarParams,
+                         NavigatorParams, OmplParams, PlannerParams, RobotLimits, SimilarityParams)
 
 # The sets a robot program, the ROS node and scenario files configure, in the
 # order a newcomer meets them.
 PARAMETER_SETS = (RobotLimits, PlannerParams, NavigatorParams, DetectWindowParams, LidarParams)
+# The global planners' parameters (AStarPlanner, OmplPlanner, plan_global and a
+# scenario's global_planner options).
+GLOBAL_PARAMETER_SETS = (AStarParams, OmplParams)
+# The built-in critics' parameters, given in a critic's `params` in PlannerParams.critics.
+CRITIC_PARAMETER_SETS = (ClearanceParams, SimilarityParams, DwbObstacleParams, DwbGridParams)
 
 
 def _number(value: float) -> str:
@@ -58,14 +64,35 @@ def parameter_reference() -> str:
         "",
     ]
     for cls in PARAMETER_SETS:
-        lines += [f"## `{cls.name}`: `{cls.__name__}`", "",
-                  "| name | unit | bounds | default | meaning |", "|---|---|---|---|---|"]
-        for entry in cls.schema():
-            name = f"{cls.name}/{entry['name'].replace('.', '/')}"
-            if entry["type"] == "group":
-                lines.append(f"| **`{name}/`** | | | | {entry['doc']} |")
-                continue
-            lines.append(f"| `{name}` | {entry['unit']} | {bounds_text(entry)} | {default_text(entry)} | "
-                         f"{entry['doc']} |")
-        lines.append("")
+        lines += [f"## `{cls.name}`: `{cls.__name__}`", ""] + _table(cls, f"{cls.name}/")
+    lines += [
+        "## Global planners' parameters",
+        "",
+        "`AStarPlanner(grid, params)` and `OmplPlanner(grid, footprint, params)` take these, or their",
+        "fields as keywords; so do `plan_global` and a scenario's `global_planner: {options: ...}`.",
+        "",
+    ]
+    for cls in GLOBAL_PARAMETER_SETS:
+        lines += [f"### `{cls.name}`: `{cls.__name__}`", ""] + _table(cls, f"{cls.name}/")
+    lines += [
+        "## Critics' parameters",
+        "",
+        "Given in a critic's `params` in `planner/critics`",
+        "(`{name: similarity, weight: 0.2, params: {band: 8}}`); a critic refuses a name it",
+        "does not have.",
+        "",
+    ]
+    for cls in CRITIC_PARAMETER_SETS:
+        lines += [f"### `{cls.name}`: `{cls.__name__}`", "", cls.__doc__.strip().splitlines()[0], ""] + _table(cls, "")
     return "\n".join(lines)
+
+
+def _table(cls, prefix: str) -> list:
+    lines = ["| name | unit | bounds | default | meaning |", "|---|---|---|---|---|"]
+    for entry in cls.schema():
+        name = prefix + entry["name"].replace(".", "/")
+        if entry["type"] == "group":
+            lines.append(f"| **`{name}/`** | | | | {entry['doc']} |")
+            continue
+        lines.append(f"| `{name}` | {entry['unit']} | {bounds_text(entry)} | {default_text(entry)} | {entry['doc']} |")
+    return lines + [""]

@@ -64,9 +64,9 @@ TEST(ClearanceCritic, ClipsToZeroAndTheCap) {
   EXPECT_EQ(critic.score(rollout_ending_at(poses, -0.2)), 0.0);
   EXPECT_EQ(critic.score(rollout_ending_at(poses, 2.5)), 2.0);
   EXPECT_EQ(critic.score(rollout_ending_at(poses, test::kInf)), 2.0);
-  EXPECT_EQ(ClearanceCritic(0.5).score(rollout_ending_at(poses, 0.7)), 0.5);
-  expect_error_naming([] { ClearanceCritic(0.0); }, "cap");
-  expect_error_naming([] { ClearanceCritic(-1.0); }, "cap");
+  EXPECT_EQ(ClearanceCritic(ClearanceParams{0.5}).score(rollout_ending_at(poses, 0.7)), 0.5);
+  expect_error_naming([] { ClearanceCritic(ClearanceParams{0.0}); }, "cap");
+  expect_error_naming([] { ClearanceCritic(ClearanceParams{-1.0}); }, "cap");
 }
 
 TEST(VelocityCritic, IsTheCommandedSpeed) {

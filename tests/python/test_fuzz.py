@@ -1406,7 +1406,8 @@ def test_astar(seed, inflation, w_risk, risk, unknown_cost, terrain, start, goal
         if terrain else None
     valid = within(inflation, 0.0, MAX_LENGTH) and within(w_risk, 0.0, 1e6) and all(within(r, 0.0, 1e6) for r in risk) \
         and within(unknown_cost, 0.0, 1e6)
-    out = attempt(fgdwa.AStarPlanner, grid, inflation, True, t, w_risk, risk, unknown_cost)
+    out = attempt(lambda: fgdwa.AStarPlanner(grid, terrain=t, inflation_radius=inflation, simplify=True,
+                                             terrain_cost={"w_risk": w_risk, "risk": risk}, unknown_cost=unknown_cost))
     if not expect(out, valid, "inflation_radius", "w_risk", "risk", "unknown_cost"):
         return
     planner = out.value
@@ -1452,8 +1453,8 @@ def ompl_kwargs(draw):
 def ompl_valid(kw):
     ir = kw["inflation_radius"]
     return (within(kw["time_limit"], 0.0, MAX_HORIZON) and kw["time_limit"] > 0 and within(kw["range"], 0.0, MAX_LENGTH)
-            and (ir is None or within(ir, 0.0, MAX_LENGTH)) and within(kw["w_length"], 0.0, INF)
-            and within(kw["w_clearance"], 0.0, INF) and within(kw["clearance_reference"], 0.0, MAX_LENGTH)
+            and (ir is None or within(ir, 0.0, MAX_LENGTH)) and within(kw["w_length"], 0.0, 1e6)
+            and within(kw["w_clearance"], 0.0, 1e6) and within(kw["clearance_reference"], 0.0, MAX_LENGTH)
             and kw["clearance_reference"] > 0 and within(kw["w_risk"], 0.0, 1e6)
             and within(kw["interpolation"], MIN_RES, MAX_LENGTH))
 
@@ -1467,7 +1468,10 @@ def test_ompl(kw, seed, planner, start, goal):
     grid = fgdwa.OccupancyGrid(cells, GRID_RES)
     known = fgdwa.OmplPlanner.planner_names()
     valid = ompl_valid(kw) and kw["max_iterations"] >= 0 and planner in known
-    out = attempt(fgdwa.OmplPlanner, grid, fgdwa.Footprint.circle(0.1), planner, **kw)
+    # OmplParams' fields: the risk weight sits in terrain_cost; no radius given is the footprint's.
+    fields = {k: v for k, v in kw.items() if k != "w_risk" and v is not None}
+    out = attempt(fgdwa.OmplPlanner, grid, fgdwa.Footprint.circle(0.1), planner=planner,
+                  terrain_cost={"w_risk": kw["w_risk"]}, **fields)
     if not expect(out, valid if not valid else None, "time_limit", "range", "inflation_radius", "w_",
                   "clearance_reference",
                   "interpolation", "planner", "max_iterations", "weight"):

@@ -52,8 +52,8 @@ def test_astar_cost_equals_dijkstra(seed):
             r, c = rng.integers(0, 35), rng.integers(0, 45)
             unknown[r:r + rng.integers(3, 12), c:c + rng.integers(3, 12)] = True
     unknown_cost = 2.0 if unknown.any() else 0.0
-    planner = fgdwa.AStarPlanner(grid, inflation_radius=0.12, terrain=terrain, w_risk=1.5, risk=RISK,
-                                 unknown_cost=unknown_cost)
+    planner = fgdwa.AStarPlanner(grid, inflation_radius=0.12, terrain=terrain,
+                                 terrain_cost={"w_risk": 1.5, "risk": RISK}, unknown_cost=unknown_cost)
     planner.set_unknown(unknown)
     blocked = planner.blocked.astype(bool)
     free = np.argwhere(~blocked)
@@ -155,9 +155,9 @@ def test_grade_four_is_impassable_and_risk_detours():
     grades[25:, 28:32] = 0
     grid = fgdwa.OccupancyGrid(cells, 0.1)
     terrain = fgdwa.TerrainGrid(grades, 0.1)
-    cautious = fgdwa.AStarPlanner(grid, inflation_radius=0.0, terrain=terrain, w_risk=10.0).plan((0.5, 0.5), (5.5, 0.5))
+    cautious = fgdwa.AStarPlanner(grid, inflation_radius=0.0, terrain=terrain, terrain_cost={"w_risk": 10.0}).plan((0.5, 0.5), (5.5, 0.5))
     assert cautious.path[:, 1].max() > 2.5  # goes round through the flat gap
-    bold = fgdwa.AStarPlanner(grid, inflation_radius=0.0, terrain=terrain, w_risk=0.0).plan((0.5, 0.5), (5.5, 0.5))
+    bold = fgdwa.AStarPlanner(grid, inflation_radius=0.0, terrain=terrain, terrain_cost={"w_risk": 0.0}).plan((0.5, 0.5), (5.5, 0.5))
     assert bold.path[:, 1].max() < 0.6
     grades[25:, 28:32] = 4
     grades[:25, 28:32] = 4
@@ -233,7 +233,7 @@ def test_plan_global_errors():
     with pytest.raises(fgdwa.FgdwaError, match="terrain"):
         fgdwa.AStarPlanner(grid, terrain=fgdwa.TerrainGrid(np.zeros((3, 3), np.uint8), 0.1))
     with pytest.raises(fgdwa.FgdwaError, match="risk"):
-        fgdwa.AStarPlanner(grid, risk=(0.0, -1.0, 0.0, 0.0))
+        fgdwa.AStarPlanner(grid, terrain_cost={"risk": (0.0, -1.0, 0.0, 0.0)})
     assert "astar" in global_methods() and "ompl:BITstar" in global_methods()
 
 

@@ -160,7 +160,7 @@ def test_rectangles_movers_and_sections():
           limits: {v_max: 0.8, omega_max: 1.5}
           footprint: {polygon: [[0.3, 0.2], [-0.2, 0.2], [-0.2, -0.2], [0.3, -0.2]]}
         planner: {preset: gdwa, overrides: {window: {n_v: 11}, critics: [{name: heading, weight: 0.5}, {name: velocity}]}}
-        global_planner: {method: astar, options: {w_risk: 2.0}}
+        global_planner: {method: astar, options: {terrain_cost: {w_risk: 2.0}}}
         lidar: {beams: 91, fov_deg: 180, max_range: 5.0}
         detect_window: {half_angle_deg: 45, radius: 1.5}
         variability: {start_xy_std: 0.0, start_theta_std_deg: 0.0, mover_phase: false, lidar_noise_std: 0.0}
@@ -177,7 +177,7 @@ def test_rectangles_movers_and_sections():
     assert scenario.start == (0.6, 0.6, 0.5)
     assert scenario.limits.v_max == 0.8 and not scenario.footprint.is_circle
     assert scenario.planner == "gdwa" and scenario.overrides["window.n_v"] == 11
-    assert scenario.global_options == {"w_risk": 2.0}
+    assert scenario.global_options == {"terrain_cost": {"w_risk": 2.0}}
     assert scenario.lidar.beams == 91 and scenario.window.half_angle == pytest.approx(math.radians(45))
     assert scenario.variability.mover_phase is False
     assert scenario.max_steps == 50 and scenario.goal_tolerance == 0.2
@@ -453,7 +453,7 @@ def test_constructor_keywords_are_the_schemas_fields():
     (TINY + "planner: {overrides: {critics: [{name: heading, weight: 1e300}]}}\n",
      "planner.overrides.critics[0].weight", "MAX_MAGNITUDE"),
     (TINY + "global_planner: {options: {inflation_radius: 1e300}}\n", "global_planner.options.inflation_radius",
-     "MAX_LENGTH"),
+     "must be <= 1e+06 (m)"),
     (TINY + "variability: {start_xy_std: 1e300}\n", "variability.start_xy_std", "MAX_LENGTH"),
 ])
 def test_numbers_over_their_limits_name_file_and_key(tmp_path, text, key, message):

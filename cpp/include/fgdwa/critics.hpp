@@ -22,6 +22,7 @@
 
 #include "fgdwa/dtw.hpp"
 #include "fgdwa/geometry.hpp"
+#include "fgdwa/params.hpp"
 #include "fgdwa/path.hpp"
 #include "fgdwa/robot.hpp"
 
@@ -103,10 +104,21 @@ class HeadingCritic : public Critic {
   Vec2 target_ = Vec2::Zero();
 };
 
+struct ClearanceParams {
+  double cap = 2.0;
+
+  static constexpr const char* kName = "clearance";
+  template <class V>
+  static void fields(V& v) {
+    v.real("cap", &ClearanceParams::cap, "m", Bounds::positive(), "clearance beyond which a rollout scores no higher (the detect window's radius)");
+  }
+  void validate() const { validate_params(*this); }
+};
+
 // The rollout's smallest clearance, clipped to [0, cap].
 class ClearanceCritic : public Critic {
  public:
-  explicit ClearanceCritic(double cap = 2.0);  // m, the detect-window radius
+  explicit ClearanceCritic(const ClearanceParams& params = {});
   std::string name() const override { return "clearance"; }
   double score(const Rollout& rollout) const override;
   double cap() const { return cap_; }
@@ -132,6 +144,8 @@ enum class ReferenceSpeed : std::uint8_t {
   // so similarity rewards keeping to the path without rewarding slowness.
   Limit,
 };
+const char* to_string(ReferenceSpeed speed);
+constexpr std::array<ReferenceSpeed, 2> enum_values(ReferenceSpeed) { return {ReferenceSpeed::Limit, ReferenceSpeed::Current}; }
 
 // The arithmetic of the full DTW (no band; a banded one is double).
 enum class DtwPrecision {
@@ -142,16 +156,29 @@ enum class DtwPrecision {
   // double, the reference the single-precision choice is tested against.
   Double,
 };
+const char* to_string(DtwPrecision precision);
+constexpr std::array<DtwPrecision, 2> enum_values(DtwPrecision) { return {DtwPrecision::Single, DtwPrecision::Double}; }
 
 // Eq. 11: 1 / (DTW(R, E) + 1) between the rollout's positions R and n reference
 // samples E of the global path, spaced by v_ref dt.
 struct SimilarityParams {
   ReferenceSampling sampling = ReferenceSampling::Polyline;
-  ReferenceSpeed speed = ReferenceSpeed::Limit;
-  double v_ref_min = 0.1;  // m/s, with ReferenceSpeed::Current: keeps E from collapsing at standstill
-  int band = kNoBand;      // Sakoe-Chiba band in samples, kNoBand for the full DTW
+  ReferenceSpeed reference_speed = ReferenceSpeed::Limit;
+  double v_ref_min = 0.1;
+  int band = kNoBand;
   DtwPrecision precision = DtwPrecision::Single;
-  void validate() const;
+
+  static constexpr const char* kName = "similarity";
+  template <class V>
+  static void fields(V& v) {
+    using P = SimilarityParams;
+    v.choice("sampling", &P::sampling, "reference samples along the path's arc (polyline) or straight along its current segment (segment, Eq. 9 as written)");
+    v.choice("reference_speed", &P::reference_speed, "the samples' spacing is v_ref dt with v_ref the speed limit (limit) or the current speed (current, Eq. 9 as written)");
+    v.real("v_ref_min", &P::v_ref_min, "m/s", Bounds::positive(limits::kMaxSpeed), "least v_ref: keeps the samples from collapsing at standstill");
+    v.integer("band", &P::band, "", Bounds::closed(kNoBand, limits::kMaxWindowSamples), "Sakoe-Chiba band of the DTW in samples (-1: the full DTW)");
+    v.choice("precision", &P::precision, "arithmetic of the full DTW: single (vectorised float) or double (a banded one is double)");
+  }
+  void validate() const { validate_params(*this); }
 };
 
 class SimilarityCritic : public Critic {

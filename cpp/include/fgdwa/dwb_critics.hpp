@@ -37,12 +37,23 @@ enum class DwbAggregation : std::uint8_t {
   Last,  // the last pose only: DWB's BaseObstacle with sum_scores false, its default
   Sum,   // every pose: sum_scores true
 };
+const char* to_string(DwbAggregation aggregation);
+constexpr std::array<DwbAggregation, 2> enum_values(DwbAggregation) { return {DwbAggregation::Last, DwbAggregation::Sum}; }
 
 struct DwbObstacleParams {
-  double cost_scaling_factor = 3.0;  // 1/m, decay of the cost with clearance (Nav2 local costmap's inflation layer)
-  double inflation_margin = 0.55;    // m of footprint clearance from which the cost is 0
+  double cost_scaling_factor = 3.0;
+  double inflation_margin = 0.55;
   DwbAggregation aggregation = DwbAggregation::Last;
-  void validate() const;
+
+  static constexpr const char* kName = "dwb_obstacle";
+  template <class V>
+  static void fields(V& v) {
+    using P = DwbObstacleParams;
+    v.real("cost_scaling_factor", &P::cost_scaling_factor, "1/m", Bounds::positive(), "decay of the cost with clearance (Nav2 local costmap's inflation layer)");
+    v.real("inflation_margin", &P::inflation_margin, "m", Bounds::positive(), "footprint clearance from which the cost is 0");
+    v.choice("aggregation", &P::aggregation, "the last pose's cost (last, DWB's default) or every pose's summed (sum)");
+  }
+  void validate() const { validate_params(*this); }
 };
 
 // Nav2's inflation cost, with distances counted from the footprint rather than
@@ -70,10 +81,19 @@ class DwbObstacleCritic : public Critic {
 };
 
 struct DwbGridParams {
-  double resolution = 0.05;    // m per cell, the unit of the scores (Nav2's local costmap)
-  double local_extent = 1.5;   // m, half the side of the square window the local path lives in (Nav2's 3 m x 3 m rolling costmap)
-  double forward_point_distance = 0.325;  // m ahead of the last pose, for the align critics (DWB's default)
-  void validate() const;
+  double resolution = 0.05;
+  double local_extent = 1.5;
+  double forward_point_distance = 0.325;
+
+  static constexpr const char* kName = "dwb_grid";
+  template <class V>
+  static void fields(V& v) {
+    using P = DwbGridParams;
+    v.real("resolution", &P::resolution, "m", Bounds::positive(), "cell size, the unit of the scores (Nav2's local costmap)");
+    v.real("local_extent", &P::local_extent, "m", Bounds::positive(), "half the side of the square window the local path lives in (Nav2's 3 m x 3 m rolling costmap)");
+    v.real("forward_point_distance", &P::forward_point_distance, "m", Bounds::positive(), "ahead of the last pose, for the align critics (DWB's default)");
+  }
+  void validate() const { validate_params(*this); }
 };
 
 // The part of the global path DWB's critics see: from the robot's projection

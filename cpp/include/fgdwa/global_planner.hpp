@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fgdwa/grid.hpp"
+#include "fgdwa/params.hpp"
 #include "fgdwa/robot.hpp"
 
 namespace fgdwa {
@@ -28,9 +29,16 @@ struct GlobalPlan {
 
 // Terrain risk in the cost: step length x (1 + w_risk x risk[grade]); grade 4 is impassable.
 struct TerrainCost {
-  double w_risk = 1.0;                            // weight of the risk
-  std::array<double, 4> risk = {0.0, 0.5, 1.0, 2.0};  // risk of grades 0-3
-  void validate() const;
+  double w_risk = 1.0;
+  std::array<double, 4> risk = {0.0, 0.5, 1.0, 2.0};
+
+  static constexpr const char* kName = "terrain_cost";
+  template <class V>
+  static void fields(V& v) {
+    v.real("w_risk", &TerrainCost::w_risk, "", Bounds::at_least(0, 1e6), "weight of the terrain risk in the cost");
+    v.reals("risk", &TerrainCost::risk, "", Bounds::at_least(0, 1e6), "risk of grades 0-3 (grade 4 is impassable)");
+  }
+  void validate() const { validate_params(*this); }
   double multiplier(int grade) const { return 1.0 + w_risk * risk[static_cast<std::size_t>(grade)]; }
 };
 
@@ -48,13 +56,21 @@ bool segment_free(const OccupancyGrid& layout, const Vec2& a, const Vec2& b,
                   const std::function<bool(int, int)>& free);
 
 struct AStarParams {
-  double inflation_radius = 0.25;  // m, usually the footprint's radius
-  bool simplify = true;            // shortcut the cell path by line of sight
-  TerrainCost terrain;
-  // Extra cost per metre through cells the map has not observed (set_unknown):
-  // a step into one costs (1 + unknown_cost) times more. 0: unknown is free.
+  double inflation_radius = 0.25;
+  bool simplify = true;
+  TerrainCost terrain_cost;
   double unknown_cost = 0.0;
-  void validate() const;
+
+  static constexpr const char* kName = "astar";
+  template <class V>
+  static void fields(V& v) {
+    using P = AStarParams;
+    v.real("inflation_radius", &P::inflation_radius, "m", Bounds::at_least(0), "cells nearer an obstacle than this are closed (usually the footprint's radius)");
+    v.flag("simplify", &P::simplify, "shortcut the cell path by line of sight");
+    v.group("terrain_cost", &P::terrain_cost, "step cost through terrain: length x (1 + w_risk x risk[grade])");
+    v.real("unknown_cost", &P::unknown_cost, "", Bounds::at_least(0, 1e6), "extra cost per metre through cells the map has not observed (set_unknown; 0: unknown is free)");
+  }
+  void validate() const { validate_params(*this); }
 };
 
 // 8-connected A* over cell centres with the octile heuristic. A diagonal step
@@ -96,21 +112,43 @@ class AStarPlanner {
 };
 
 struct OmplParams {
-  std::string planner = "RRTstar";  // RRTstar, InformedRRTstar, PRMstar, BITstar, RRTConnect
-  double time_limit = 1.0;          // s
-  double range = 1.0;               // m, longest tree edge of the planners that have one; 0 = OMPL's default
-  std::uint32_t max_iterations = 0; // stop after this many planner iterations too; 0 = time only
-  std::uint32_t seed = 0;           // with max_iterations binding, the same seed gives the same path; a time
-                                    // budget alone lets the machine's speed decide how far the search gets
-  double inflation_radius = 0.25;   // m, for a circle footprint
-  double w_length = 1.0;            // weight of path length in the cost
-  double w_clearance = 0.5;         // weight of the clearance cost
-  double clearance_reference = 1.0; // m, clearance beyond which a state costs nothing
-  TerrainCost terrain;              // weight of terrain risk is terrain.w_risk
-  bool simplify = true;             // OMPL's path simplifier
-  double interpolation = 0.1;       // m, spacing of the interpolated output path
-  bool verbose = false;             // OMPL's console output
-  void validate() const;
+  std::string planner = "RRTstar";
+  double time_limit = 1.0;
+  double range = 1.0;
+  std::uint32_t max_iterations = 0;
+  std::uint32_t seed = 0;
+  double inflation_radius = 0.25;
+  double w_length = 1.0;
+  double w_clearance = 0.5;
+  double clearance_reference = 1.0;
+  TerrainCost terrain_cost;
+  bool simplify = true;
+  double interpolation = 0.1;
+  bool verbose = false;
+
+  static constexpr const char* kName = "ompl";
+  template <class V>
+  static void fields(V& v) {
+    using P = OmplParams;
+    const Bounds count = Bounds::closed(0, 4294967295.0);
+    const Bounds weight = Bounds::at_least(0, 1e6);
+    v.text("planner", &P::planner, "RRTstar, InformedRRTstar, PRMstar, BITstar or RRTConnect");
+    v.real("time_limit", &P::time_limit, "s", Bounds::positive(limits::kMaxHorizon), "planning time budget");
+    v.real("range", &P::range, "m", Bounds::at_least(0), "longest tree edge of the planners that have one (0: OMPL's default)");
+    v.integer("max_iterations", &P::max_iterations, "", count, "stop after this many planner iterations too (0: time only)");
+    v.integer("seed", &P::seed, "", count, "with max_iterations binding, the same seed gives the same path (a time budget alone lets the machine's speed decide)");
+    v.real("inflation_radius", &P::inflation_radius, "m", Bounds::at_least(0), "for a circle footprint: cells nearer an obstacle than this are closed");
+    v.real("w_length", &P::w_length, "", weight, "weight of path length in the cost");
+    v.real("w_clearance", &P::w_clearance, "", weight, "weight of the clearance cost");
+    v.real("clearance_reference", &P::clearance_reference, "m", Bounds::positive(), "clearance beyond which a state costs nothing");
+    v.group("terrain_cost", &P::terrain_cost, "terrain risk in the cost (its weight: terrain_cost.w_risk)");
+    v.flag("simplify", &P::simplify, "OMPL's path simplifier");
+    v.real("interpolation", &P::interpolation, "m", Bounds::closed(limits::kMinResolution, limits::kMaxLength), "spacing of the interpolated output path");
+    v.flag("verbose", &P::verbose, "OMPL's console output");
+  }
+  // planner is one OMPL knows; some weight of the cost is positive.
+  void check_relations(const ParamPath& path) const;
+  void validate() const { validate_params(*this); }
 };
 
 // OMPL over the same inflated grid (and, for a polygon footprint, the exact

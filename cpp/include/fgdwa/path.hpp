@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <array>
 #include <vector>
 
 #include "fgdwa/geometry.hpp"
@@ -60,6 +61,10 @@ enum class ReferenceSampling : std::uint8_t {
   Segment,   // Eq. 9 as written: a straight line along the current segment
   Polyline,  // the same spacing walked along the path's arc length, turning its corners
 };
+const char* to_string(ReferenceSampling sampling);
+constexpr std::array<ReferenceSampling, 2> enum_values(ReferenceSampling) {
+  return {ReferenceSampling::Polyline, ReferenceSampling::Segment};
+}
 
 // E_i, i = 1..n: from the robot's projection P onto the path, i * v_ref * dt
 // further along the current segment's direction (Segment) or along the path

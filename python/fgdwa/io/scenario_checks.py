@@ -57,10 +57,13 @@ class FeasibilityChecks(ValueReader):
     def check_reachable(self, start: tuple, goal: tuple, value: Any, world: World, footprint: Footprint,
                         options: dict) -> None:
         """A* on the map, obstacles inflated as the episode's last resort does (the footprint's radius)."""
+        from fgdwa._core import AStarParams
         from fgdwa.global_planning import plan_global
 
         radius = options.get("inflation_radius", footprint.radius)
-        extra = {k: v for k, v in options.items() if k != "inflation_radius"}
+        # An OMPL scenario's options that A* shares (its terrain cost).
+        shared = {entry["name"] for entry in AStarParams.schema()} - {"inflation_radius"}
+        extra = {k: v for k, v in options.items() if k in shared}
         try:
             plan = plan_global(world.grid, start[:2], goal, method="astar", terrain=world.terrain,
                                inflation_radius=radius, **extra)

@@ -19,14 +19,11 @@ import os
 from pathlib import Path
 from typing import Any, Union
 
-import numpy as np
-
 from fgdwa._core import (
     DetectWindowParams,
     FgdwaError,
     Footprint,
     LidarParams,
-    OccupancyGrid,
     PlannerParams,
     RobotLimits,
     planner_preset,
@@ -35,7 +32,7 @@ from fgdwa._core import (
 from fgdwa.file_limits import clip, is_file, read_text
 from fgdwa.io.scenario_checks import FeasibilityChecks
 from fgdwa.io.scenario_maps import MapReader
-from fgdwa.io.scenario_values import is_number, join_key, parse_yaml, short_repr
+from fgdwa.io.scenario_values import join_key, parse_yaml, short_repr
 from fgdwa.sim.scenario import Scenario, Variability, params_with
 from fgdwa.sim.world import MOVER_MODES, MovingObstacle, World
 
@@ -50,8 +47,6 @@ _LIMIT_FIELDS = ("v_min", "v_max", "omega_max", "acc_v", "acc_omega", "brake_v",
 _LIMIT_BOUNDS = {"v_min": "MAX_SPEED", "v_max": "MAX_SPEED", "omega_max": "MAX_ANGULAR_RATE",
                  "acc_v": "MAX_ACCELERATION", "acc_omega": "MAX_ACCELERATION", "brake_v": "MAX_ACCELERATION",
                  "brake_omega": "MAX_ACCELERATION"}
-# The limit of each global planner option that has one narrower than MAX_MAGNITUDE.
-_GLOBAL_OPTION_LIMITS = {"time_limit": "MAX_DURATION", "inflation_radius": "MAX_LENGTH", "range": "MAX_LENGTH"}
 
 
 def shipped_scenarios() -> list:
@@ -152,7 +147,7 @@ class _Reader(MapReader, FeasibilityChecks):
         self.check_goal(goal, data["goal"], world, footprint, layout)
 
         planner, overrides = self.planner(data.get("planner"))
-        method, options = self.global_planner(data.get("global_planner"), grid)
+        method, options = self.global_planner(data.get("global_planner"))
         if method == "astar":
             self.check_reachable(start, goal, data["goal"], world, footprint, options)
         options_kw = {}
@@ -288,7 +283,7 @@ class _Reader(MapReader, FeasibilityChecks):
         self.rollouts(params, okey, value.get("overrides"))
         return preset, overrides
 
-    def global_planner(self, value: Any, grid: OccupancyGrid) -> tuple:
+    def global_planner(self, value: Any) -> tuple:
         from fgdwa import global_planning
 
         if value is None:
@@ -301,27 +296,19 @@ class _Reader(MapReader, FeasibilityChecks):
             self.fail(join_key(key, "method"), method, f"expected one of {', '.join(methods)}")
         okey = join_key(key, "options")
         raw = value.get("options") or {}
-        if not isinstance(raw, dict):
-            self.fail(okey, raw, "expected a mapping of planner options")
-        known = getattr(global_planning, "_ASTAR_OPTIONS" if method == "astar" else "_OMPL_OPTIONS", None)
-        known = sorted(set(known) - {"terrain", "footprint"}) if known is not None else None
-        if known is not None:
-            self.mapping(raw, okey, known)
-        probe = OccupancyGrid(np.zeros((4, 4), dtype=np.uint8), grid.resolution, grid.origin)
-        for name, item in raw.items():
-            fkey = join_key(okey, name)
-            if item is None or isinstance(item, dict):
-                self.fail(fkey, item, "expected a number, a boolean or a list of numbers")
-            for i, number in enumerate(self.count(item, fkey) if isinstance(item, list) else [item]):
-                if is_number(number):
-                    self.number(number, join_key(fkey, i) if isinstance(item, list) else fkey,
-                                limit=_GLOBAL_OPTION_LIMITS.get(name, "MAX_MAGNITUDE"))
-            if method == "astar":
-                self.core(fkey, item, lambda: global_planning.AStarPlanner(probe, **{name: item}))
-            else:
-                self.core(fkey, item, lambda: global_planning.OmplPlanner(
-                    probe, Footprint.circle(0.1), planner=method[len("ompl:"):], **{name: item}))
-        return method, dict(raw)
+        cls = global_planning.method_params(method)
+        # OMPL's planner is the method's name.
+        allowed = [entry["name"] for entry in cls.schema() if "." not in entry["name"] and entry["name"] != "planner"]
+        fields = self.param_fields(cls, raw, okey, allowed=allowed)
+        self.core(okey, raw, lambda: params_with(cls(), **fields))
+        options: dict = {}
+        for name, item in fields.items():
+            *groups, leaf = name.split(".")
+            target = options
+            for group in groups:
+                target = target.setdefault(group, {})
+            target[leaf] = item
+        return method, options
 
     def lidar(self, value: Any) -> LidarParams:
         # The noise and the dropped beams are the trials' variability.
