@@ -71,10 +71,9 @@ void init_path(py::module_& m) {
         const Vec2 q = p.point_at(s);
         return py::make_tuple(q.x(), q.y());
       }, py::arg("s"), "The point at arc length s metres (clamped to the path).")
-      .def("key_nodes", [](const GlobalPath& p, FloatArg min_turn_deg) {
-        return p.key_nodes(radians_from_degrees("min_turn_deg", to_float(min_turn_deg, "min_turn_deg"), 0.0, 180.0, true));
-      }, py::arg("min_turn_deg") = 10.0,
-           "Indices of the vertices where the path turns by more than min_turn_deg degrees, then the last vertex.")
+      .def("key_nodes", [](const GlobalPath& p, FloatArg min_turn) { return p.key_nodes(to_float(min_turn, "min_turn")); },
+           py::arg("min_turn") = KeyNodeParams{}.min_turn,
+           "Indices of the vertices where the path turns by more than min_turn (rad), then the last vertex.")
       .def("__len__", [](const GlobalPath& p) { return p.points().size(); })
       .def("__repr__", [](const GlobalPath& p) {
         std::ostringstream s;

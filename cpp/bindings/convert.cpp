@@ -127,18 +127,6 @@ py::dict to_dict(py::handle obj, const std::string& name) {
   return obj.cast<py::dict>();
 }
 
-double radians_from_degrees(const std::string& name, double degrees, double lo, double hi, bool hi_open) {
-  const auto text = [](double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
-  };
-  if (!(std::isfinite(degrees) && degrees >= lo && (hi_open ? degrees < hi : degrees <= hi)))
-    throw Error(name + " = " + text(degrees) + ": must lie in [" + text(lo) + ", " + text(hi) + (hi_open ? ")" : "]") +
-                " degrees");
-  return degrees * M_PI / 180.0;
-}
-
 Vec2 to_vec2(py::handle obj, const std::string& name) {
   if (py::isinstance<Pose2>(obj)) return obj.cast<Pose2>().position();
   const auto a = fixed<2>(obj, name);

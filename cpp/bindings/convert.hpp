@@ -116,9 +116,6 @@ void refuse_unnamed_values(py::enum_<E>& cls) {
           py::arg("value"));
 }
 
-// An angle given in degrees, checked in degrees (lo <= degrees <= hi; `hi_open`:
-// degrees < hi), so a refusal names the value as the user gave it; in radians.
-double radians_from_degrees(const std::string& name, double degrees, double lo, double hi, bool hi_open = false);
 
 Vec2 to_vec2(py::handle obj, const std::string& name);
 Pose2 to_pose(py::handle obj, const std::string& name);

@@ -665,9 +665,9 @@ class GlobalPath:
         """
         Distance in metres from the point to the path (D).
         """
-    def key_nodes(self, min_turn_deg: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> list[int]:
+    def key_nodes(self, min_turn: typing.SupportsFloat | typing.SupportsIndex = 0.17453292519943295) -> list[int]:
         """
-        Indices of the vertices where the path turns by more than min_turn_deg degrees, then the last vertex.
+        Indices of the vertices where the path turns by more than min_turn (rad), then the last vertex.
         """
     def point_at(self, s: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
         """

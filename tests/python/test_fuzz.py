@@ -961,7 +961,7 @@ def test_field_clearance_sensed_points(seed, points, res, pose):
 # =============================================================================================
 @fuzz(400)
 @given(points=points_arg(0, 10, -20.0, 20.0), probe=point_arg(-30.0, 30.0), s=hf(-5.0, 60.0),
-       turn=hf(0.0, 90.0), segment=st.one_of(st.integers(-3, 3), st.integers(0, 12), st.just(2**31 - 1),
+       turn=hf(0.0, 1.6), segment=st.one_of(st.integers(-3, 3), st.integers(0, 12), st.just(2**31 - 1),
                                              st.sampled_from([-(2**63) - 1, 2**64])))
 def test_global_path(points, probe, s, turn, segment):
     ran("path")
@@ -996,7 +996,7 @@ def test_global_path(points, probe, s, turn, segment):
         back = path.project(out.value)
         assert back.distance <= 1e-9 * (1 + np.max(np.abs(pts))), f"{out.call} = {out.value} is off the path"
     out = attempt(path.key_nodes, turn)
-    if expect(out, True if within(turn, 0.0, 179.0) else (False if not math.isfinite(turn) or turn < 0 else None),
+    if expect(out, True if within(turn, 0.0, MAX_LENGTH) else (False if not math.isfinite(turn) or turn < 0 else None),
               "min_turn", "turn"):
         nodes = out.value
         assert nodes and nodes[-1] == len(path) - 1 and nodes == sorted(set(nodes)) and nodes[0] >= 0, out.call

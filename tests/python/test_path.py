@@ -4,7 +4,7 @@ import pytest
 import fgdwa
 
 
-def key_nodes(points, angle=10.0):
+def key_nodes(points, angle=np.radians(10.0)):
     return fgdwa.GlobalPath(np.array(points, dtype=float)).key_nodes(angle)
 
 
@@ -16,7 +16,7 @@ def test_key_nodes_of_hand_made_polylines():
     assert key_nodes([[0, 0], [1, 0], [1, 0], [2, 0], [3, 0], [3, 2]]) == [3, 4]
     # A turn of 5 degrees is below the default 10.
     assert key_nodes([[0, 0], [1, 0], [2, np.tan(np.radians(5))]]) == [2]
-    assert key_nodes([[0, 0], [1, 0], [2, np.tan(np.radians(5))]], angle=4.0) == [1, 2]
+    assert key_nodes([[0, 0], [1, 0], [2, np.tan(np.radians(5))]], angle=np.radians(4.0)) == [1, 2]
 
 
 def test_projection_deviation_and_walking_on_a_vertical_segment():
