@@ -84,6 +84,8 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   for (const Disc& d : discs) d.validate();
   const Vec2 position = state.pose.position();
   const int version_before = route_.version();
+  // Read before the record takes this cycle: whether the last cycle's planner rejected every sample.
+  const bool rejected_all = record_.planned && record_.control.status == Status::NoAdmissibleVelocity;
   record_.time = time;
   record_.state = state;
   record_.planned = false;
@@ -102,7 +104,6 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
 
   // Recovery, then the route the planner drives on.
   tic = Clock::now();
-  const bool rejected_all = record_.planned && record_.control.status == Status::NoAdmissibleVelocity;
   const RecoveryStep recovery = recovery_.step(state, goal_, controller_.world(), seen.movers, rejected_all);
   if (recovery.give_up_ahead) route_.give_up_ahead(position, controller_.sensed_points(), world_.map());
   if (recovery.replan) route_.request_replan();
