@@ -16,7 +16,11 @@ void init_controller(py::module_& m) {
       .def_readonly("sample", &ScoredRollout::sample)
       .def_readonly("command", &ScoredRollout::command)
       .def_readonly("total", &ScoredRollout::total)
-      .def_property_readonly("poses", [](const ScoredRollout& r) { return poses_to_array(r.poses); });
+      .def_property_readonly("poses", [](const ScoredRollout& r) { return poses_to_array(r.poses); })
+      .def_readonly("raw", &ScoredRollout::raw, "Per critic (the report's critic_names): its raw score.")
+      .def_readonly("terms", &ScoredRollout::terms,
+                    "Per critic: signed weight x normalised score, its part of the total (costs negative); "
+                    "they sum to total.");
 
   py::class_<CycleReport> report(m, "CycleReport", "What a control cycle sensed, how it weighed it and what it chose.");
   report.def_readonly("command", &CycleReport::command);
@@ -24,7 +28,7 @@ void init_controller(py::module_& m) {
   report.def("__repr__", [](const CycleReport& r) {
     std::ostringstream s;
     s << "CycleReport(density=" << r.density << ", deviation=" << r.deviation << ", beta=" << r.beta
-      << ", delta=" << r.delta << ", sensed_points=" << r.sensed_points << ", chosen=" << r.chosen << ")";
+      << ", delta=" << r.delta << ", sensed_points=" << r.sensed_points << ", chosen=" << r.choice.sample << ")";
     return s.str();
   });
 

@@ -45,6 +45,12 @@ void init_navigator(py::module_& m) {
       .value("NoGlobalPath", FailureReason::NoGlobalPath)
       .value("RecoveriesExhausted", FailureReason::RecoveriesExhausted);
   refuse_unnamed_values(failure_reason_enum);
+  py::enum_<RecoveryTrigger> trigger_enum(m, "RecoveryTrigger", "What started a recovery.");
+  trigger_enum
+      .value("None_", RecoveryTrigger::None)
+      .value("NoProgress", RecoveryTrigger::NoProgress)
+      .value("AllRejected", RecoveryTrigger::AllRejected);
+  refuse_unnamed_values(trigger_enum);
 
   bind_params<NavigatorParams>(m, "NavigatorParams",
                                 "Replanning, recovery, the map from scans and moving obstacles of a Navigator.");
@@ -55,6 +61,7 @@ void init_navigator(py::module_& m) {
       .def_readonly("command", &CycleRecord::command)
       .def_readonly("mode", &CycleRecord::mode)
       .def_readonly("failure", &CycleRecord::failure)
+      .def_readonly("trigger", &CycleRecord::trigger, "What started the recovery under way (or the one that failed).")
       .def_readonly("recoveries", &CycleRecord::recoveries)
       .def_readonly("planned", &CycleRecord::planned, "Whether the local planner ran this cycle.")
       .def_readonly("control", &CycleRecord::control, "The controller's report (CycleReport).")

@@ -28,9 +28,13 @@ void bind_report_fields(Class& cls, Get report) {
                              "Similarity weight used; NaN without that critic.")
       .def_property_readonly("sensed_points", [report](const T& t) { return report(t).sensed_points; },
                              "Lidar hits that neither the map nor the known discs explain.")
-      .def_property_readonly("chosen", [report](const T& t) { return report(t).chosen; },
+      .def_property_readonly("choice", [report](const T& t) { return report(t).choice; },
+                             "The chosen sample as a ScoredRollout (sample -1 when none), its per-critic scores included.")
+      .def_property_readonly("chosen", [report](const T& t) { return report(t).choice.sample; },
                              "The chosen sample, -1 when none.")
-      .def_property_readonly("chosen_rollout", [report](const T& t) { return poses_to_array(report(t).chosen_rollout); })
+      .def_property_readonly("chosen_rollout", [report](const T& t) { return poses_to_array(report(t).choice.poses); })
+      .def_property_readonly("critic_names", [report](const T& t) { return report(t).critic_names; },
+                             "The planner's critics: the order of raw, terms and critic_vetoes.")
       .def_property_readonly("best", [report](const T& t) { return report(t).best; },
                              "The best admissible rollouts (ScoredRollout), best first.")
       .def_property_readonly("reject_counts", [report](const T& t) {

@@ -406,7 +406,7 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
     global_plan_pub_.publish(to_path(*record.path, header));
     path_version_ = navigator_->path_version();
   }
-  if (local_plan_pub_.getNumSubscribers() > 0) local_plan_pub_.publish(to_path(record.control.chosen_rollout, header));
+  if (local_plan_pub_.getNumSubscribers() > 0) local_plan_pub_.publish(to_path(record.control.choice.poses, header));
   if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(rollout_markers(record, header));
 
   diagnostic_msgs::DiagnosticArray array;

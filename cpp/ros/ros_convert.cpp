@@ -130,8 +130,8 @@ visualization_msgs::MarkerArray rollout_markers(const fgdwa::CycleRecord& record
       out.markers.push_back(line(header, static_cast<int>(i) + 1, record.control.best[i].poses, shade, 0.5f * shade, 0.0f,
                                  0.01));
   }
-  if (record.control.chosen_rollout.size() >= 2)
-    out.markers.push_back(line(header, 0, record.control.chosen_rollout, 0.0f, 0.9f, 0.2f, 0.03));
+  if (record.control.choice.poses.size() >= 2)
+    out.markers.push_back(line(header, 0, record.control.choice.poses, 0.0f, 0.9f, 0.2f, 0.03));
   return out;
 }
 

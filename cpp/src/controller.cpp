@@ -98,21 +98,38 @@ void Controller::summarize(const PlanResult& plan) {
   report_.target = plan.target;
   report_.key_node = plan.key_node;
   report_.reject_counts = plan.reject_counts;
+  report_.critic_names = plan.critic_names;
   report_.critic_vetoes = plan.critic_vetoes;
-  report_.chosen = plan.best_index;
   const std::vector<Trajectory>& rollouts = planner_.rollouts();
-  report_.chosen_rollout.clear();
-  if (plan.best_index >= 0) report_.chosen_rollout = rollouts[static_cast<std::size_t>(plan.best_index)];
-  report_.best.clear();
+  if (plan.best_index >= 0)
+    score(plan, rollouts, plan.best_index, report_.choice);
+  else
+    report_.choice = ScoredRollout{};
+  report_.best.resize(0);
   order_.clear();
   for (int i = 0; i < static_cast<int>(plan.samples.size()); ++i)
     if (plan.reasons[static_cast<std::size_t>(i)] == RejectReason::None) order_.push_back(i);
   const std::size_t k = std::min(order_.size(), static_cast<std::size_t>(keep_best_));
   std::partial_sort(order_.begin(), order_.begin() + static_cast<std::ptrdiff_t>(k), order_.end(),
                     [&](int a, int b) { return plan.total(a) > plan.total(b); });
-  for (std::size_t j = 0; j < k; ++j) {
-    const std::size_t i = static_cast<std::size_t>(order_[j]);
-    report_.best.push_back(ScoredRollout{order_[j], plan.samples[i], plan.total(static_cast<Eigen::Index>(i)), rollouts[i]});
+  report_.best.resize(k);
+  for (std::size_t j = 0; j < k; ++j) score(plan, rollouts, order_[j], report_.best[j]);
+}
+
+void Controller::score(const PlanResult& plan, const std::vector<Trajectory>& rollouts, int sample,
+                       ScoredRollout& out) {
+  const auto i = static_cast<Eigen::Index>(sample);
+  const std::size_t critics = plan.critic_names.size();
+  out.sample = sample;
+  out.command = plan.samples[static_cast<std::size_t>(sample)];
+  out.total = plan.total(i);
+  out.poses = rollouts[static_cast<std::size_t>(sample)];
+  out.raw.resize(critics);
+  out.terms.resize(critics);
+  for (std::size_t j = 0; j < critics; ++j) {
+    const auto c = static_cast<Eigen::Index>(j);
+    out.raw[j] = plan.raw(i, c);
+    out.terms[j] = plan.signed_weights[j] * plan.normalized(i, c);
   }
 }
 

@@ -134,6 +134,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
   record_.command = command;
   record_.mode = recovery_.mode();
   record_.failure = recovery_.failure();
+  record_.trigger = recovery_.trigger();
   record_.recoveries = recovery_.recoveries();
   record_.path = route_.path();
   record_.path_version = route_.version();
@@ -145,10 +146,10 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
 
 void Navigator::idle_report(const Vec2& position) {
   CycleReport& report = record_.control;
-  const std::size_t critics = controller_.plan_result().critic_names.size();
   report = CycleReport{};
   report.target = goal_;
-  report.critic_vetoes.assign(critics, 0);
+  report.critic_names = controller_.plan_result().critic_names;
+  report.critic_vetoes.assign(report.critic_names.size(), 0);
   if (route_.path()) report.deviation = route_.path()->deviation(position);
 }
 

@@ -226,6 +226,7 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
     result_.moving_contact.clear();
     result_.vetoed_by.clear();
     result_.critic_vetoes.assign(critics_.size(), 0);
+    result_.signed_weights.assign(critics_.size(), 0.0);
     result_.raw.resize(0, static_cast<Eigen::Index>(critics_.size()));
     result_.normalized.resize(0, static_cast<Eigen::Index>(critics_.size()));
     result_.total.resize(0);
@@ -571,6 +572,7 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
 
   result_.vetoed_by.assign(n, -1);
   result_.critic_vetoes.assign(m, 0);
+  result_.signed_weights.assign(m, 0.0);  // until the weights are set below: nothing was scored
   admissible_.clear();
   admissible_index_.clear();
   for (std::size_t i = 0; i < n; ++i) {
@@ -641,13 +643,14 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
   if (speed_critic_ < m &&
       context.world->moving_clearance(footprint_, context.state.pose, 0.0) <= params_.mover_caution_radius)
     cycle_weights_[speed_critic_] *= params_.mover_speed_weight;
-  signed_weights_.resize(m);
+  std::vector<double>& signed_weights = result_.signed_weights;
+  signed_weights.resize(m);
   for (std::size_t j = 0; j < m; ++j)
-    signed_weights_[j] = result_.senses[j] == CriticSense::Cost ? -cycle_weights_[j] : cycle_weights_[j];
+    signed_weights[j] = result_.senses[j] == CriticSense::Cost ? -cycle_weights_[j] : cycle_weights_[j];
   double best = -std::numeric_limits<double>::infinity();
   for (const std::size_t i : admissible_index_) {
     double total = 0.0;
-    for (std::size_t j = 0; j < m; ++j) total += signed_weights_[j] * result_.normalized(i, j);
+    for (std::size_t j = 0; j < m; ++j) total += signed_weights[j] * result_.normalized(i, j);
     result_.total(static_cast<Eigen::Index>(i)) = total;
     if (total > best) {  // strict: ties keep the first sample, deterministically
       best = total;

@@ -30,6 +30,15 @@ const char* to_string(FailureReason reason) {
   return "?";
 }
 
+const char* to_string(RecoveryTrigger trigger) {
+  switch (trigger) {
+    case RecoveryTrigger::None: return "None";
+    case RecoveryTrigger::NoProgress: return "NoProgress";
+    case RecoveryTrigger::AllRejected: return "AllRejected";
+  }
+  return "?";
+}
+
 namespace {
 
 int cycles_of(double seconds, double dt) { return static_cast<int>(std::lround(seconds / dt)); }
@@ -55,6 +64,7 @@ void Recovery::reset() {
   recent_.clear();
   mode_ = NavigatorMode::Following;
   failure_ = FailureReason::None;
+  trigger_ = RecoveryTrigger::None;
   recoveries_ = 0;
   rejected_cycles_ = 0;
 }
@@ -79,6 +89,9 @@ RecoveryStep Recovery::step(const RobotState& state, const Vec2& goal, const Fie
   const Vec2 position = state.pose.position();
   if (recoveries_ > 0 && (position - origin_).norm() >= params_.progress_reset) recoveries_ = 0;
   if (mode_ != NavigatorMode::Failed && (goal - position).norm() <= goal_tolerance_) mode_ = NavigatorMode::GoalReached;
+  // A trigger lasts while its recovery does (and stays with the failure it ended in).
+  if (mode_ == NavigatorMode::Following || mode_ == NavigatorMode::Replanning || mode_ == NavigatorMode::GoalReached)
+    trigger_ = RecoveryTrigger::None;
 
   switch (mode_) {
     case NavigatorMode::GoalReached:
@@ -106,6 +119,7 @@ RecoveryStep Recovery::step(const RobotState& state, const Vec2& goal, const Fie
   // to the planner on a new path.
   const auto hand_over = [&] {
     mode_ = NavigatorMode::Following;
+    trigger_ = RecoveryTrigger::None;
     out.replan = true;
     out.drive = true;
   };
@@ -139,12 +153,14 @@ bool Recovery::stalled(const RobotState& state, bool rejected_all) {
   if (rejected_cycles_ >= stall_cycles_) {
     rejected_cycles_ = 0;
     recent_.clear();
+    trigger_ = RecoveryTrigger::AllRejected;
     return true;
   }
   remember_position(state.pose.position());
   if (static_cast<int>(recent_.size()) < stall_cycles_ + 1) return false;
   if ((state.pose.position() - recent_.front()).norm() >= params_.stall_distance) return false;
   recent_.clear();
+  trigger_ = RecoveryTrigger::NoProgress;
   return true;
 }
 

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarParams', 'AStarPlanner', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
+__all__: list[str] = ['AStarParams', 'AStarPlanner', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RecoveryTrigger', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -1778,8 +1778,18 @@ class ScoredRollout:
     def poses(self) -> numpy.typing.NDArray[numpy.float64]:
         ...
     @property
+    def raw(self) -> list[float]:
+        """
+        Per critic (the report's critic_names): its raw score.
+        """
+    @property
     def sample(self) -> int:
         ...
+    @property
+    def terms(self) -> list[float]:
+        """
+        Per critic: signed weight x normalised score, its part of the total (costs negative); they sum to total.
+        """
     @property
     def total(self) -> float:
         ...
@@ -1800,6 +1810,11 @@ class CycleReport:
         Clearance weight used; NaN without that critic.
         """
     @property
+    def choice(self) -> ScoredRollout:
+        """
+        The chosen sample as a ScoredRollout (sample -1 when none), its per-critic scores included.
+        """
+    @property
     def chosen(self) -> int:
         """
         The chosen sample, -1 when none.
@@ -1810,6 +1825,11 @@ class CycleReport:
     @property
     def command(self) -> Twist:
         ...
+    @property
+    def critic_names(self) -> list[str]:
+        """
+        The planner's critics: the order of raw, terms and critic_vetoes.
+        """
     @property
     def critic_vetoes(self) -> list[int]:
         """
@@ -2451,6 +2471,56 @@ class FailureReason:
     @property
     def value(self) -> int:
         ...
+class RecoveryTrigger:
+    """
+    What started a recovery.
+    
+    Members:
+    
+      None_
+    
+      NoProgress
+    
+      AllRejected
+    """
+    AllRejected: typing.ClassVar[RecoveryTrigger]
+    NoProgress: typing.ClassVar[RecoveryTrigger]
+    None_: typing.ClassVar[RecoveryTrigger]
+    __members__: typing.ClassVar[dict[str, RecoveryTrigger]]
+    @typing.overload
+    def __eq__(self, other: RecoveryTrigger) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: RecoveryTrigger) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
 class NavigatorParams:
     """
     Replanning, recovery, the map from scans and moving obstacles of a Navigator.
@@ -2563,6 +2633,11 @@ class CycleRecord:
         Clearance weight used; NaN without that critic.
         """
     @property
+    def choice(self) -> ScoredRollout:
+        """
+        The chosen sample as a ScoredRollout (sample -1 when none), its per-critic scores included.
+        """
+    @property
     def chosen(self) -> int:
         """
         The chosen sample, -1 when none.
@@ -2577,6 +2652,11 @@ class CycleRecord:
     def control(self) -> CycleReport:
         """
         The controller's report (CycleReport).
+        """
+    @property
+    def critic_names(self) -> list[str]:
+        """
+        The planner's critics: the order of raw, terms and critic_vetoes.
         """
     @property
     def critic_vetoes(self) -> list[int]:
@@ -2657,6 +2737,11 @@ class CycleRecord:
     def tracked(self) -> list[Disc]:
         """
         The moving tracks the planner predicted (Discs now, with velocity).
+        """
+    @property
+    def trigger(self) -> RecoveryTrigger:
+        """
+        What started the recovery under way (or the one that failed).
         """
 class Navigator:
     """

@@ -23,6 +23,8 @@ DEFAULT_EXPERIMENT_OUT = "out/experiments"
 def _format_metrics(metrics: dict) -> str:
     rows = []
     for key, value in metrics.items():
+        if key == "reason" and not value:
+            continue
         rows.append(f"  {key:<16} {value:.4g}" if isinstance(value, float) else f"  {key:<16} {value}")
     return "\n".join(rows)
 

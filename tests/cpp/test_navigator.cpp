@@ -80,10 +80,19 @@ TEST(Navigator, FollowsToTheGoalAndReportsGoalReached) {
     if (r.planned) {
       EXPECT_LE(r.control.best.size(), 5u);
       for (std::size_t k = 1; k < r.control.best.size(); ++k) EXPECT_GE(r.control.best[k - 1].total, r.control.best[k].total);
-      if (r.control.chosen >= 0) {
+      if (r.control.choice.sample >= 0) {
         ASSERT_FALSE(r.control.best.empty());
-        EXPECT_EQ(r.control.best[0].sample, r.control.chosen);
-        EXPECT_EQ(r.control.chosen_rollout.size(), static_cast<std::size_t>(gdwa().n_steps()));
+        EXPECT_EQ(r.control.best[0].sample, r.control.choice.sample);
+        EXPECT_EQ(r.control.choice.poses.size(), static_cast<std::size_t>(gdwa().n_steps()));
+        EXPECT_EQ(r.control.choice.total, r.control.best[0].total);
+      }
+      // Each critic's part of a total, in the planner's order, adds up to it exactly.
+      for (const ScoredRollout& b : r.control.best) {
+        ASSERT_EQ(b.terms.size(), r.control.critic_names.size());
+        ASSERT_EQ(b.raw.size(), r.control.critic_names.size());
+        double sum = 0.0;
+        for (const double term : b.terms) sum += term;
+        EXPECT_EQ(sum, b.total);
       }
     }
   }
@@ -337,6 +346,37 @@ TEST(Navigator, MoversAtTheGoalOrOffTheMapLeaveTheWayOpen) {
   }
 }
 
+// Refuses every sample: the planner can choose nothing, wherever the robot is.
+class RefuseAll : public Critic {
+ public:
+  std::string name() const override { return "test_refuse_all"; }
+  double score(const Rollout&) const override { return veto(); }
+};
+
+TEST(Navigator, EverySampleRejectedForStallTimeIsAStallWhereverTheRobotDrifts) {
+  register_critic("test_refuse_all", [](auto&, auto&) { return std::make_unique<RefuseAll>(); });
+  PlannerParams planner = gdwa();
+  planner.critics.push_back(CriticConfig("test_refuse_all", 1.0));
+  NavigatorParams params;
+  params.stall_time = 0.45;  // 3 cycles
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), planner, room(30, 60), MapMode::Known, LidarParams{}, nullptr,
+                params);
+  nav.set_goal(Vec2(5.5, 1.5));
+  // Pushed 0.3 m along each cycle: never too little progress, yet nothing the planner could drive.
+  int first_stall = -1;
+  for (int i = 0; i < 8 && first_stall < 0; ++i) {
+    const CycleRecord& r = nav.step(at(0.8 + 0.3 * i, 1.5), nullptr, 0.15 * i);
+    if (r.trigger != RecoveryTrigger::None) {
+      EXPECT_EQ(r.trigger, RecoveryTrigger::AllRejected);
+      first_stall = i;
+    } else {
+      EXPECT_EQ(r.control.status, Status::NoAdmissibleVelocity) << "cycle " << i;
+    }
+  }
+  // Cycles 0-2 rejected everything; cycle 3 reads that and recovers.
+  EXPECT_EQ(first_stall, 3);
+}
+
 TEST(Navigator, FailsAfterMaxRecoveriesWithoutProgressAndWhenNoPathExists) {
   const OccupancyGrid map = room(30, 60);
   NavigatorParams params;
@@ -356,6 +396,7 @@ TEST(Navigator, FailsAfterMaxRecoveriesWithoutProgressAndWhenNoPathExists) {
     mode = r.mode;
     if (mode == NavigatorMode::Failed) {
       EXPECT_EQ(r.failure, FailureReason::RecoveriesExhausted);
+      EXPECT_EQ(r.trigger, RecoveryTrigger::NoProgress);  // held in place: no progress, not rejections
     }
   }
   EXPECT_EQ(mode, NavigatorMode::Failed);

@@ -196,6 +196,14 @@ def test_navigator_records_the_cycle():
     assert record.chosen_rollout.shape == (planner_preset("gdwa").params.n_steps, 3)
     assert set(record.times) == {"tracking", "map", "global", "perception", "plan"} and all(v >= 0 for v in record.times.values())
     assert sum(record.reject_counts.values()) == len(navigator.plan_result.samples)
+    # Why each rollout scored as it did: per critic, its raw score and its part of the total.
+    plan = navigator.plan_result
+    assert record.critic_names == plan.critic_names
+    for scored in record.best + [record.choice]:
+        np.testing.assert_array_equal(scored.raw, plan.raw[scored.sample])
+        assert len(scored.terms) == len(record.critic_names)
+        assert sum(scored.terms) == scored.total == plan.total[scored.sample]
+    assert record.choice.sample == record.chosen
 
 
 def test_navigator_and_episode_reject_bad_settings():

@@ -115,6 +115,10 @@ def test_a_tiny_benchmark_writes_its_outputs(tmp_path, capsys):
     # Every failed run names a field file that loads, and how to replay it.
     failed = [r for r in rows if r["outcome"] != "success"]
     assert len(summary["failed"]) == len(failed)
+    # A run that did not succeed says why in its row; one that did, nothing.
+    for row in rows:
+        assert (row["reason"] == "") == (row["outcome"] == "success")
+        assert row["outcome"] == "success" or row["reason"].startswith(("collision: ", "timeout: ", "the navigator"))
     for entry in summary["failed"]:
         assert load_scenario(entry["file"]).name == f"dynamic_easy_{entry['seed']}"
         assert entry["replay"].startswith(f"fgdwa run {entry['file']} --planner {entry['planner']} "
@@ -177,10 +181,11 @@ def test_fields_left_by_an_earlier_run_go_unless_they_failed_again(tmp_path):
     fields.mkdir()
     for name in ("dynamic_easy_7.yaml", "dynamic_easy_8.yaml", "dynamic_hard_7.yaml", "my_notes.yaml"):
         (fields / name).write_text("kept?\n")
-    runs = [SimpleNamespace(row={"level": "easy", "seed": 8, "planner": "fgdwa", "outcome": "collision"}),
-            SimpleNamespace(row={"level": "easy", "seed": 9, "planner": "fgdwa", "outcome": "success"})]
+    runs = [SimpleNamespace(row={"level": "easy", "seed": 8, "planner": "fgdwa", "outcome": "collision",
+                                 "reason": "collision: the robot drove into a wall at (1.00, 2.00)"}),
+            SimpleNamespace(row={"level": "easy", "seed": 9, "planner": "fgdwa", "outcome": "success", "reason": ""})]
     failed = write_failed_fields(runs, tmp_path, DynamicSetup())
-    assert [entry["seed"] for entry in failed] == [8]
+    assert [(entry["seed"], entry["reason"]) for entry in failed] == [(8, runs[0].row["reason"])]
     # easy 7 did not fail this time; another level's file and the user's own stay.
     assert sorted(p.name for p in fields.iterdir()) == ["dynamic_easy_8.yaml", "dynamic_hard_7.yaml", "my_notes.yaml"]
     assert load_scenario(fields / "dynamic_easy_8.yaml").name == "dynamic_easy_8"

@@ -246,6 +246,7 @@ def test_c_shaped_trap_dwa_is_stuck_gdwa_gets_through():
     # Heading straight for the goal, DWA stalls in the trap; its recoveries cannot get it out,
     # and the navigator gives up after max_recoveries of them.
     assert dwa.summary.outcome == "failed"
+    assert dwa.summary.reason.startswith("the navigator gave up: RecoveriesExhausted (")
     assert {"BackingUp", "Rotating"} & set(dwa.trace.modes)
     assert np.hypot(*(dwa.motion.poses[-1, :2] - scenario.goal)) > 4.0
     assert gdwa.summary.outcome == "success"

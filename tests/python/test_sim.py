@@ -38,6 +38,7 @@ def test_timeout_when_steps_run_out():
     result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=5)
     assert result.summary.outcome == "timeout"
     assert result.summary.steps == 5
+    assert result.summary.reason.startswith("timeout: ") and "m from the goal after 0.75 s" in result.summary.reason
 
 
 def test_a_disc_driving_into_the_robot_is_a_collision():
@@ -47,6 +48,7 @@ def test_a_disc_driving_into_the_robot_is_a_collision():
                          limits=fgdwa.RobotLimits(v_max=0.2), params=params, max_steps=50)
     assert result.summary.outcome == "collision"
     assert result.motion.clearances[-1] == pytest.approx(0.0, abs=1e-6)
+    assert result.summary.reason.startswith("collision: a mover drove into the robot at (")
 
 
 def test_contact_between_poses_is_found():
@@ -108,6 +110,7 @@ def test_obstacles_missing_from_the_map_are_seen_by_the_lidar():
     params = fgdwa.PlannerParams(heading_target="key_nodes")
     blind = run_episode(scenario.world, scenario.start, scenario.goal, params=params, max_steps=300)
     assert blind.summary.outcome == "collision"
+    assert blind.summary.reason.startswith("collision: the robot drove into a wall at (")
     sensing = run_episode(scenario.world, scenario.start, scenario.goal, params=params, lidar=fgdwa.LidarParams(),
                           max_steps=300)
     assert sensing.summary.outcome == "success"
@@ -291,6 +294,7 @@ def test_a_disc_driven_into_a_standing_robot_is_a_collision():
     result = run_episode(World(discs=[disc]), (0.0, 0.0, 0.0), (-20.0, 0.0), max_steps=60, latency=60)
     assert result.summary.outcome == "collision"
     assert np.all(result.motion.poses == result.motion.poses[0])
+    assert "a mover drove into the robot" in result.summary.reason and "the robot at 0.00 m/s" in result.summary.reason
     # The disc's edge reaches the robot's after 2.45 s: in cycle 17 of 0.15 s.
     assert result.summary.steps == 17
 

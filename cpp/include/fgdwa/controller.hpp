@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "fgdwa/clearance.hpp"
@@ -20,12 +21,14 @@
 
 namespace fgdwa {
 
-// One rollout the planner scored, as recorded.
+// One rollout the planner scored, as recorded, with why it scored so.
 struct ScoredRollout {
-  int sample = -1;  // index into the cycle's samples
+  int sample = -1;  // index into the cycle's samples, -1 for none
   Twist command;
-  double total = 0.0;  // the planner's total score
+  double total = 0.0;  // the planner's total score (-inf: rejected, e.g. an evasion)
   Trajectory poses;
+  std::vector<double> raw;    // per critic (PlanResult::critic_names): its raw score
+  std::vector<double> terms;  // per critic: signed weight x normalised score; they sum to total
 };
 
 // What one control cycle sensed, how it weighed it and what the planner chose.
@@ -39,11 +42,11 @@ struct CycleReport {
   double beta = std::numeric_limits<double>::quiet_NaN();       // clearance weight used; NaN without that critic
   double delta = std::numeric_limits<double>::quiet_NaN();      // similarity weight used; NaN without that critic
   std::size_t sensed_points = 0;                                // lidar hits the map and known discs do not explain
-  int chosen = -1;                  // the chosen sample, -1 when none
-  Trajectory chosen_rollout;        // its rollout (empty when none)
+  ScoredRollout choice;             // the chosen sample (sample -1, no poses, when none)
   std::vector<ScoredRollout> best;  // the keep_best() best admissible rollouts, best first
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reject reason
-  std::vector<int> critic_vetoes;   // per critic of the planner (PlanResult::critic_names): samples it vetoed
+  std::vector<std::string> critic_names;  // the planner's critics, the order of every per-critic list
+  std::vector<int> critic_vetoes;   // per critic: samples it vetoed
   double perception_time = 0.0;  // s, wall clock: sensed points, I, D and weights
   double plan_time = 0.0;        // s, wall clock: the local planner
 };
@@ -96,6 +99,8 @@ class Controller {
  private:
   // The plan's command, status, choice and best rollouts into the report.
   void summarize(const PlanResult& plan);
+  // One sample of the plan as recorded, its per-critic scores included.
+  static void score(const PlanResult& plan, const std::vector<Trajectory>& rollouts, int sample, ScoredRollout& out);
 
   LocalPlanner planner_;
   std::shared_ptr<const DistanceField> map_;

@@ -48,6 +48,7 @@ struct CycleRecord {
   Twist command;
   NavigatorMode mode = NavigatorMode::Following;
   FailureReason failure = FailureReason::None;
+  RecoveryTrigger trigger = RecoveryTrigger::None;  // what started the recovery under way (or the one that failed)
   int recoveries = 0;   // recoveries in a row without progress, this one included
   bool planned = false; // whether the local planner ran this cycle
   // The controller's report when it ran; otherwise the target is the goal,

@@ -151,7 +151,9 @@ struct PlanResult {
   std::vector<CriticSense> senses;              // per critic
   Matrix raw;                                   // samples x critics, 0 for rejected samples
   Matrix normalized;                            // samples x critics, 0 for rejected samples (raw with Normalization::None)
-  Eigen::VectorXd total;                        // rewards' weighted terms minus costs'; -inf if rejected
+  std::vector<double> signed_weights;           // per critic: the factor of its normalised score in the total
+                                                // (negative for a cost; the velocity critic's eased near movers)
+  Eigen::VectorXd total;                        // sum over critics of signed_weights x normalized; -inf if rejected
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reason
   int admissible_count() const { return reject_counts[0]; }
 };
@@ -221,7 +223,7 @@ class LocalPlanner {
   // The velocity critic's index (none: past the end), and the weights this
   // cycle scores with (its weight scaled while a mover is near).
   std::size_t speed_critic_ = std::numeric_limits<std::size_t>::max();
-  std::vector<double> cycle_weights_, signed_weights_;
+  std::vector<double> cycle_weights_;
   std::vector<Rollout> admissible_;  // this cycle's admissible rollouts, for the critics
   std::vector<std::size_t> admissible_index_;
   std::vector<double> scores_;

@@ -35,8 +35,16 @@ enum class FailureReason : std::uint8_t {
   RecoveriesExhausted,  // max_recoveries recoveries in a row without progress
 };
 
+// What started the recovery under way.
+enum class RecoveryTrigger : std::uint8_t {
+  None,         // no recovery under way
+  NoProgress,   // less than stall_distance of progress in stall_time
+  AllRejected,  // the planner rejected every sample for stall_time
+};
+
 const char* to_string(NavigatorMode mode);
 const char* to_string(FailureReason reason);
+const char* to_string(RecoveryTrigger trigger);
 
 // What the recovery stage decided for this cycle.
 struct RecoveryStep {
@@ -69,6 +77,8 @@ class Recovery {
 
   NavigatorMode mode() const { return mode_; }
   FailureReason failure() const { return failure_; }
+  // Why the recovery under way (or the one that gave up) began.
+  RecoveryTrigger trigger() const { return trigger_; }
   // Recoveries in a row without progress, the current one included.
   int recoveries() const { return recoveries_; }
   // Cycles spent in each mode so far.
@@ -98,6 +108,7 @@ class Recovery {
   int stall_cycles_;
   NavigatorMode mode_ = NavigatorMode::Following;
   FailureReason failure_ = FailureReason::None;
+  RecoveryTrigger trigger_ = RecoveryTrigger::None;
   int recoveries_ = 0;
   int rejected_cycles_ = 0;  // cycles in a row with every sample rejected
   std::deque<Vec2> recent_;  // positions of the last stall_cycles_ + 1 cycles

@@ -40,7 +40,7 @@ from fgdwa.sim.world import World
 
 BARN_PLANNERS = ("dwa", "gdwa", "sgdwa", "fgdwa", "dwb")
 RUN_FIELDS = ("world", "planner", "mapping", "trial", "seed", "outcome", "success", "time", "score", "optimal_time",
-              "mileage", "min_clearance", "replans", "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time")
+              "mileage", "min_clearance", "replans", "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time", "reason")
 
 
 @dataclass(frozen=True)

@@ -48,7 +48,7 @@ PLANNER_VARIANTS = MappingProxyType({
 })
 OUTCOMES = ("success", "collision", "timeout", "failed")
 RUN_FIELDS = ("level", "seed", "planner", "outcome", "success", "time", "mileage", "min_clearance", "replans",
-              "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time")
+              "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time", "reason")
 
 
 @dataclass(frozen=True)
@@ -151,7 +151,7 @@ def replay_command(path, planner: str, seed: int, latency: int) -> str:
 
 def write_failed_fields(runs: Sequence[Run], out_dir, setup: DynamicSetup) -> list:
     """Write the scenario file of every field a run failed on into ``out_dir``/fields;
-    return one entry per failed run: planner, seed, outcome, file, replay command.
+    return one entry per failed run: planner, seed, outcome, reason, file, replay command.
     Field files of the same levels that an earlier run left and no run failed on
     this time are removed, so that ``fields/`` holds this run's failures only."""
     failed = []
@@ -171,7 +171,8 @@ def write_failed_fields(runs: Sequence[Run], out_dir, setup: DynamicSetup) -> li
             write_field(field_document(task), path, command=f"fgdwa dynamic generate --level {task.level} "
                         f"--seed {task.seed} --noise {setup.noise_std:g} --dropout {setup.dropout:g}")
             written.add(path)
-        failed.append({"planner": row["planner"], "seed": row["seed"], "outcome": row["outcome"], "file": str(path),
+        failed.append({"planner": row["planner"], "seed": row["seed"], "outcome": row["outcome"],
+                       "reason": row["reason"], "file": str(path),
                        "replay": replay_command(path, row["planner"], row["seed"], setup.latency)})
     return failed
 
@@ -192,6 +193,8 @@ def dynamic_command(args) -> int:
             "failed": failed}
     summary = write_run_outputs(runs, args.out, RUN_FIELDS, head, figure=not args.no_figures, outcomes=OUTCOMES)
     print(format_table(summary, f"dynamic fields, level {level}, {describe_seeds(seeds)}", OUTCOMES))
+    for entry in failed:
+        print(f"  seed {entry['seed']} {entry['planner']}: {entry['reason']}")
     print(written_files(runs, wall, args.out, figure=not args.no_figures)
           + (f", {len({f['file'] for f in failed})} field file(s) of failed runs in {Path(args.out) / 'fields'}"
              if failed else ""))

@@ -59,12 +59,12 @@ def run_timing(wall: float, cycle_times) -> dict:
 def episode_columns(result, wall: float) -> dict:
     """The columns every benchmark takes from an episode (an EpisodeResult that
     ran ``wall`` seconds): simulated time, mileage, clearance, replans, cycles
-    spent backing up, the cost per cycle and the wall time."""
+    spent backing up, the cost per cycle, the wall time and why a failed run ended."""
     paths = result.context.paths
     return {"time": result.summary.sim_time, "mileage": result.summary.mileage,
             "min_clearance": result.summary.min_clearance, "replans": max(0, len(paths) - 1),
             "backing_up": result.trace.statuses.count("BackingUp"),
-            **run_timing(wall, result.trace.cycle_times), "wall_time": wall}
+            **run_timing(wall, result.trace.cycle_times), "wall_time": wall, "reason": result.summary.reason}
 
 
 def paths_followed(result) -> list:

@@ -22,6 +22,7 @@ from fgdwa._core import (
     CollisionWorld,
     DetectWindowParams,
     DistanceField,
+    FailureReason,
     FgdwaError,
     Footprint,
     GlobalPath,
@@ -45,8 +46,8 @@ from fgdwa._core import (
 from fgdwa.global_planning import plan_global
 from fgdwa.mapping import check_mapping
 from fgdwa.sim.body import Body, body_settings, check_seed
-from fgdwa.sim.referee import (DANGER_MARGIN, collides_during_step, danger_point_clearance, danger_points, falls,
-                               path_length, smoothness)
+from fgdwa.sim.referee import (DANGER_MARGIN, collides_during_step, collision_reason, danger_point_clearance,
+                               danger_points, falls, path_length, smoothness)
 from fgdwa.sim.world import World
 
 OUTCOMES = ("success", "collision", "fall", "failed", "timeout")
@@ -82,6 +83,7 @@ class EpisodeSummary:
     mean_deviation: float = float("nan")  # m, from the global path
     max_deviation: float = float("nan")  # m
     smoothness: float = 0.0  # rad/s, sum of |change of omega| between cycles
+    reason: str = ""  # why a run that did not succeed ended, in a line ("" on success)
 
 
 @dataclass
@@ -304,6 +306,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     planned = False  # whether the local planner ran in any cycle
     cycles = []
     outcome = "timeout"
+    reason = ""
     scan = None
     for k in range(max_steps):
         position = np.array([pose.x, pose.y])
@@ -322,6 +325,9 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         cycle_times.append(time.perf_counter() - tic)
         if record.mode == NavigatorMode.Failed:
             outcome = "failed"
+            reason = f"the navigator gave up: {record.failure.name}"
+            if record.failure == FailureReason.RecoveriesExhausted:
+                reason += f" ({record.recoveries} recoveries in a row, the last on {record.trigger.name})"
             break
         if record.path_version != path_version:
             path_version = record.path_version
@@ -355,15 +361,21 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
                                 discs_at=world.discs_at if world.has_moving else None,
                                 start_clearance=None if world.has_moving else clearances[-2]):
             outcome = "collision"
+            reason = collision_reason(truth, footprint, poses[-1],
+                                      (driven.v * np.cos(pose.theta), driven.v * np.sin(pose.theta)))
             break
         if world.terrain is not None and falls(world, poses[-2], poses[-1]):
             outcome = "fall"
+            reason = f"fall: the centre entered grade-4 terrain at ({pose.x:.2f}, {pose.y:.2f})"
             break
     else:
         position = np.array([pose.x, pose.y])
         if np.hypot(*(position - goal_point)) <= tolerance:
             outcome = "success"
 
+    if outcome == "timeout":
+        reason = (f"timeout: {np.hypot(pose.x - goal_point[0], pose.y - goal_point[1]):.2f} m from the goal after "
+                  f"{len(commands) * dt:g} s" + (f", last mode {modes[-1]}" if modes else ""))
     path = robot.path
     poses_arr = np.array(poses)
     clear_arr = np.array(clearances, dtype=float)
@@ -389,6 +401,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         mean_deviation=float(np.mean(deviations)) if len(deviations) else float("nan"),
         max_deviation=float(np.max(deviations)) if len(deviations) else float("nan"),
         smoothness=smoothness(np.array(commands, dtype=float).reshape(-1, 2)),
+        reason=reason,
     )
     motion = Motion(
         poses=poses_arr,

@@ -115,6 +115,34 @@ def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, af
         truth.discs = kept
 
 
+def collision_reason(truth: CollisionWorld, footprint: Footprint, pose, velocity) -> str:
+    """What the footprint at ``pose`` touched and who moved into whom, in a line.
+
+    The obstacle nearest the footprint is the one touched: one of the map's (the
+    robot drove into it) or a moving disc, which drove into the robot when its
+    velocity closed the gap faster than the robot's own ``velocity`` (vx, vy,
+    m/s) did."""
+    discs = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
+    pose = tuple(float(v) for v in pose)
+    where = f"at ({pose[0]:.2f}, {pose[1]:.2f})"
+    gaps = [footprint.signed_distance(pose, d.center) - d.radius for d in discs]
+    truth.discs = []
+    try:
+        static = truth.clearance(footprint, pose, 0.0)
+    finally:
+        truth.discs = discs
+    if not gaps or static <= min(gaps):
+        return f"collision: the robot drove into a wall {where}"
+    mover = discs[int(np.argmin(gaps))]
+    away = np.array(pose[:2]) - np.array(mover.center)
+    unit = away / max(float(np.hypot(*away)), 1e-12)
+    mover_closing = float(np.dot(mover.velocity, unit))
+    robot_closing = float(np.dot(velocity, -unit))
+    who = "a mover drove into the robot" if mover_closing > robot_closing else "the robot drove into a mover"
+    return (f"collision: {who} {where} (closing at {mover_closing:.2f} m/s, the robot at "
+            f"{robot_closing:.2f} m/s)")
+
+
 def _disc_travel(discs, dt: float) -> float:
     """The farthest any of the discs moves in ``dt`` at its velocity, m."""
     return max((float(np.hypot(*d.velocity)) * dt for d in discs), default=0.0)
