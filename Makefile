@@ -50,7 +50,7 @@ BUILD_SETTINGS := -C build-dir=$(BUILD) -C cmake.define.BUILD_TESTING=ON \
 	-C cmake.define.FGDWA_TEST_PYTHON=$(abspath $(BIN))/python
 
 $(VENV)/.installed: $(SOURCES) | $(VENV)/.tools
-	$(BIN)/python -m pip install -q --no-build-isolation $(BUILD_SETTINGS) ".[test,irsim]"
+	$(BIN)/python -m pip install -q --no-build-isolation $(BUILD_SETTINGS) ".[test,irsim,inspect]"
 	touch $@
 
 demo: setup

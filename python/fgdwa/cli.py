@@ -56,6 +56,12 @@ def cmd_demo(args: argparse.Namespace) -> int:
     return 0 if result.summary.outcome == "success" else 1
 
 
+def cmd_inspect(args: argparse.Namespace) -> int:
+    from fgdwa.plot.recording import open_recording
+
+    return open_recording(args.recording, web=args.web)
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from fgdwa.bench.experiments import resolve_scenario
     from fgdwa.plot.episode import plot_episode
@@ -67,8 +73,9 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.latency:
         options["latency"] = args.latency
     tic = time.perf_counter()
-    if args.gif:
-        # The GIF replays the cycles; a wider fan of scored rollouts than the default 5 shows the choice.
+    if args.gif or args.record:
+        # The GIF and the recording replay the cycles; a wider fan of scored rollouts than the default 5
+        # shows the choice.
         from fgdwa._core import NavigatorParams
 
         options.update(record_cycles=True, navigator=NavigatorParams(record_top_k=40))
@@ -93,6 +100,12 @@ def cmd_run(args: argparse.Namespace) -> int:
         tic = time.perf_counter()
         gif = write_gif(result, scenario, args.gif, planner=planner, seed=args.seed, max_frames=args.frames)
         print(f"animation: {gif} ({time.perf_counter() - tic:.1f} s to draw)")
+    if args.record:
+        from fgdwa.plot.recording import write_recording
+
+        rrd = write_recording(result, world, scenario.goal, scenario.footprint, args.record, dt=result.summary.sim_time
+                              / max(result.summary.steps, 1), title=f"{scenario.name} {planner} seed {args.seed}")
+        print(f"recording: {rrd} (fgdwa inspect {rrd})")
     return 0 if summary.outcome == "success" else 1
 
 
@@ -208,6 +221,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--out", default="out/run", help="directory for the PNG (default: out/run)")
     run.add_argument("--gif", default=None, metavar="FILE", help="also write an animated GIF of the run")
     run.add_argument("--frames", type=positive, default=150, help="at most this many GIF frames (default 150)")
+    run.add_argument("--record", default=None, metavar="FILE.rrd",
+                     help="also write a Rerun recording of every cycle (needs rerun-sdk: pip install 'fgdwa[inspect]')")
     run.add_argument("--max-steps", type=positive, default=None, help="override the scenario's max_steps")
     run.add_argument("--latency", type=int, default=0, metavar="CYCLES",
                      help="control cycles from a scan to its command reaching the wheels (default 0)")
@@ -226,6 +241,11 @@ def build_parser() -> argparse.ArgumentParser:
     add_output_arguments(exp, DEFAULT_EXPERIMENT_OUT, "the tables, figures and reports, one folder per experiment",
                          figures="the PNG figures")
     exp.set_defaults(func=cmd_experiment)
+    ins = sub.add_parser("inspect", help="open a recording (fgdwa run ... --record FILE.rrd) in Rerun's viewer, "
+                                         "or its web viewer when there is no display")
+    ins.add_argument("recording", help="a .rrd file")
+    ins.add_argument("--web", action="store_true", help="the web viewer even with a display")
+    ins.set_defaults(func=lambda args, argv: cmd_inspect(args))
     irs = sub.add_parser("irsim", help="run an IR-SIM world whose robots name behavior fgdwa (needs ir-sim: "
                                        "pip install 'fgdwa[irsim]'); prints each robot's outcome by IR-SIM's flags")
     irs.add_argument("world", help="an IR-SIM world YAML file")

@@ -66,6 +66,10 @@ class CycleTrace:
     hits: np.ndarray  # (n, 2) the lidar's hits this cycle; (0, 2) without a scan
     # (m, 5) the moving obstacles the planner predicted: x, y, radius (m), vx, vy (m/s)
     tracked: np.ndarray = field(default_factory=lambda: np.zeros((0, 5)))
+    critics: tuple = ()  # the planner's critics, the order of the per-critic columns below
+    terms: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))  # (k, critics) each best rollout's terms
+    chosen_raw: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (critics,) the chosen sample's raw scores
+    chosen_terms: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (critics,) its terms; they sum to its total
 
 
 @dataclass
@@ -442,7 +446,11 @@ def _trace(record, scan, n_steps: int) -> CycleTrace:
                       chosen=np.asarray(record.chosen_rollout, dtype=float).reshape(-1, 3),
                       hits=scan.hit_points if scan is not None else np.zeros((0, 2)),
                       tracked=np.array([[d.center[0], d.center[1], d.radius, d.velocity[0], d.velocity[1]]
-                                        for d in record.tracked], dtype=float).reshape(-1, 5))
+                                        for d in record.tracked], dtype=float).reshape(-1, 5),
+                      critics=tuple(record.critic_names),
+                      terms=np.array([b.terms for b in best], dtype=float).reshape(len(best), len(record.critic_names)),
+                      chosen_raw=np.array(record.choice.raw, dtype=float),
+                      chosen_terms=np.array(record.choice.terms, dtype=float))
 
 
 def _navigator_map(world: World, start, goal) -> OccupancyGrid:
