@@ -21,11 +21,15 @@ DEFAULT_EXPERIMENT_OUT = "out/experiments"
 
 
 def _format_metrics(metrics: dict) -> str:
+    from fgdwa.sim.episode import METRIC_UNITS
+
     rows = []
     for key, value in metrics.items():
         if key == "reason" and not value:
             continue
-        rows.append(f"  {key:<16} {value:.4g}" if isinstance(value, float) else f"  {key:<16} {value}")
+        unit = METRIC_UNITS.get(key, "")
+        text = f"{value:.4g}" if isinstance(value, float) else f"{value}"
+        rows.append(f"  {key:<16} {text} {unit}".rstrip())
     return "\n".join(rows)
 
 

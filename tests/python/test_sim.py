@@ -1,3 +1,5 @@
+import re
+
 import numpy as np
 import pytest
 
@@ -98,6 +100,10 @@ def test_cli_demo_writes_the_figure(tmp_path, capsys):
     assert main(["demo", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     assert "outcome          success" in out
+    # Each metric with its unit; a run that succeeded gives no reason.
+    assert re.search(r"^  mileage +[0-9.]+ m$", out, flags=re.M) and re.search(r"^  smoothness +[0-9.]+ rad/s$", out,
+                                                                                flags=re.M)
+    assert "reason" not in out
     png = tmp_path / "demo.png"
     assert png.stat().st_size > 10_000
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -78,16 +78,22 @@ class EpisodeSummary:
 
     outcome: str  # one of OUTCOMES
     steps: int
-    sim_time: float  # s, simulated
-    planning_time: float  # s, wall clock spent choosing commands
-    mileage: float  # m, length of the executed path
-    min_clearance: float  # m, exact (FCL) clearance along the executed path
-    mean_clearance: float  # m
-    danger_clearance: float = float("nan")  # m, mean obstacle distance at the global path's danger points
-    mean_deviation: float = float("nan")  # m, from the global path
-    max_deviation: float = float("nan")  # m
-    smoothness: float = 0.0  # rad/s, sum of |change of omega| between cycles
+    sim_time: float = field(metadata={"unit": "s"})  # simulated
+    planning_time: float = field(metadata={"unit": "s"})  # wall clock spent choosing commands
+    mileage: float = field(metadata={"unit": "m"})  # length of the executed path
+    min_clearance: float = field(metadata={"unit": "m"})  # exact (FCL) clearance along the executed path
+    mean_clearance: float = field(metadata={"unit": "m"})
+    # mean obstacle distance at the global path's danger points
+    danger_clearance: float = field(default=float("nan"), metadata={"unit": "m"})
+    mean_deviation: float = field(default=float("nan"), metadata={"unit": "m"})  # from the global path
+    max_deviation: float = field(default=float("nan"), metadata={"unit": "m"})
+    # sum of |change of omega| between cycles
+    smoothness: float = field(default=0.0, metadata={"unit": "rad/s"})
     reason: str = ""  # why a run that did not succeed ended, in a line ("" on success)
+
+
+# The unit of each metric (EpisodeResult.metrics()' keys), "" for a count or a word.
+METRIC_UNITS = {f.name: f.metadata.get("unit", "") for f in dataclasses.fields(EpisodeSummary)}
 
 
 @dataclass
