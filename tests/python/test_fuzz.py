@@ -1507,7 +1507,8 @@ def params_valid(k):
     dt, sim = k["dt"], k["sim_time"]
     if not (within(dt, MIN_DT, MAX_DT) and within(sim, 0.0, MAX_HORIZON) and sim > 0):
         return False
-    if sim / dt > MAX_ROLLOUT_STEPS or round(sim / dt) < 1:
+    # The planner's step count is lround(sim / dt): halves away from zero, not Python's round to even.
+    if sim / dt > MAX_ROLLOUT_STEPS or math.floor(sim / dt + 0.5) < 1:
         return False
     n_v, n_omega = k["window.n_v"], k["window.n_omega"]
     return (1 <= n_v <= MAX_SAMPLES_PER_AXIS and 1 <= n_omega <= MAX_SAMPLES_PER_AXIS
