@@ -189,3 +189,22 @@ def test_fields_left_by_an_earlier_run_go_unless_they_failed_again(tmp_path):
     # easy 7 did not fail this time; another level's file and the user's own stay.
     assert sorted(p.name for p in fields.iterdir()) == ["dynamic_easy_8.yaml", "dynamic_hard_7.yaml", "my_notes.yaml"]
     assert load_scenario(fields / "dynamic_easy_8.yaml").name == "dynamic_easy_8"
+
+
+def test_failed_runs_can_be_recorded_and_the_recordings_hold_their_runs(tmp_path, capsys):
+    from fgdwa.cli import main
+    from fgdwa.plot.recording import read_recording
+
+    out, recordings = tmp_path / "dyn", tmp_path / "rrd"
+    # Hard field 0 without tracking: the untracked discs run into the robot.
+    assert main(["dynamic", "--level", "hard", "--seeds", "0", "--planners", "fgdwa-notrack", "--executor", "serial",
+                 "--no-progress", "--no-figures", "--out", str(out), "--record-failures", str(recordings)]) == 0
+    printed = capsys.readouterr().out
+    row = next(csv.DictReader(open(out / "runs.csv")))
+    assert row["outcome"] == "collision"
+    path = recordings / "dynamic_hard_0_fgdwa-notrack.rrd"
+    assert f"seed 0 fgdwa-notrack: {row['reason']} (fgdwa inspect {path})" in printed
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["failed"][0]["recording"] == str(path)
+    # The recording is that run: as many cycles as the run had steps, up to the collision.
+    assert len(read_recording(path, "/world/robot/true")) == int(round(float(row["time"]) / 0.15))

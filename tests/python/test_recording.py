@@ -5,15 +5,8 @@ import pytest
 import fgdwa
 from fgdwa.bench.experiments import resolve_scenario
 from fgdwa.cli import main
+from fgdwa.plot.recording import read_recording
 from fgdwa.sim import run_scenario
-
-
-def _read(path, contents):
-    import rerun as rr
-
-    server = rr.server.Server(host="127.0.0.1", datasets={"run": [str(path)]})
-    client = rr.catalog.CatalogClient(server.url())
-    return client.get_dataset("run").filter_contents(contents).reader(index="cycle").to_pandas()
 
 
 def test_a_recording_holds_each_critics_part_of_the_chosen_total_cycle_by_cycle(tmp_path):
@@ -25,7 +18,7 @@ def test_a_recording_holds_each_critics_part_of_the_chosen_total_cycle_by_cycle(
                           navigator=fgdwa.NavigatorParams(record_top_k=40))
     cycles = result.trace.cycles
     assert len(cycles) == 25 and cycles[0].critics
-    table = _read(rrd, "/critics/**").sort_values("cycle")
+    table = read_recording(rrd, "/critics/**")
     assert list(table["cycle"]) == list(range(25))
     for j, critic in enumerate(cycles[0].critics):
         terms = [value[0] for value in table[f"/critics/{critic}/term:Scalars:scalars"]]
@@ -35,7 +28,7 @@ def test_a_recording_holds_each_critics_part_of_the_chosen_total_cycle_by_cycle(
     # Each cycle's terms add up to the chosen sample's total, the best rollout's.
     for cycle in cycles:
         assert sum(cycle.chosen_terms) == cycle.totals[0]
-    world = _read(rrd, "/world/**")
+    world = read_recording(rrd, "/world/**")
     assert {"/world/robot/true:LineStrips2D:strips", "/world/scan:Points2D:positions",
             "/world/chosen:LineStrips2D:strips"} <= set(world.columns)
 

@@ -22,7 +22,7 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from fgdwa._core import NavigatorParams
+from fgdwa._core import FgdwaError, NavigatorParams
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments, check_sensing, planner_list)
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
@@ -107,13 +107,22 @@ def field_document(task: DynamicTask) -> dict:
     return generate_field(task.level, task.seed, task.setup.noise_std, task.setup.dropout)
 
 
-def run_dynamic_task(task: DynamicTask) -> Run:
-    """Run one task (in whatever process calls it)."""
+def _episode(task: DynamicTask, **options):
+    """The task's scenario and its episode; ``options`` go to run_scenario."""
     scenario = scenario_from_dict(field_document(task), where=field_name(task.level, task.seed))
     preset, overrides = PLANNER_VARIANTS[task.planner]
+    navigator = NavigatorParams(**overrides)
+    if options.pop("record", False):
+        navigator.record_top_k = 40  # recorded only: the fan the recording shows
+        options["record_cycles"] = True
+    return scenario, run_scenario(scenario, preset, task.seed, navigator=navigator, latency=task.setup.latency,
+                                  **options)
+
+
+def run_dynamic_task(task: DynamicTask) -> Run:
+    """Run one task (in whatever process calls it)."""
     tic = time.perf_counter()
-    result = run_scenario(scenario, preset, task.seed, navigator=NavigatorParams(**overrides),
-                          latency=task.setup.latency)
+    scenario, result = _episode(task)
     wall = time.perf_counter() - tic
     outcome = result.summary.outcome
     row = {"level": task.level, "seed": task.seed, "planner": task.planner, "outcome": outcome,
@@ -177,6 +186,31 @@ def write_failed_fields(runs: Sequence[Run], out_dir, setup: DynamicSetup) -> li
     return failed
 
 
+def record_failed_runs(runs: Sequence[Run], setup: DynamicSetup, directory) -> dict:
+    """Run every failed run again with its cycles kept and write it as a Rerun
+    recording into ``directory``; returns {(seed, planner): path}. A run is its
+    task's alone, so the second time ends as the first did (checked)."""
+    from fgdwa.plot.recording import write_recording
+
+    paths = {}
+    for run in runs:
+        row = run.row
+        if row["outcome"] == "success":
+            continue
+        task = DynamicTask(row["level"], row["seed"], row["planner"], setup)
+        scenario, result = _episode(task, record=True)
+        if result.summary.outcome != row["outcome"]:
+            raise FgdwaError(f"{field_name(task.level, task.seed)} {task.planner}: ran again it ended in "
+                             f"{result.summary.outcome}, not {row['outcome']}")
+        _, world, _ = trial_variation(scenario, task.seed)
+        path = Path(directory) / f"{field_name(task.level, task.seed)}_{task.planner}.rrd"
+        write_recording(result, world, scenario.goal, scenario.footprint, path,
+                        dt=result.summary.sim_time / max(result.summary.steps, 1),
+                        title=f"{field_name(task.level, task.seed)} {task.planner}")
+        paths[(task.seed, task.planner)] = path
+    return paths
+
+
 def dynamic_command(args) -> int:
     """``fgdwa dynamic``: run, print the table, write the outputs."""
     check_executor_arguments(args)
@@ -189,12 +223,17 @@ def dynamic_command(args) -> int:
                        workers=args.workers, progress=not args.no_progress)
     wall = time.perf_counter() - tic
     failed = write_failed_fields(runs, args.out, setup)
+    if args.record_failures:
+        recordings = record_failed_runs(runs, setup, args.record_failures)
+        for entry in failed:
+            entry["recording"] = str(recordings[(entry["seed"], entry["planner"])])
     head = {"level": level, "seeds": seeds, "setup": dataclasses.asdict(setup), "wall_time": wall,
             "failed": failed}
     summary = write_run_outputs(runs, args.out, RUN_FIELDS, head, figure=not args.no_figures, outcomes=OUTCOMES)
     print(format_table(summary, f"dynamic fields, level {level}, {describe_seeds(seeds)}", OUTCOMES))
     for entry in failed:
-        print(f"  seed {entry['seed']} {entry['planner']}: {entry['reason']}")
+        print(f"  seed {entry['seed']} {entry['planner']}: {entry['reason']}"
+              + (f" (fgdwa inspect {entry['recording']})" if "recording" in entry else ""))
     print(written_files(runs, wall, args.out, figure=not args.no_figures)
           + (f", {len({f['file'] for f in failed})} field file(s) of failed runs in {Path(args.out) / 'fields'}"
              if failed else ""))
@@ -230,6 +269,9 @@ def register_dynamic_commands(subparsers) -> None:
     add_sensing_arguments(dynamic, DynamicSetup())
     add_executor_arguments(dynamic)
     add_output_arguments(dynamic, "out/dynamic", "runs.csv, summary.json, failures.png and fields/")
+    dynamic.add_argument("--record-failures", default=None, metavar="DIR",
+                         help="run each failed run again and write it as a Rerun recording into DIR "
+                              "(needs rerun-sdk: pip install 'fgdwa[inspect]')")
     dynamic.set_defaults(func=lambda args, *_: dynamic_command(args))
     sub = dynamic.add_subparsers(dest="dynamic_command", required=False, metavar="{generate}")
     gen = sub.add_parser("generate", help="write one field (level, seed) as a scenario file for `fgdwa run`")

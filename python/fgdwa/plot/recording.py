@@ -115,6 +115,18 @@ def write_recording(result, world, goal, footprint, path, dt: float, title: str 
     return path
 
 
+def read_recording(path, contents: str = "/**"):
+    """The entities matching ``contents`` of a recording as a pandas DataFrame,
+    one row per cycle (Rerun's dataframe API, through a catalog server on this
+    machine that lives for the call)."""
+    rr = _rerun()
+    server = rr.server.Server(host="127.0.0.1", datasets={"run": [str(path)]})
+    client = rr.catalog.CatalogClient(server.url())
+    dataset = client.get_dataset("run")
+    table = dataset.filter_contents(contents).reader(index=TIMELINE).to_pandas()
+    return table.sort_values(TIMELINE).reset_index(drop=True)
+
+
 def open_recording(path, web: bool = False) -> int:
     """Open a recording in Rerun's viewer, or in its web viewer served on this
     machine (``web``, or when there is no display); returns the viewer's exit code."""

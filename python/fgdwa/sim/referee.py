@@ -121,7 +121,7 @@ def collision_reason(truth: CollisionWorld, footprint: Footprint, pose, velocity
     The obstacle nearest the footprint is the one touched: one of the map's (the
     robot drove into it) or a moving disc, which drove into the robot when its
     velocity closed the gap faster than the robot's own ``velocity`` (vx, vy,
-    m/s) did."""
+    m/s) did; when neither closed in, the contact came from a turn or a graze."""
     discs = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
     pose = tuple(float(v) for v in pose)
     where = f"at ({pose[0]:.2f}, {pose[1]:.2f})"
@@ -138,7 +138,10 @@ def collision_reason(truth: CollisionWorld, footprint: Footprint, pose, velocity
     unit = away / max(float(np.hypot(*away)), 1e-12)
     mover_closing = float(np.dot(mover.velocity, unit))
     robot_closing = float(np.dot(velocity, -unit))
-    who = "a mover drove into the robot" if mover_closing > robot_closing else "the robot drove into a mover"
+    if max(mover_closing, robot_closing) <= 0.0:
+        who = "the robot touched a mover as neither closed in (turning, or grazing it)"
+    else:
+        who = "a mover drove into the robot" if mover_closing > robot_closing else "the robot drove into a mover"
     return (f"collision: {who} {where} (closing at {mover_closing:.2f} m/s, the robot at "
             f"{robot_closing:.2f} m/s)")
 
