@@ -107,8 +107,8 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.record:
         from fgdwa.plot.recording import write_recording
 
-        rrd = write_recording(result, world, scenario.goal, scenario.footprint, args.record, dt=result.summary.sim_time
-                              / max(result.summary.steps, 1), title=f"{scenario.name} {planner} seed {args.seed}")
+        rrd = write_recording(result, world, scenario.goal, scenario.footprint, args.record,
+                              title=f"{scenario.name} {planner} seed {args.seed}")
         print(f"recording: {rrd} (fgdwa inspect {rrd})")
     return 0 if summary.outcome == "success" else 1
 

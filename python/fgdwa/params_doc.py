@@ -64,7 +64,7 @@ def parameter_reference() -> str:
         "",
     ]
     for cls in PARAMETER_SETS:
-        lines += [f"## `{cls.name}`: `{cls.__name__}`", ""] + _table(cls, f"{cls.name}/")
+        lines += _section("##", cls, f"{cls.name}/")
     lines += [
         "## Global planners' parameters",
         "",
@@ -73,7 +73,7 @@ def parameter_reference() -> str:
         "",
     ]
     for cls in GLOBAL_PARAMETER_SETS:
-        lines += [f"### `{cls.name}`: `{cls.__name__}`", ""] + _table(cls, f"{cls.name}/")
+        lines += _section("###", cls, f"{cls.name}/")
     lines += [
         "## Critics' parameters",
         "",
@@ -83,12 +83,14 @@ def parameter_reference() -> str:
         "",
     ]
     for cls in CRITIC_PARAMETER_SETS:
-        lines += [f"### `{cls.name}`: `{cls.__name__}`", "", cls.__doc__.strip().splitlines()[0], ""] + _table(cls, "")
+        lines += _section("###", cls, "", intro=cls.__doc__.strip().splitlines()[0])
     return "\n".join(lines)
 
 
-def _table(cls, prefix: str) -> list:
-    lines = ["| name | unit | bounds | default | meaning |", "|---|---|---|---|---|"]
+def _section(heading: str, cls, prefix: str, intro: str = "") -> list:
+    """A parameter class's heading, its one-line introduction and its table, names prefixed."""
+    lines = [f"{heading} `{cls.name}`: `{cls.__name__}`", ""] + ([intro, ""] if intro else [])
+    lines += ["| name | unit | bounds | default | meaning |", "|---|---|---|---|---|"]
     for entry in cls.schema():
         name = prefix + entry["name"].replace(".", "/")
         if entry["type"] == "group":

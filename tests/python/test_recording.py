@@ -39,7 +39,7 @@ def test_writing_a_recording_needs_recorded_cycles(tmp_path):
     scenario = resolve_scenario("demo")
     result = run_scenario(scenario, scenario.planner, 0, max_steps=3)
     with pytest.raises(fgdwa.FgdwaError, match="record_cycles"):
-        write_recording(result, scenario.world, scenario.goal, scenario.footprint, tmp_path / "x.rrd", dt=0.15)
+        write_recording(result, scenario.world, scenario.goal, scenario.footprint, tmp_path / "x.rrd")
 
 
 def test_inspect_names_a_missing_recording(tmp_path, capsys):

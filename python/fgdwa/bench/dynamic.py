@@ -107,16 +107,15 @@ def field_document(task: DynamicTask) -> dict:
     return generate_field(task.level, task.seed, task.setup.noise_std, task.setup.dropout)
 
 
-def _episode(task: DynamicTask, **options):
-    """The task's scenario and its episode; ``options`` go to run_scenario."""
+def _episode(task: DynamicTask, record: bool = False):
+    """The task's scenario and its episode; ``record`` keeps every cycle, with the fan a recording shows."""
     scenario = scenario_from_dict(field_document(task), where=field_name(task.level, task.seed))
     preset, overrides = PLANNER_VARIANTS[task.planner]
     navigator = NavigatorParams(**overrides)
-    if options.pop("record", False):
-        navigator.record_top_k = 40  # recorded only: the fan the recording shows
-        options["record_cycles"] = True
+    if record:
+        navigator.record_top_k = 40  # recorded only: it changes no choice
     return scenario, run_scenario(scenario, preset, task.seed, navigator=navigator, latency=task.setup.latency,
-                                  **options)
+                                  record_cycles=record)
 
 
 def run_dynamic_task(task: DynamicTask) -> Run:
@@ -205,7 +204,6 @@ def record_failed_runs(runs: Sequence[Run], setup: DynamicSetup, directory) -> d
         _, world, _ = trial_variation(scenario, task.seed)
         path = Path(directory) / f"{field_name(task.level, task.seed)}_{task.planner}.rrd"
         write_recording(result, world, scenario.goal, scenario.footprint, path,
-                        dt=result.summary.sim_time / max(result.summary.steps, 1),
                         title=f"{field_name(task.level, task.seed)} {task.planner}")
         paths[(task.seed, task.planner)] = path
     return paths

@@ -56,12 +56,13 @@ def _log_map(rr, rec, path: str, grid) -> None:
             static=True)
 
 
-def write_recording(result, world, goal, footprint, path, dt: float, title: str = "fgdwa run") -> Path:
+def write_recording(result, world, goal, footprint, path, title: str = "fgdwa run") -> Path:
     """Write ``result`` (an EpisodeResult with its cycles recorded) as a Rerun
     recording at ``path``; returns the path."""
     trace, motion, context = result.trace, result.motion, result.context
     if not trace.cycles:
         raise FgdwaError("write_recording: the episode kept no cycles; run it with record_cycles=True")
+    dt = result.summary.sim_time / result.summary.steps  # s, the control period
     rr = _rerun()
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
