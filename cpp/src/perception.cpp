@@ -34,7 +34,13 @@ void Scan::validate() const {
 }
 
 
-std::vector<Vec2> Scan::hit_points() const { return ScanFrame(*this).hit_points(); }
+std::vector<Vec2> Scan::hit_points() const {
+  validate();
+  std::vector<Vec2> points;
+  for (std::size_t i = 0; i < ranges.size(); ++i)
+    if (std::isfinite(ranges[i])) points.push_back(beam_hit(*this, i, beam_direction(*this, i)));
+  return points;
+}
 
 LaserScanner::LaserScanner(const LidarParams& params, std::shared_ptr<const DistanceField> world)
     : params_(params), world_(std::move(world)) {
@@ -174,10 +180,7 @@ void LaserScanner::scan(const Pose2& pose, const std::vector<Disc>& discs, doubl
   out.max_range = params_.max_range;
   out.ranges.resize(static_cast<std::size_t>(params_.beams));
   std::vector<Vec2> directions(out.ranges.size());
-  for (std::size_t i = 0; i < directions.size(); ++i) {
-    const double a = pose.theta + out.angle_min + static_cast<double>(i) * out.angle_increment;
-    directions[i] = Vec2(std::cos(a), std::sin(a));
-  }
+  for (std::size_t i = 0; i < directions.size(); ++i) directions[i] = beam_direction(out, i);
   const Vec2 origin = pose.position();
   // The grid's ranges of all beams first, in batches (a beam dropped below is
   // cast too); then, beam by beam, its drop, the discs and its noise.

@@ -21,11 +21,9 @@ void ScanFrame::assign(const Scan& scan, int beams) {
   beam_hits_.assign(n, Vec2::Zero());
   hit_points_.clear();
   for (std::size_t i = 0; i < n; ++i) {
-    const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
-    directions_[i] = Vec2(std::cos(a), std::sin(a));
-    const double r = scan.ranges[i];
-    if (!std::isfinite(r)) continue;
-    beam_hits_[i] = Vec2(scan.pose.x + r * directions_[i].x(), scan.pose.y + r * directions_[i].y());
+    directions_[i] = beam_direction(scan, i);
+    if (!std::isfinite(scan.ranges[i])) continue;
+    beam_hits_[i] = beam_hit(scan, i, directions_[i]);
     hit_points_.push_back(beam_hits_[i]);
   }
 }

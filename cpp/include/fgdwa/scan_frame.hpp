@@ -10,6 +10,19 @@
 
 namespace fgdwa {
 
+// (cos a, sin a) of beam `i`'s world angle a = theta + angle_min + i angle_increment:
+// the one formula the scanner and the robot's side share, so they agree to the bit.
+inline Vec2 beam_direction(const Scan& scan, std::size_t i) {
+  const double a = scan.pose.theta + scan.angle_min + static_cast<double>(i) * scan.angle_increment;
+  return Vec2(std::cos(a), std::sin(a));
+}
+
+// Where beam `i` hit, along its `direction` (finite ranges only).
+inline Vec2 beam_hit(const Scan& scan, std::size_t i, const Vec2& direction) {
+  const double r = scan.ranges[i];
+  return Vec2(scan.pose.x + r * direction.x(), scan.pose.y + r * direction.y());
+}
+
 // Threads: a value; one thread fills it, any may read it afterwards.
 class ScanFrame {
  public:
