@@ -336,6 +336,14 @@ TEST(PathBlocked, OnlyObstaclesAheadOfTheRobotBlock) {
   expect_error_naming([&] { path_blocked(beside, Vec2(NAN, 0.0), field, 0.1); }, "position");
 }
 
+TEST(Controller, KeepBestTakesACountWithinTheWindowsSamples) {
+  Controller controller(RobotLimits{}, Footprint::circle(0.2), PlannerParams{});
+  controller.keep_best(0);
+  controller.keep_best(5);
+  fgdwa::test::expect_error_naming([&] { controller.keep_best(-1); }, "keep_best");
+  fgdwa::test::expect_error_naming([&] { controller.keep_best(limits::kMaxWindowSamples + 1); }, "keep_best");
+}
+
 TEST(Controller, SetMapMakesTheNewObstaclesCount) {
   const OccupancyGrid truth = wall_grid();
   PlannerParams params;

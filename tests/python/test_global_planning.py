@@ -234,6 +234,12 @@ def test_plan_global_errors():
         fgdwa.AStarPlanner(grid, terrain=fgdwa.TerrainGrid(np.zeros((3, 3), np.uint8), 0.1))
     with pytest.raises(fgdwa.FgdwaError, match="risk"):
         fgdwa.AStarPlanner(grid, terrain_cost={"risk": (0.0, -1.0, 0.0, 0.0)})
+    with pytest.raises(fgdwa.FgdwaError, match="footprint does not apply to astar"):
+        plan_global(grid, (0.2, 0.2), (4.5, 4.5), footprint=fgdwa.Footprint.circle(0.2))
+    with pytest.raises(fgdwa.FgdwaError, match="named by method"):
+        plan_global(grid, (0.2, 0.2), (4.5, 4.5), method="ompl:RRTstar", planner="PRMstar")
+    with pytest.raises(fgdwa.FgdwaError, match="did you mean 'terrain_cost.w_risk'"):
+        fgdwa.AStarPlanner(grid, w_risk=2.0)
     assert "astar" in global_methods() and "ompl:BITstar" in global_methods()
 
 

@@ -45,3 +45,5 @@ def test_writing_a_recording_needs_recorded_cycles(tmp_path):
 def test_inspect_names_a_missing_recording(tmp_path, capsys):
     assert main(["inspect", str(tmp_path / "none.rrd")]) != 0
     assert "no such recording" in capsys.readouterr().err
+    with pytest.raises(fgdwa.FgdwaError, match="no such recording"):
+        read_recording(tmp_path / "none.rrd")

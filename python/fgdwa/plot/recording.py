@@ -121,6 +121,8 @@ def read_recording(path, contents: str = "/**"):
     one row per cycle (Rerun's dataframe API, through a catalog server on this
     machine that lives for the call)."""
     rr = _rerun()
+    if not Path(path).is_file():
+        raise FgdwaError(f"{path}: no such recording")
     server = rr.server.Server(host="127.0.0.1", datasets={"run": [str(path)]})
     client = rr.catalog.CatalogClient(server.url())
     dataset = client.get_dataset("run")
