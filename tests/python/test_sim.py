@@ -50,7 +50,14 @@ def test_a_disc_driving_into_the_robot_is_a_collision():
                          limits=fgdwa.RobotLimits(v_max=0.2), params=params, max_steps=50)
     assert result.summary.outcome == "collision"
     assert result.motion.clearances[-1] == pytest.approx(0.0, abs=1e-6)
-    assert result.summary.reason.startswith("collision: a mover drove into the robot at (")
+    assert result.summary.reason.startswith("collision: mover 0 drove into the robot at (")
+    # The point of contact is the disc's edge where it meets the robot's, on the line between their centres.
+    contact = result.collision
+    assert contact.obstacle == "mover" and contact.mover == 0 and contact.what == "mover 0"
+    robot = result.motion.poses[-1, :2]
+    assert np.hypot(*(np.array(contact.point) - robot)) == pytest.approx(0.25, abs=0.02)
+    assert contact.point[1] == pytest.approx(robot[1], abs=0.02) and contact.point[0] > robot[0]
+    assert f"at ({contact.point[0]:.2f}, {contact.point[1]:.2f})" in result.summary.reason
 
 
 def test_contact_between_poses_is_found():
@@ -61,6 +68,40 @@ def test_contact_between_poses_is_found():
     before, after = (1.8, 0.5, 0.0), (2.3, 0.5, 0.0)  # both ends free, the wall in between
     assert not truth.in_collision(footprint, before) and not truth.in_collision(footprint, after)
     assert collides_during_step(truth, footprint, before, after, 0.0, 0.15)
+
+
+def test_the_point_of_contact_is_where_the_outline_meets_what_it_hit():
+    from fgdwa.sim import collision_contact
+
+    cells = np.zeros((20, 40), np.uint8)
+    cells[:, 20] = 1  # a wall one cell thick at x = 2.0 .. 2.1
+    hidden = np.zeros_like(cells)
+    hidden[15:, 20] = 1  # its top quarter (y >= 1.5) is missing from the map
+    grid, missing = fgdwa.OccupancyGrid(cells, 0.1), fgdwa.OccupancyGrid(hidden, 0.1)
+    truth = fgdwa.CollisionWorld(grid)
+    circle = fgdwa.Footprint.circle(0.25)
+    # A circle 1 cm into the wall touches it on the line through its centre.
+    contact = collision_contact(truth, circle, (1.76, 1.0, 0.0), (0.5, 0.0), grid=grid, hidden=missing)
+    assert contact.obstacle == "wall" and contact.what == "a wall" and contact.mover == -1
+    np.testing.assert_allclose(contact.point, (2.0, 1.0), atol=1e-9)
+    assert contact.reason == "collision: the robot drove into a wall at (2.00, 1.00)"
+    contact = collision_contact(truth, circle, (1.76, 1.7, 0.0), (0.5, 0.0), grid=grid, hidden=missing)
+    assert contact.obstacle == "hidden" and contact.reason.startswith(
+        "collision: the robot drove into an obstacle missing from the map at (2.00, 1.70)")
+    # A turned rectangle's front right corner pokes in: the wall's point deepest inside it is at
+    # x = 2.0, y = 0.93 (depth 4 cm), placed within half a cell.
+    jackal = fgdwa.robot_preset("jackal").footprint
+    contact = collision_contact(truth, jackal, (1.8, 1.0, 0.3), (0.5, 0.0), grid=grid)
+    assert contact.point[0] == pytest.approx(2.0) and contact.point[1] == pytest.approx(0.93, abs=0.05)
+    assert jackal.signed_distance((1.8, 1.0, 0.3), contact.point) < -0.03
+    # The second of two discs hits the robot: its index names it, its edge is the point.
+    truth.discs = [fgdwa.Disc((1.0, 0.2), 0.1), fgdwa.Disc((1.6, 1.0), 0.2, velocity=(-1.0, 0.0))]
+    contact = collision_contact(truth, circle, (1.2, 1.0, 0.0), (0.0, 0.0), grid=grid)
+    assert contact.obstacle == "mover" and contact.mover == 1 and contact.what == "mover 1"
+    np.testing.assert_allclose(contact.point, (1.4, 1.0), atol=1e-9)
+    assert contact.mover_closing == pytest.approx(1.0) and contact.robot_closing == pytest.approx(0.0)
+    assert contact.reason.startswith("collision: mover 1 drove into the robot at (1.40, 1.00)")
+    assert collision_contact(truth, circle, (1.2, 1.0, 0.0), (0.0, 0.0)).point == contact.point  # no grid needed
 
 
 def test_a_rectangle_turning_in_place_beside_a_post_is_a_collision():
@@ -116,7 +157,14 @@ def test_obstacles_missing_from_the_map_are_seen_by_the_lidar():
     params = fgdwa.PlannerParams(heading_target="key_nodes")
     blind = run_episode(scenario.world, scenario.start, scenario.goal, params=params, max_steps=300)
     assert blind.summary.outcome == "collision"
-    assert blind.summary.reason.startswith("collision: the robot drove into a wall at (")
+    assert blind.summary.reason.startswith("collision: the robot drove into an obstacle missing from the map at (")
+    assert blind.collision.obstacle == "hidden" and blind.collision.mover == -1
+    # The point of contact lies on a hidden cell's square, within the footprint's reach of the robot.
+    hidden = scenario.world.hidden
+    squares = np.argwhere(hidden.cells != 0)[:, ::-1] * hidden.resolution + hidden.origin
+    point = np.array(blind.collision.point)
+    assert np.any(np.all((squares - 1e-9 <= point) & (point <= squares + hidden.resolution + 1e-9), axis=1))
+    assert np.hypot(*(point - blind.motion.poses[-1, :2])) <= 0.25 + 1e-6
     sensing = run_episode(scenario.world, scenario.start, scenario.goal, params=params, lidar=fgdwa.LidarParams(),
                           max_steps=300)
     assert sensing.summary.outcome == "success"
@@ -300,7 +348,7 @@ def test_a_disc_driven_into_a_standing_robot_is_a_collision():
     result = run_episode(World(discs=[disc]), (0.0, 0.0, 0.0), (-20.0, 0.0), max_steps=60, latency=60)
     assert result.summary.outcome == "collision"
     assert np.all(result.motion.poses == result.motion.poses[0])
-    assert "a mover drove into the robot" in result.summary.reason and "the robot at 0.00 m/s" in result.summary.reason
+    assert "mover 0 drove into the robot" in result.summary.reason and "the robot at 0.00 m/s" in result.summary.reason
     # The disc's edge reaches the robot's after 2.45 s: in cycle 17 of 0.15 s.
     assert result.summary.steps == 17
 

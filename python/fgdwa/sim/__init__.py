@@ -25,7 +25,9 @@ from fgdwa.sim.episode import (
 from fgdwa.sim.referee import (
     DANGER_MARGIN,
     TURN_RESOLUTION,
+    Contact,
     collides_during_step,
+    collision_contact,
     danger_point_clearance,
     danger_points,
     falls,
@@ -48,6 +50,7 @@ from fgdwa.sim.world import MOVER_MODES, MovingObstacle, World
 __all__ = [
     "Body",
     "BodySettings",
+    "Contact",
     "CycleTrace",
     "DANGER_MARGIN",
     "EPISODE_OPTIONS",
@@ -69,6 +72,7 @@ __all__ = [
     "body_settings",
     "check_seed",
     "collides_during_step",
+    "collision_contact",
     "danger_point_clearance",
     "danger_points",
     "falls",

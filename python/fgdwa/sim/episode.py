@@ -46,8 +46,8 @@ from fgdwa._core import (
 from fgdwa.global_planning import plan_global
 from fgdwa.mapping import check_mapping
 from fgdwa.sim.body import Body, body_settings, check_seed
-from fgdwa.sim.referee import (DANGER_MARGIN, collides_during_step, collision_reason, danger_point_clearance,
-                               danger_points, falls, path_length, smoothness)
+from fgdwa.sim.referee import (DANGER_MARGIN, Contact, collides_during_step, collision_contact,
+                               danger_point_clearance, danger_points, falls, path_length, smoothness)
 from fgdwa.sim.world import World
 
 OUTCOMES = ("success", "collision", "fall", "failed", "timeout")
@@ -139,13 +139,14 @@ class NavigationContext:
 @dataclass
 class EpisodeResult:
     """The executed run: its metrics (``summary``), the robot's steps
-    (``motion``), the navigator's cycles (``trace``) and what it navigated by
-    (``context``)."""
+    (``motion``), the navigator's cycles (``trace``), what it navigated by
+    (``context``) and, after a collision, what it touched where (``collision``)."""
 
     summary: EpisodeSummary
     motion: Motion
     trace: PlannerTrace = field(default_factory=PlannerTrace)
     context: NavigationContext = field(default_factory=NavigationContext)
+    collision: Optional[Contact] = None
 
     def metrics(self) -> dict:
         """The scalar metrics, as plain Python numbers."""
@@ -317,6 +318,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     cycles = []
     outcome = "timeout"
     reason = ""
+    contact = None
     scan = None
     for k in range(max_steps):
         position = np.array([pose.x, pose.y])
@@ -371,8 +373,10 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
                                 discs_at=world.discs_at if world.has_moving else None,
                                 start_clearance=None if world.has_moving else clearances[-2]):
             outcome = "collision"
-            reason = collision_reason(truth, footprint, poses[-1],
-                                      (driven.v * np.cos(pose.theta), driven.v * np.sin(pose.theta)))
+            contact = collision_contact(truth, footprint, poses[-1],
+                                        (driven.v * np.cos(pose.theta), driven.v * np.sin(pose.theta)),
+                                        grid=true_grid, hidden=world.hidden)
+            reason = contact.reason
             break
         if world.terrain is not None and falls(world, poses[-2], poses[-1]):
             outcome = "fall"
@@ -442,7 +446,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         last_rollouts=robot.planner.rollouts() if planned else None,
         last_scan=scan,
     )
-    return EpisodeResult(summary, motion, trace, context)
+    return EpisodeResult(summary, motion, trace, context, contact)
 
 
 def _trace(record, scan, n_steps: int) -> CycleTrace:

@@ -7,11 +7,12 @@ the true distance field), never with what the navigator believes.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Optional
 
 import numpy as np
 
-from fgdwa._core import CollisionWorld, Disc, DistanceField, FgdwaError, Footprint, wrap_angle
+from fgdwa._core import CollisionWorld, Disc, DistanceField, FgdwaError, Footprint, OccupancyGrid, wrap_angle
 from fgdwa.sim.world import World
 
 DANGER_MARGIN = 0.3  # m beyond the footprint's radius: the default danger clearance
@@ -115,16 +116,53 @@ def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, af
         truth.discs = kept
 
 
-def collision_reason(truth: CollisionWorld, footprint: Footprint, pose, velocity) -> str:
-    """What the footprint at ``pose`` touched and who moved into whom, in a line.
+@dataclass(frozen=True)
+class Contact:
+    """What a collision touched, where, and who moved into whom (world frame)."""
 
-    The obstacle nearest the footprint is the one touched: one of the map's (the
-    robot drove into it) or a moving disc, which drove into the robot when its
-    velocity closed the gap faster than the robot's own ``velocity`` (vx, vy,
-    m/s) did; when neither closed in, the contact came from a turn or a graze."""
+    point: tuple  # (x, y) m: the obstacle's point deepest inside (or nearest) the robot's true outline
+    obstacle: str  # "wall" (on the map), "hidden" (a static obstacle missing from the map) or "mover"
+    mover: int = -1  # the mover's index in World.discs_at(t) (World.discs, then World.movers); -1 otherwise
+    mover_closing: float = 0.0  # m/s at which the mover closed the gap (0 for a static obstacle)
+    robot_closing: float = 0.0  # m/s at which the robot did
+
+    @property
+    def what(self) -> str:
+        """What was hit, as words: "a wall", "an obstacle missing from the map" or "mover 3"."""
+        if self.obstacle == "mover":
+            return f"mover {self.mover}"
+        return "an obstacle missing from the map" if self.obstacle == "hidden" else "a wall"
+
+    @property
+    def reason(self) -> str:
+        """The collision in a line: what was touched, who moved into whom, where."""
+        where = f"at ({self.point[0]:.2f}, {self.point[1]:.2f})"
+        if self.obstacle != "mover":
+            return f"collision: the robot drove into {self.what} {where}"
+        if max(self.mover_closing, self.robot_closing) <= 0.0:
+            who = f"the robot touched {self.what} as neither closed in (turning, or grazing it)"
+        elif self.mover_closing > self.robot_closing:
+            who = f"{self.what} drove into the robot"
+        else:
+            who = f"the robot drove into {self.what}"
+        return (f"collision: {who} {where} (closing at {self.mover_closing:.2f} m/s, the robot at "
+                f"{self.robot_closing:.2f} m/s)")
+
+
+def collision_contact(truth: CollisionWorld, footprint: Footprint, pose, velocity,
+                      grid: Optional[OccupancyGrid] = None, hidden: Optional[OccupancyGrid] = None) -> Contact:
+    """What the footprint at ``pose`` touched, where, and who moved into whom.
+
+    The obstacle nearest the footprint is the one touched: the static one (the
+    robot drove into it; ``grid`` is the truth's grid, which places the point of
+    contact, and a cell set in ``hidden`` was missing from the map) or a moving
+    disc, which drove into the robot when its velocity closed the gap faster
+    than the robot's own ``velocity`` (vx, vy, m/s) did; when neither closed in,
+    the contact came from a turn or a graze. The point of contact is the
+    obstacle's point with the smallest signed distance to the footprint: the
+    deepest inside it, or the nearest when the two only touch."""
     discs = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
     pose = tuple(float(v) for v in pose)
-    where = f"at ({pose[0]:.2f}, {pose[1]:.2f})"
     gaps = [footprint.signed_distance(pose, d.center) - d.radius for d in discs]
     truth.discs = []
     try:
@@ -132,18 +170,77 @@ def collision_reason(truth: CollisionWorld, footprint: Footprint, pose, velocity
     finally:
         truth.discs = discs
     if not gaps or static <= min(gaps):
-        return f"collision: the robot drove into a wall {where}"
-    mover = discs[int(np.argmin(gaps))]
+        point, cell = _wall_contact(footprint, pose, grid)
+        missing = hidden is not None and cell is not None and bool(np.asarray(hidden.cells)[cell])
+        return Contact(point=point, obstacle="hidden" if missing else "wall")
+    index = int(np.argmin(gaps))
+    mover = discs[index]
     away = np.array(pose[:2]) - np.array(mover.center)
     unit = away / max(float(np.hypot(*away)), 1e-12)
-    mover_closing = float(np.dot(mover.velocity, unit))
-    robot_closing = float(np.dot(velocity, -unit))
-    if max(mover_closing, robot_closing) <= 0.0:
-        who = "the robot touched a mover as neither closed in (turning, or grazing it)"
-    else:
-        who = "a mover drove into the robot" if mover_closing > robot_closing else "the robot drove into a mover"
-    return (f"collision: {who} {where} (closing at {mover_closing:.2f} m/s, the robot at "
-            f"{robot_closing:.2f} m/s)")
+    return Contact(point=_disc_contact(footprint, pose, mover, unit), obstacle="mover", mover=index,
+                   mover_closing=float(np.dot(mover.velocity, unit)), robot_closing=float(np.dot(velocity, -unit)))
+
+
+def collision_reason(truth: CollisionWorld, footprint: Footprint, pose, velocity,
+                     grid: Optional[OccupancyGrid] = None, hidden: Optional[OccupancyGrid] = None) -> str:
+    """:func:`collision_contact`'s line: what was touched, who moved into whom, where."""
+    return collision_contact(truth, footprint, pose, velocity, grid, hidden).reason
+
+
+def _best_point(footprint: Footprint, pose, candidates: np.ndarray) -> int:
+    """The index of the candidate point with the smallest signed distance to the footprint at ``pose``."""
+    return int(np.argmin([footprint.signed_distance(pose, tuple(p)) for p in candidates]))
+
+
+def _disc_contact(footprint: Footprint, pose, disc, toward: np.ndarray) -> tuple:
+    """The point of the disc's edge deepest in the footprint (its edge sampled every 2 degrees and
+    toward the robot's centre)."""
+    angles = np.radians(np.arange(0.0, 360.0, 2.0))
+    directions = np.vstack([toward, np.column_stack([np.cos(angles), np.sin(angles)])])
+    edge = np.asarray(disc.center, dtype=float) + disc.radius * directions
+    x, y = edge[_best_point(footprint, pose, edge)]
+    return float(x), float(y)
+
+
+def _wall_contact(footprint: Footprint, pose, grid: Optional[OccupancyGrid]):
+    """((x, y), (row, col)): the point of the occupied cells near ``pose`` deepest in
+    the footprint, and its cell; the robot's centre and None without a grid or a
+    cell near. A cell's candidates are its corners, the middles of its sides, its
+    centre and its points nearest the robot's centre and each polygon vertex,
+    which places the contact within half a cell."""
+    centre = np.array(pose[:2])
+    if grid is None:
+        return (float(centre[0]), float(centre[1])), None
+    cells = np.asarray(grid.cells)
+    resolution, origin = grid.resolution, np.asarray(grid.origin, dtype=float)
+    reach = footprint.radius + 3 * resolution
+    low = np.floor((centre - reach - origin) / resolution).astype(int)
+    high = np.ceil((centre + reach - origin) / resolution).astype(int)
+    rows = slice(max(low[1], 0), max(min(high[1], cells.shape[0]), 0))
+    cols = slice(max(low[0], 0), max(min(high[0], cells.shape[1]), 0))
+    occupied = np.argwhere(cells[rows, cols] != 0) + (rows.start, cols.start)
+    if not len(occupied):
+        return (float(centre[0]), float(centre[1])), None
+    corners_low = origin + occupied[:, ::-1] * resolution  # (x, y) of each cell's lower-left corner
+    anchors = [centre] if footprint.is_circle else [centre, *placed_outline(footprint.vertices, pose)]
+    candidates, owners = [], []
+    for offset in np.array(np.meshgrid([0.0, 0.5, 1.0], [0.0, 0.5, 1.0])).reshape(2, -1).T * resolution:
+        candidates.append(corners_low + offset)
+        owners.append(np.arange(len(occupied)))
+    for anchor in anchors:
+        candidates.append(np.clip(anchor, corners_low, corners_low + resolution))
+        owners.append(np.arange(len(occupied)))
+    candidates, owners = np.vstack(candidates), np.concatenate(owners)
+    best = _best_point(footprint, pose, candidates)
+    row, col = occupied[owners[best]]
+    return (float(candidates[best, 0]), float(candidates[best, 1])), (int(row), int(col))
+
+
+def placed_outline(vertices: np.ndarray, pose) -> np.ndarray:
+    """A polygon footprint's (n, 2) vertices (robot frame) placed at pose (x, y, theta)."""
+    x, y, theta = pose
+    c, s = np.cos(theta), np.sin(theta)
+    return np.asarray(vertices, dtype=float) @ np.array([[c, s], [-s, c]]) + (x, y)
 
 
 def _disc_travel(discs, dt: float) -> float:
