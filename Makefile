@@ -8,11 +8,12 @@ JOBS ?= 2
 # ROS 1 from Debian's archive, for fgdwa_node and its test (docs/ros.md).
 ROS_PACKAGES := ros-core-dev ros-core-python-dev libtf2-ros-dev python3-tf2-ros libmove-base-msgs-dev \
 	python3-move-base-msgs libactionlib-dev python3-actionlib
+# chromium: the test that opens a recording in Rerun's web viewer looks at it through headless Chromium.
 # python3-venv and python3-dev: Debian's python3 makes no virtual environment
 # without the one and builds no extension without the other's headers.
 APT_PACKAGES := python3-venv python3-dev libeigen3-dev libfcl-dev libompl-dev libhwy-dev libboost-serialization-dev \
 	libboost-filesystem-dev libboost-system-dev libgtest-dev libbenchmark-dev \
-	$(ROS_PACKAGES)
+	chromium $(ROS_PACKAGES)
 
 BIN := $(VENV)/bin
 SOURCES := CMakeLists.txt pyproject.toml README.md $(shell find cpp python -type f -not -name '*.pyc' -not -path '*/__pycache__/*' -not -path 'cpp/ros/*')

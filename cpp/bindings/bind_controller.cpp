@@ -22,6 +22,16 @@ void init_controller(py::module_& m) {
                     "Per critic: signed weight x normalised score, its part of the total (costs negative); "
                     "they sum to total.");
 
+  py::class_<CriticStats>(m, "CriticStats",
+                          "One critic's weighted term over a cycle's admissible samples (zeros when none).")
+      .def_readonly("min", &CriticStats::min)
+      .def_readonly("mean", &CriticStats::mean)
+      .def_readonly("max", &CriticStats::max)
+      .def("__repr__", [](const CriticStats& c) {
+        std::ostringstream s;
+        s << "CriticStats(min=" << c.min << ", mean=" << c.mean << ", max=" << c.max << ")";
+        return s.str();
+      });
   py::class_<CycleReport> report(m, "CycleReport", "What a control cycle sensed, how it weighed it and what it chose.");
   report.def_readonly("command", &CycleReport::command);
   bind_report_fields(report, [](const CycleReport& r) -> const CycleReport& { return r; });

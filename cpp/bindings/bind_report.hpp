@@ -44,7 +44,9 @@ void bind_report_fields(Class& cls, Get report) {
         return out;
       })
       .def_property_readonly("critic_vetoes", [report](const T& t) { return report(t).critic_vetoes; },
-                             "Per critic of the planner (in PlannerParams.critics order): samples it vetoed this cycle.");
+                             "Per critic of the planner (in PlannerParams.critics order): samples it vetoed this cycle.")
+      .def_property_readonly("critic_stats", [report](const T& t) { return report(t).critic_stats; },
+                             "Per critic (CriticStats): min, mean and max of its term over the admissible samples.");
 }
 
 }  // namespace fgdwa::py_convert

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "fgdwa/error.hpp"
@@ -114,6 +115,27 @@ void Controller::summarize(const PlanResult& plan) {
                     [&](int a, int b) { return plan.total(a) > plan.total(b); });
   report_.best.resize(k);
   for (std::size_t j = 0; j < k; ++j) score(plan, rollouts, order_[j], report_.best[j]);
+  summarize_critics(plan);
+}
+
+void Controller::summarize_critics(const PlanResult& plan) {
+  const std::size_t critics = plan.critic_names.size();
+  report_.critic_stats.assign(critics, CriticStats{});
+  if (order_.empty()) return;
+  for (std::size_t j = 0; j < critics; ++j) {
+    const auto c = static_cast<Eigen::Index>(j);
+    CriticStats& stats = report_.critic_stats[j];
+    stats.min = std::numeric_limits<double>::infinity();
+    stats.max = -std::numeric_limits<double>::infinity();
+    double sum = 0.0;
+    for (const int i : order_) {
+      const double term = plan.signed_weights[j] * plan.normalized(static_cast<Eigen::Index>(i), c);
+      stats.min = std::min(stats.min, term);
+      stats.max = std::max(stats.max, term);
+      sum += term;
+    }
+    stats.mean = sum / static_cast<double>(order_.size());
+  }
 }
 
 void Controller::score(const PlanResult& plan, const std::vector<Trajectory>& rollouts, int sample,

@@ -150,6 +150,7 @@ void Navigator::idle_report(const Vec2& position) {
   report.target = goal_;
   report.critic_names = controller_.plan_result().critic_names;
   report.critic_vetoes.assign(report.critic_names.size(), 0);
+  report.critic_stats.assign(report.critic_names.size(), CriticStats{});
   if (route_.path()) report.deviation = route_.path()->deviation(position);
 }
 

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarParams', 'AStarPlanner', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RecoveryTrigger', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
+__all__: list[str] = ['AStarParams', 'AStarPlanner', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CriticStats', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RecoveryTrigger', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -1793,6 +1793,21 @@ class ScoredRollout:
     @property
     def total(self) -> float:
         ...
+class CriticStats:
+    """
+    One critic's weighted term over a cycle's admissible samples (zeros when none).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def max(self) -> float:
+        ...
+    @property
+    def mean(self) -> float:
+        ...
+    @property
+    def min(self) -> float:
+        ...
 class CycleReport:
     """
     What a control cycle sensed, how it weighed it and what it chose.
@@ -1829,6 +1844,11 @@ class CycleReport:
     def critic_names(self) -> list[str]:
         """
         The planner's critics: the order of raw, terms and critic_vetoes.
+        """
+    @property
+    def critic_stats(self) -> list[CriticStats]:
+        """
+        Per critic (CriticStats): min, mean and max of its term over the admissible samples.
         """
     @property
     def critic_vetoes(self) -> list[int]:
@@ -2657,6 +2677,11 @@ class CycleRecord:
     def critic_names(self) -> list[str]:
         """
         The planner's critics: the order of raw, terms and critic_vetoes.
+        """
+    @property
+    def critic_stats(self) -> list[CriticStats]:
+        """
+        Per critic (CriticStats): min, mean and max of its term over the admissible samples.
         """
     @property
     def critic_vetoes(self) -> list[int]:

@@ -94,6 +94,16 @@ TEST(Navigator, FollowsToTheGoalAndReportsGoalReached) {
         for (const double term : b.terms) sum += term;
         EXPECT_EQ(sum, b.total);
       }
+      // Every admissible rollout's term lies within its critic's statistics.
+      ASSERT_EQ(r.control.critic_stats.size(), r.control.critic_names.size());
+      for (const ScoredRollout& b : r.control.best)
+        for (std::size_t j = 0; j < b.terms.size(); ++j) {
+          const CriticStats& stats = r.control.critic_stats[j];
+          EXPECT_LE(stats.min, b.terms[j]);
+          EXPECT_GE(stats.max, b.terms[j]);
+          EXPECT_LE(stats.min, stats.mean);
+          EXPECT_LE(stats.mean, stats.max + 1e-12);
+        }
     }
   }
   EXPECT_EQ(last, NavigatorMode::GoalReached);

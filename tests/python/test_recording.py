@@ -47,3 +47,47 @@ def test_inspect_names_a_missing_recording(tmp_path, capsys):
     assert "no such recording" in capsys.readouterr().err
     with pytest.raises(fgdwa.FgdwaError, match="no such recording"):
         read_recording(tmp_path / "none.rrd")
+
+
+def _values(table, column):
+    return [value[0] if value is not None and len(value) else None for value in table[column]]
+
+
+def test_a_recording_holds_the_critics_spread_vetoes_stage_times_and_mode_of_every_cycle(tmp_path):
+    from fgdwa.plot.recording import FAN, write_recording
+    from fgdwa.sim import trial_variation
+
+    scenario = resolve_scenario("demo")
+    result = run_scenario(scenario, scenario.planner, 1, max_steps=30, record_cycles=True, mapping="scan",
+                          navigator=fgdwa.NavigatorParams(record_top_k=12))
+    _, world, _ = trial_variation(scenario, 1)
+    rrd = write_recording(result, world, scenario.goal, scenario.footprint, tmp_path / "scan.rrd")
+    cycles = result.trace.cycles
+    critics = read_recording(rrd, "/critics/**")
+    for j, critic in enumerate(cycles[0].critics):
+        for column, name in enumerate(("min", "mean", "max")):
+            assert _values(critics, f"/critics/{critic}/{name}:Scalars:scalars") == \
+                [c.critic_stats[j, column] for c in cycles]
+        assert _values(critics, f"/critics/{critic}/vetoes:Scalars:scalars") == [c.critic_vetoes[j] for c in cycles]
+        # The chosen rollout is one of the admissible samples the spread covers.
+        for c in cycles:
+            if len(c.chosen):
+                assert c.critic_stats[j, 0] <= c.chosen_terms[j] <= c.critic_stats[j, 2]
+    times = read_recording(rrd, "/times/**")
+    assert _values(times, "/times/plan_ms:Scalars:scalars") == [1e3 * c.times["plan"] for c in cycles]
+    navigator = read_recording(rrd, "/navigator/**")
+    assert _values(navigator, "/navigator/mode:Scalars:scalars") == \
+        [float(int(fgdwa.NavigatorMode.__members__[c.mode])) for c in cycles]
+    # The fan by total and by each critic; the colourings differ where the critics disagree.
+    fan = read_recording(rrd, f"/{FAN}/**")
+    columns = {f"/{FAN}/total:LineStrips2D:colors"} | {f"/{FAN}/by_critic/{c}:LineStrips2D:colors"
+                                                        for c in cycles[0].critics}
+    assert columns <= set(fan.columns)
+    k = max(range(len(cycles)), key=lambda i: len(cycles[i].rollouts))
+    colourings = {tuple(fan[column][k]) for column in columns}
+    assert len(colourings) > 1
+    # The robot's own map, logged when a scan changed it: the first cycle at least.
+    own = read_recording(rrd, "/world/map/robot")
+    logged = [i for i, c in enumerate(cycles) if c.scan_map is not None]
+    assert logged and logged[0] == 0
+    assert own["/world/map/robot:Image:buffer"].notna().sum() == len(logged)

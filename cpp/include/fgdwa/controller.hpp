@@ -31,6 +31,14 @@ struct ScoredRollout {
   std::vector<double> terms;  // per critic: signed weight x normalised score; they sum to total
 };
 
+// One critic's weighted term over a cycle's admissible samples: how much it
+// could sway the choice (max - min) and where the chosen sample sat in it.
+struct CriticStats {
+  double min = 0.0;
+  double mean = 0.0;
+  double max = 0.0;
+};
+
 // What one control cycle sensed, how it weighed it and what the planner chose.
 struct CycleReport {
   Twist command;
@@ -47,6 +55,7 @@ struct CycleReport {
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reject reason
   std::vector<std::string> critic_names;  // the planner's critics, the order of every per-critic list
   std::vector<int> critic_vetoes;   // per critic: samples it vetoed
+  std::vector<CriticStats> critic_stats;  // per critic: its terms over the admissible samples (zeros when none)
   double perception_time = 0.0;  // s, wall clock: sensed points, I, D and weights
   double plan_time = 0.0;        // s, wall clock: the local planner
 };
@@ -99,6 +108,7 @@ class Controller {
  private:
   // The plan's command, status, choice and best rollouts into the report.
   void summarize(const PlanResult& plan);
+  void summarize_critics(const PlanResult& plan);  // reads order_: the admissible samples
   // One sample of the plan as recorded, its per-critic scores included.
   static void score(const PlanResult& plan, const std::vector<Trajectory>& rollouts, int sample, ScoredRollout& out);
 

@@ -70,6 +70,16 @@ class CycleTrace:
     terms: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))  # (k, critics) each best rollout's terms
     chosen_raw: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (critics,) the chosen sample's raw scores
     chosen_terms: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (critics,) its terms; they sum to its total
+    raw: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))  # (k, critics) each best rollout's raw scores
+    # (critics, 3) min, mean, max of each critic's term over the admissible samples
+    critic_stats: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
+    critic_vetoes: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))  # (critics,) samples vetoed
+    reject_counts: dict = field(default_factory=dict)  # samples per reject reason (RejectReason names)
+    trigger: str = "None"  # what started the recovery under way (RecoveryTrigger name)
+    failure: str = "None"  # why the navigator gave up (FailureReason name)
+    times: dict = field(default_factory=dict)  # s, wall clock per stage (tracking, map, global, perception, plan)
+    # the robot's own map (OccupancyGrid) after this cycle, when the scan changed it (mapping="scan"); else None
+    scan_map: Optional[OccupancyGrid] = None
 
 
 @dataclass
@@ -350,7 +360,8 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         deltas.append(record.delta)
         planned = planned or record.planned
         if options.record_cycles:
-            cycles.append(_trace(record, scan, params.n_steps))
+            changed = scanning and (not cycles or record.new_cells > 0)
+            cycles.append(_trace(record, scan, params.n_steps, robot.map if changed else None))
         modes.append(record.mode.name)
         statuses.append(record.status.name if record.planned else record.mode.name)
         targets.append(record.target)
@@ -449,8 +460,14 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     return EpisodeResult(summary, motion, trace, context, contact)
 
 
-def _trace(record, scan, n_steps: int) -> CycleTrace:
+def _enum_name(value) -> str:
+    """An enum value's C++ name ("None", not Python's "None_")."""
+    return value.name.rstrip("_")
+
+
+def _trace(record, scan, n_steps: int, scan_map=None) -> CycleTrace:
     best = record.best
+    critics = len(record.critic_names)
     rollouts = np.array([b.poses for b in best], dtype=float).reshape(len(best), n_steps, 3)
     return CycleTrace(mode=record.mode.name, rollouts=rollouts, totals=np.array([b.total for b in best], dtype=float),
                       chosen=np.asarray(record.chosen_rollout, dtype=float).reshape(-1, 3),
@@ -458,9 +475,16 @@ def _trace(record, scan, n_steps: int) -> CycleTrace:
                       tracked=np.array([[d.center[0], d.center[1], d.radius, d.velocity[0], d.velocity[1]]
                                         for d in record.tracked], dtype=float).reshape(-1, 5),
                       critics=tuple(record.critic_names),
-                      terms=np.array([b.terms for b in best], dtype=float).reshape(len(best), len(record.critic_names)),
+                      terms=np.array([b.terms for b in best], dtype=float).reshape(len(best), critics),
                       chosen_raw=np.array(record.choice.raw, dtype=float),
-                      chosen_terms=np.array(record.choice.terms, dtype=float))
+                      chosen_terms=np.array(record.choice.terms, dtype=float),
+                      raw=np.array([b.raw for b in best], dtype=float).reshape(len(best), critics),
+                      critic_stats=np.array([(c.min, c.mean, c.max) for c in record.critic_stats],
+                                            dtype=float).reshape(-1, 3),
+                      critic_vetoes=np.array(record.critic_vetoes, dtype=int),
+                      reject_counts=dict(record.reject_counts),
+                      trigger=_enum_name(record.trigger), failure=_enum_name(record.failure), times=dict(record.times),
+                      scan_map=scan_map)
 
 
 def _navigator_map(world: World, start, goal) -> OccupancyGrid:
