@@ -63,7 +63,7 @@ def cmd_demo(args: argparse.Namespace) -> int:
 def cmd_inspect(args: argparse.Namespace) -> int:
     from fgdwa.plot.recording import open_recording
 
-    return open_recording(args.recording, web=args.web)
+    return open_recording(args.recording, web=args.web, web_port=args.web_port)
 
 
 def cmd_run(args: argparse.Namespace) -> int:
@@ -249,6 +249,8 @@ def build_parser() -> argparse.ArgumentParser:
                                          "or its web viewer when there is no display")
     ins.add_argument("recording", help="a .rrd file")
     ins.add_argument("--web", action="store_true", help="the web viewer even with a display")
+    ins.add_argument("--web-port", type=int, default=None, metavar="PORT",
+                     help="the web viewer's port (default 9090); open http://localhost:PORT")
     ins.set_defaults(func=lambda args, argv: cmd_inspect(args))
     irs = sub.add_parser("irsim", help="run an IR-SIM world whose robots name behavior fgdwa (needs ir-sim: "
                                        "pip install 'fgdwa[irsim]'); prints each robot's outcome by IR-SIM's flags")
