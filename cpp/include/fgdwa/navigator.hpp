@@ -96,6 +96,7 @@ class Navigator {
   const Controller& controller() const { return controller_; }
   const Tracker& tracker() const { return world_.tracker(); }
   const OccupancyGrid& map() const { return world_.map(); }
+  const WorldModel& world_model() const { return world_; }
   MapMode map_mode() const { return world_.mode(); }
   const NavigatorParams& params() const { return params_; }
   const std::shared_ptr<const GlobalPath>& path() const { return route_.path(); }
