@@ -7,7 +7,7 @@ OUT ?= out
 JOBS ?= 2
 # ROS 1 from Debian's archive, for fgdwa_node and its test (docs/ros.md).
 ROS_PACKAGES := ros-core-dev ros-core-python-dev libtf2-ros-dev python3-tf2-ros libmove-base-msgs-dev \
-	python3-move-base-msgs libactionlib-dev python3-actionlib
+	python3-move-base-msgs libactionlib-dev python3-actionlib python3-gencpp python3-genpy
 # chromium: the test that opens a recording in Rerun's web viewer looks at it through headless Chromium.
 # python3-venv and python3-dev: Debian's python3 makes no virtual environment
 # without the one and builds no extension without the other's headers.
