@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PolygonStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Path.h>
 #include <std_msgs/String.h>
@@ -63,6 +64,18 @@ NavigatorNode::NavigatorNode(ros::NodeHandle nh, ros::NodeHandle private_nh, Nod
   markers_pub_ = private_nh_.advertise<visualization_msgs::MarkerArray>("rollouts", 1);
   diagnostics_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("diagnostics", 10);
   events_pub_ = private_nh_.advertise<std_msgs::String>("events", 10, true);
+  evaluation_pub_ = private_nh_.advertise<fgdwa_ros::LocalPlanEvaluation>("evaluation", 1);
+  map_pub_ = private_nh_.advertise<nav_msgs::OccupancyGrid>("map", 1, true);
+  footprint_pub_ = private_nh_.advertise<geometry_msgs::PolygonStamped>("footprint", 1, true);
+  {
+    const auto& critics = config_.planner.critics;
+    for (std::size_t i = 0; i < critics.size(); ++i)
+      if (critics[i].name == p.rollout_colour_by) colour_critic_ = static_cast<int>(i);
+    // Stamp 0: rviz places it with the newest transform of the base, whenever it arrives.
+    std_msgs::Header header;
+    header.frame_id = p.base_frame;
+    footprint_pub_.publish(to_polygon(config_.footprint, header));
+  }
   scan_sub_ = nh_.subscribe(p.scan_topic, 1, &NavigatorNode::on_scan, this);
   odom_sub_ = nh_.subscribe(p.odom_topic, 1, &NavigatorNode::on_odom, this);
   if (p.mapping == "known") map_sub_ = nh_.subscribe(p.map_topic, 1, &NavigatorNode::on_map, this);
@@ -311,6 +324,7 @@ std::optional<std::string> NavigatorNode::ensure_navigator(const fgdwa::Pose2& r
                                                   fgdwa::kDefaultPassingFactors, config_.detect_window);
   map_changed_ = false;
   path_version_ = -1;
+  map_version_ = -1;
   ++navigators_;
   navigator_->set_goal(goal_);
   std::ostringstream event;
@@ -407,7 +421,12 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
     path_version_ = navigator_->path_version();
   }
   if (local_plan_pub_.getNumSubscribers() > 0) local_plan_pub_.publish(to_path(record.control.choice.poses, header));
-  if (markers_pub_.getNumSubscribers() > 0) markers_pub_.publish(rollout_markers(record, header));
+  const fgdwa::PlanResult& plan = navigator_->plan_result();
+  const std::vector<fgdwa::Trajectory>& rollouts = navigator_->planner().rollouts();
+  if (markers_pub_.getNumSubscribers() > 0)
+    markers_pub_.publish(rollout_markers(record, plan, rollouts, colour_critic_, header));
+  if (evaluation_pub_.getNumSubscribers() > 0) evaluation_pub_.publish(evaluation(record, plan, rollouts, header));
+  publish_map(now);
 
   diagnostic_msgs::DiagnosticArray array;
   array.header = header;
@@ -457,6 +476,19 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
   add("cycle_ms", number(cycle_ms));
   array.status.push_back(status);
   diagnostics_pub_.publish(array);
+}
+
+void NavigatorNode::publish_map(const ros::Time& now) {
+  constexpr double map_rate = 2.0;  // Hz at most: a 5 cm map of BARN's field is about 20 kB, a city block's megabytes
+  const fgdwa::WorldModel& world = navigator_->world_model();
+  if (map_pub_.getNumSubscribers() == 0 || world.version() == map_version_) return;
+  if (map_version_ >= 0 && (now - map_published_).toSec() < 1.0 / map_rate) return;
+  std_msgs::Header header;
+  header.stamp = now;
+  header.frame_id = config_.node.global_frame;
+  map_pub_.publish(to_occupancy_grid(world.map(), world.unknown_cells(), header));
+  map_version_ = world.version();
+  map_published_ = now;
 }
 
 void NavigatorNode::publish_event(const std::string& json) {

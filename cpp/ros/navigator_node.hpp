@@ -64,6 +64,8 @@ class NavigatorNode {
   void publish_cycle(const fgdwa::CycleRecord& record, const ros::Time& now, double step_ms, double cycle_ms,
                      const fgdwa::Scan& scan, const ros::Time& scan_stamp);
   void publish_event(const std::string& json);
+  // The navigator's map on ~map when someone listens and its cells changed, at most map_rate a second.
+  void publish_map(const ros::Time& now);
 
   ros::NodeHandle nh_, private_nh_;
   NodeConfig config_;
@@ -72,6 +74,7 @@ class NavigatorNode {
   actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction> action_;
   ros::Subscriber scan_sub_, odom_sub_, map_sub_, simple_goal_sub_;
   ros::Publisher cmd_pub_, global_plan_pub_, local_plan_pub_, markers_pub_, diagnostics_pub_, events_pub_;
+  ros::Publisher evaluation_pub_, map_pub_, footprint_pub_;
   ros::Timer timer_;
 
   sensor_msgs::LaserScan::ConstPtr scan_;
@@ -92,6 +95,9 @@ class NavigatorNode {
   fgdwa::Vec2 goal_ = fgdwa::Vec2::Zero();
   ros::Time goal_received_;
   int path_version_ = -1;
+  int colour_critic_ = -1;  // ~rollout_colour_by as an index into the planner's critics, -1 for the total
+  int map_version_ = -1;    // the world model's version last published on ~map (-1: none of this navigator's)
+  ros::Time map_published_;
   ros::Time start_time_;
   std::vector<double> cycle_ms_;  // this goal's cycles
   std::vector<double> all_cycle_ms_;

@@ -259,6 +259,7 @@ std::vector<Entry> entries(NodeConfig& c) {
       number("map_resolution", n.map_resolution), number("map_margin", n.map_margin),
       integer("occupied_threshold", n.occupied_threshold), number("scan_timeout", n.scan_timeout),
       number("odom_timeout", n.odom_timeout), number("transform_timeout", n.transform_timeout),
+      text("rollout_colour_by", n.rollout_colour_by),
       footprint(c.footprint), footprint_radius(c.footprint), flag("fuzzy", c.fuzzy),
       number("lidar/noise_std", c.lidar_noise_std),
   };
@@ -416,10 +417,19 @@ NodeConfig read_config(const ros::NodeHandle& private_nh) {
   lidar.noise_std = config.lidar_noise_std;
   check("lidar", lidar);
   // Critic names and their params are checked when a planner is built: build one now, not at the first goal.
+  std::vector<std::string> critic_names;
   try {
     fgdwa::LocalPlanner planner(config.limits, config.footprint, config.planner);
+    critic_names = planner.last_result().critic_names;
   } catch (const Error& e) {
     throw Error(std::string("parameters ~planner/critics: ") + e.what());
+  }
+  const std::string& colour_by = config.node.rollout_colour_by;
+  if (colour_by != "total" && std::find(critic_names.begin(), critic_names.end(), colour_by) == critic_names.end()) {
+    std::string allowed = "total";
+    for (const std::string& name : critic_names) allowed += ", " + name;
+    throw Error("parameter ~rollout_colour_by = " + json_text(colour_by) + ": expected one of " + allowed +
+                " (total, or a critic of ~planner/critics)");
   }
   return config;
 }

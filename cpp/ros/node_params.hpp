@@ -34,6 +34,7 @@ struct NodeParams {
   double scan_timeout = 0.5;                // s without a new scan before the robot stops and the goal aborts
   double odom_timeout = 0.5;                // s without new odometry, the same
   double transform_timeout = 0.1;           // s waited for a transform (goal, laser) before giving up on it
+  std::string rollout_colour_by = "total";  // ~rollouts' colour: "total" or one of ~planner/critics' names
   void validate() const;
 };
 

@@ -2,6 +2,11 @@
 // Between ROS messages and fgdwa's types. Pure functions: no node, no TF.
 #include <string>
 
+#include <cstdint>
+#include <vector>
+
+#include <fgdwa_ros/LocalPlanEvaluation.h>
+#include <geometry_msgs/PolygonStamped.h>
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/Quaternion.h>
 #include <nav_msgs/OccupancyGrid.h>
@@ -13,6 +18,8 @@
 #include "fgdwa/grid.hpp"
 #include "fgdwa/navigator.hpp"
 #include "fgdwa/perception.hpp"
+#include "fgdwa/planner.hpp"
+#include "fgdwa/robot.hpp"
 
 namespace fgdwa_ros {
 
@@ -37,8 +44,35 @@ fgdwa::OccupancyGrid to_grid(const nav_msgs::OccupancyGrid& msg, int threshold);
 nav_msgs::Path to_path(const fgdwa::GlobalPath& path, const std_msgs::Header& header);
 nav_msgs::Path to_path(const fgdwa::Trajectory& poses, const std_msgs::Header& header);
 
-// The rollout fan of one cycle: the record's best-scored rollouts (brighter
-// the better) and the chosen one in green, replacing the previous cycle's.
-visualization_msgs::MarkerArray rollout_markers(const fgdwa::CycleRecord& record, const std_msgs::Header& header);
+// One cycle's evaluation: every sample of `plan` with its rollout (`rollouts`,
+// one per sample, as the planner made them) and each critic's raw score,
+// normalised score, signed weight and term. `record` gives the mode, the
+// command and whether the planner ran; when it did not, no samples.
+fgdwa_ros::LocalPlanEvaluation evaluation(const fgdwa::CycleRecord& record, const fgdwa::PlanResult& plan,
+                                          const std::vector<fgdwa::Trajectory>& rollouts,
+                                          const std_msgs::Header& header);
+
+// What colours the rollout fan: the total (critic -1) or critic `critic`'s term.
+// Per cycle, the lowest value over the admissible samples is blue, the middle
+// magenta, the highest yellow (the more it raises the total, the yellower);
+// all equal: magenta.
+std_msgs::ColorRGBA colour_scale(double t);
+
+// The rollout fan of one cycle, replacing the previous one's: the admissible
+// rollouts as one line list coloured by `critic` (-1: the total) as
+// colour_scale says, in sample order; the rejected ones in faint grey; the
+// chosen one in green. Nothing but the clearing when the planner did not run.
+visualization_msgs::MarkerArray rollout_markers(const fgdwa::CycleRecord& record, const fgdwa::PlanResult& plan,
+                                                const std::vector<fgdwa::Trajectory>& rollouts, int critic,
+                                                const std_msgs::Header& header);
+
+// A map as costmaps publish it: occupied 100, free 0, and -1 where `unknown`
+// (one entry per cell, or empty when every cell is known) is set.
+nav_msgs::OccupancyGrid to_occupancy_grid(const fgdwa::OccupancyGrid& grid, const std::vector<std::uint8_t>& unknown,
+                                          const std_msgs::Header& header);
+
+// The footprint in the base frame; a circle as a polygon of `circle_vertices` vertices.
+geometry_msgs::PolygonStamped to_polygon(const fgdwa::Footprint& footprint, const std_msgs::Header& header,
+                                         int circle_vertices = 32);
 
 }  // namespace fgdwa_ros
