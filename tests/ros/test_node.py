@@ -7,6 +7,9 @@ ctest runs it (tests/ros/CMakeLists.txt). In turn:
 1. bad parameters: the node refuses to start and names the parameter;
 2. the BARN world through ROS: the move_base action ends SUCCEEDED at the goal,
    the referee saw no collision, every cmd_vel was inside the robot's limits;
+   what the node shows of it (check_views): the per-critic evaluation of each
+   cycle, the rollout fan coloured by the clearance critic, the map it builds
+   from the scans, the footprint, and the rviz config's topics;
 3. bad goals (a frame with no transform, NaN) are aborted with the reason;
 4. a preempt: the action ends PREEMPTED and the robot stops;
 5. the scan goes silent: the action ends ABORTED naming the scan, the robot stops;
@@ -212,6 +215,9 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     check(code == 2 and "~controller_frequency = " in message and "must be a finite number > 0 (Hz)" in message,
           f"move_base's controller_frequency: exit {code}, output {message.strip()!r}")
     print("move_base names read, a typo refused with the nearest names", flush=True)
+    code, message = start_up({"rollout_colour_by": "nope"})
+    check(code == 2 and "~rollout_colour_by = \"nope\": expected one of total, heading, clearance, velocity, "
+          "similarity" in message, f"bad rollout_colour_by: exit {code}, output {message.strip()!r}")
 
     world = load_barn(barn).world(args.world)
     commands, cycle_ms, step_ms, stages_ms, referee, events = [], [], [], [], {}, []
@@ -219,10 +225,13 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     def on_cmd(msg):
         commands.append((time.monotonic(), msg.linear.x, msg.angular.z))
 
+    cycles = {}  # the header stamp (ns) of each cycle's diagnostics -> their values
+
     def on_diagnostics(msg):
         for status in msg.status:
             values = {kv.key: kv.value for kv in status.values}
             if "cycle_ms" in values:
+                cycles[msg.header.stamp.to_nsec()] = values
                 cycle_ms.append(float(values["cycle_ms"]))
                 step_ms.append(float(values["step_ms"]))
                 stages_ms.append([float(v) for v in values["stages_ms"].split()])
@@ -253,7 +262,9 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     sim_env = dict(env, PYTHONPATH=os.pathsep.join(filter(None, [site, env.get("PYTHONPATH")])))
     procs.start("sim_jackal", [sys.executable, str(HERE / "sim_jackal.py"), "--barn", str(barn), "--world",
                                str(args.world), "--scan-rate", str(args.scan_rate)], env=sim_env)
-    launch = procs.start("fgdwa_node", ["roslaunch", "fgdwa_ros", "barn_jackal.launch"])
+    launch = procs.start("fgdwa_node", ["roslaunch", "fgdwa_ros", "barn_jackal.launch",
+                                        f"rollout_colour_by:={COLOUR_BY}"])
+    views = Views(prefix)
     client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
     check(client.wait_for_server(rospy.Duration(30)), "the move_base action server of fgdwa_node did not come up")
     wait_for(lambda: referee.get("scans", 0) > 0, 30, "the simulated Jackal's first scan")
@@ -305,6 +316,10 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     track.clear()
     sent = time.monotonic()
     client.send_goal(goal(*odom_goal))
+    # The first cycles' evaluations and fans; then no more, so that decoding them here
+    # does not take the CPU the node and the simulator run on for the rest of the run.
+    wait_for(views.enough, 30, f"{Views.CYCLES} evaluations and rollout fans from fgdwa_node")
+    views.stop_cycles()
     state, text = wait_result(args.time_limit + 10)
     wall = time.monotonic() - sent
     time.sleep(0.3)  # the referee's last report
@@ -325,6 +340,7 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
           flush=True)
     barn_commands = commands[first_cmd:]
     check(len(barn_commands) > 10, f"only {len(barn_commands)} commands on cmd_vel")
+    check_views(views, cycles, events, config, world, referee, prefix, master)
 
     # 3. Bad goals: aborted with the reason.
     client.send_goal(goal(1.0, 0.0, frame="nowhere"))
@@ -416,6 +432,222 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     summary["known_map"] = text
     (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     return 0
+
+
+COLOUR_BY = "clearance"  # the critic the test has the rollout fan coloured by
+
+
+class Views:
+    """What fgdwa_node publishes to be looked at: the first cycles' evaluations and
+    rollout fans, every map, the footprint."""
+
+    CYCLES = 20
+
+    def __init__(self, prefix: Path):
+        import rospy
+        from geometry_msgs.msg import PolygonStamped
+        from nav_msgs.msg import OccupancyGrid
+        from visualization_msgs.msg import MarkerArray
+
+        # The node's messages, generated at build time into its prefix.
+        sys.path.insert(0, str(prefix / "lib" / "python3" / "dist-packages"))
+        from fgdwa_ros.msg import LocalPlanEvaluation
+
+        self.evaluations, self.fans, self.maps, self.footprints = {}, {}, [], []
+        big = 1 << 24  # rospy's buffer must hold a whole evaluation (a few hundred kB) or it lags behind
+        self.subscribers = [
+            rospy.Subscriber("fgdwa_node/evaluation", LocalPlanEvaluation,
+                             lambda m: self.evaluations.setdefault(m.header.stamp.to_nsec(), m),
+                             queue_size=50, buff_size=big),
+            rospy.Subscriber("fgdwa_node/rollouts", MarkerArray, self.on_fan, queue_size=50, buff_size=big)]
+        rospy.Subscriber("fgdwa_node/map", OccupancyGrid, lambda m: self.maps.append((time.monotonic(), m)),
+                         queue_size=10, buff_size=big)
+        rospy.Subscriber("fgdwa_node/footprint", PolygonStamped, self.footprints.append, queue_size=1)
+
+    def on_fan(self, msg) -> None:
+        stamps = {m.header.stamp.to_nsec() for m in msg.markers if m.action == m.ADD}
+        if len(stamps) == 1:
+            self.fans.setdefault(stamps.pop(), msg)
+
+    def enough(self) -> bool:
+        planned = [e for e in self.evaluations.values() if e.planned]
+        return len(planned) >= self.CYCLES and len(self.fans) >= self.CYCLES
+
+    def stop_cycles(self) -> None:
+        for subscriber in self.subscribers:
+            subscriber.unregister()
+
+
+def colour_scale(t: float):
+    """The fan's colour scale, as docs/ros.md states it: blue, magenta, yellow."""
+    stops = ((0.15, 0.25, 1.0), (0.9, 0.2, 0.65), (1.0, 0.9, 0.1))
+    t = min(max(t, 0.0), 1.0) if math.isfinite(t) else 0.5
+    k = 0 if t < 0.5 else 1
+    u = 2.0 * t - k
+    return tuple(a + u * (b - a) for a, b in zip(stops[k], stops[k + 1]))
+
+
+def fan_colours(evaluation, critic):
+    """Per admissible rollout of `evaluation`, in order: its colour with the fan coloured
+    by `critic`'s term (None: by the total)."""
+    def value(twist):
+        return twist.total if critic is None else twist.scores[evaluation.critic_names.index(critic)].term
+
+    admissible = [t for t in evaluation.twists if not t.rejected]
+    values = [value(t) for t in admissible]
+    low, high = min(values), max(values)
+    return [colour_scale((v - low) / (high - low) if high - low > 1e-12 else 0.5) for v in values], admissible
+
+
+def check_views(views: Views, cycles: dict, events: list, config: dict, world, referee: dict, prefix: Path,
+                master) -> None:
+    """The content of what fgdwa_node publishes to be looked at, against the node's
+    settings, its diagnostics of the same cycle and the world the simulated Jackal drives in."""
+    import numpy as np
+    import yaml
+
+    import fgdwa
+
+    settings = next(e for e in events if e.get("event") == "config")["config"]
+    built = next(e for e in events if e.get("event") == "navigator")
+    critics = [c["name"] for c in fgdwa.planner_preset(config["preset"]).params.critics]
+    check([c["name"] for c in settings["planner/critics"]] == critics,
+          f"the node's critics {settings['planner/critics']} are not the {config['preset']} preset's {critics}")
+    samples = settings["planner/window/n_v"] * settings["planner/window/n_omega"]
+
+    # The evaluation: every sample with each critic's part, the best one what was commanded.
+    planned = [e for e in views.evaluations.values() if e.planned]
+    checked_command = 0
+    for ev in planned:
+        check(list(ev.critic_names) == critics, f"evaluation's critics {ev.critic_names}, configured {critics}")
+        check(ev.header.frame_id == "odom", f"evaluation in frame {ev.header.frame_id!r}")
+        check(len(ev.twists) == samples, f"evaluation of {len(ev.twists)} rollouts, the window has {samples}")
+        check(len(ev.weights) == len(critics) and len(ev.critic_vetoes) == len(critics),
+              f"evaluation's weights {ev.weights}, vetoes {ev.critic_vetoes}")
+        admissible = 0
+        for twist in ev.twists:
+            check([s.name for s in twist.scores] == critics, f"rollout's critics {[s.name for s in twist.scores]}")
+            check(len(twist.poses) >= 2, f"a rollout of {len(twist.poses)} poses")
+            for score in twist.scores:
+                check(abs(score.term - score.scale * score.normalized_score) <= 1e-12 * max(1.0, abs(score.term)),
+                      f"{score.name}: term {score.term} is not scale {score.scale} x {score.normalized_score}")
+            terms = sum(s.term for s in twist.scores)
+            if twist.rejected:
+                check(twist.total == -math.inf and terms == 0.0,
+                      f"rejected ({twist.rejected}) rollout: total {twist.total}, terms {terms}")
+                check(bool(twist.vetoed_by) == (twist.rejected == "Critic"),
+                      f"rejected {twist.rejected}, vetoed by {twist.vetoed_by!r}")
+            else:
+                admissible += 1
+                check(abs(terms - twist.total) <= 1e-9 * max(1.0, abs(twist.total)),
+                      f"terms sum to {terms!r}, total {twist.total!r}")
+        check(sum(ev.critic_vetoes) == sum(t.rejected == "Critic" for t in ev.twists),
+              f"vetoes {list(ev.critic_vetoes)} against the rollouts' vetoes")
+        cycle = cycles.get(ev.header.stamp.to_nsec())
+        if cycle is not None:
+            check(int(cycle["admissible"]) == admissible,
+                  f"{admissible} admissible rollouts, the cycle's diagnostics say {cycle['admissible']}")
+            check((float(cycle["v"]), float(cycle["omega"])) == (ev.command.linear.x, ev.command.angular.z),
+                  f"evaluation's command {ev.command}, the cycle's ({cycle['v']}, {cycle['omega']})")
+        check(0 <= ev.best_index < len(ev.twists), f"best index {ev.best_index} of {len(ev.twists)}")
+        best = ev.twists[ev.best_index]
+        if ev.mode == "Following":
+            check((best.twist.linear.x, best.twist.angular.z) == (ev.command.linear.x, ev.command.angular.z),
+                  f"best rollout's twist {best.twist}, commanded {ev.command}")
+            checked_command += cycle is not None
+    check(checked_command >= 5, f"only {checked_command} evaluations matched a cycle's diagnostics")
+    print(f"evaluation: {len(planned)} cycles of {samples} rollouts x {len(critics)} critics ({', '.join(critics)}); "
+          f"terms sum to each total, best index commanded ({checked_command} cycles against the diagnostics)",
+          flush=True)
+
+    # The fan: the admissible rollouts coloured by the clearance critic's term, as the evaluation gives them.
+    matched = differs_from_total = varied = 0
+    for stamp, fan in views.fans.items():
+        ev = views.evaluations.get(stamp)
+        if ev is None or not ev.planned:
+            continue
+        matched += 1
+        markers = {m.ns: m for m in fan.markers if m.action == m.ADD}
+        expected, admissible = fan_colours(ev, COLOUR_BY)
+        by_total, _ = fan_colours(ev, None)
+        rollouts = markers["rollouts"]
+        points = [(p.x, p.y) for t in admissible for a, b in zip(t.poses[:-1], t.poses[1:]) for p in (a, b)]
+        colours = [c for t, c in zip(admissible, expected) for _ in range(2 * (len(t.poses) - 1))]
+        check([(p.x, p.y) for p in rollouts.points] == points, "the fan's lines are not the admissible rollouts")
+        got = [(c.r, c.g, c.b) for c in rollouts.colors]
+        check(len(got) == len(colours) and all(max(abs(a - b) for a, b in zip(g, e)) < 1e-6
+                                               for g, e in zip(got, colours)),
+              f"the fan's colours are not the {COLOUR_BY} terms' on the scale")
+        varied += len({tuple(round(x, 4) for x in c) for c in expected}) > 1
+        differs_from_total += any(max(abs(a - b) for a, b in zip(x, y)) > 1e-3 for x, y in zip(expected, by_total))
+        chosen = markers.get("chosen")
+        best = ev.twists[ev.best_index]
+        check(chosen is not None and [(p.x, p.y) for p in chosen.points] == [(p.x, p.y) for p in best.poses],
+              "the chosen marker is not the best index's rollout")
+    check(matched >= 5, f"only {matched} rollout fans matched an evaluation")
+    check(varied >= matched // 2 and differs_from_total > 0,
+          f"the fan's colours vary in {varied} of {matched} cycles, differ from the total's in {differs_from_total}")
+    print(f"rollout fan: {matched} cycles coloured by the {COLOUR_BY} term, as the evaluation's terms put it on "
+          f"the scale (varying in {varied}, unlike the total's in {differs_from_total})", flush=True)
+
+    # The map from the scans: the navigator's layout, occupied cells on the world's obstacles.
+    check(views.maps, "no map on fgdwa_node/map")
+    times = [m.header.stamp.to_sec() for _, m in views.maps]
+    check(all(b - a >= 0.5 - 1e-6 for a, b in zip(times, times[1:])),
+          f"maps {min(np.diff(times)) if len(times) > 1 else 0:.2f} s apart: more often than 2 Hz")
+    grid = views.maps[-1][1]
+    layout = built["layout"]
+    info = grid.info
+    check(grid.header.frame_id == "odom" and abs(info.resolution - config["map_resolution"]) < 1e-6
+          and (info.height, info.width) == (layout["rows"], layout["cols"])
+          and abs(info.origin.position.x - layout["origin"][0]) < 1e-9
+          and abs(info.origin.position.y - layout["origin"][1]) < 1e-9,
+          f"map {info.width} x {info.height} of {info.resolution} m at ({info.origin.position.x}, "
+          f"{info.origin.position.y}) in {grid.header.frame_id!r}; the navigator's layout is {layout}")
+    cells = np.asarray(grid.data, dtype=np.int8).reshape(info.height, info.width)
+    values, counts = np.unique(cells, return_counts=True)
+    check(set(values.tolist()) == {-1, 0, 100}, f"map values {dict(zip(values.tolist(), counts.tolist()))}")
+    rows, cols = np.nonzero(cells == 100)
+    odom = np.column_stack([info.origin.position.x + (cols + 0.5) * info.resolution,
+                            info.origin.position.y + (rows + 0.5) * info.resolution])
+    # odom is the world's frame turned about the start (sim_jackal.py), by the referee's two headings' difference.
+    sx, sy, _ = world.start
+    turn = referee["odom_pose"][2] - referee["map_pose"][2]
+    c, s = math.cos(-turn), math.sin(-turn)
+    in_world = np.column_stack([sx + c * odom[:, 0] - s * odom[:, 1], sy + s * odom[:, 0] + c * odom[:, 1]])
+    distance = fgdwa.DistanceField(world.grid).distance(in_world)
+    near = float(np.mean(distance <= 0.15))
+    check(len(rows) > 100 and near >= 0.95,
+          f"{len(rows)} occupied cells, {100 * near:.1f} % of them within 0.15 m of the world's obstacles")
+    print(f"map: {info.width} x {info.height} cells of {info.resolution:.3f} m ({len(views.maps)} published, "
+          f"{counts[values == -1][0]} unknown, {len(rows)} occupied, {100 * near:.1f} % of those within 0.15 m "
+          f"of the world's obstacles, median {np.median(distance):.3f} m)", flush=True)
+
+    # The footprint: the jackal preset's rectangle in the base frame.
+    check(views.footprints, "no footprint on fgdwa_node/footprint")
+    footprint = views.footprints[-1]
+    vertices = np.asarray(fgdwa.robot_preset(config["robot"]).footprint.vertices)
+    got = np.asarray([(p.x, p.y) for p in footprint.polygon.points])
+    check(footprint.header.frame_id == "base_link" and got.shape == vertices.shape
+          and np.allclose(got, vertices, atol=1e-6),
+          f"footprint {got.tolist()} in {footprint.header.frame_id!r}, configured {vertices.tolist()}")
+
+    # The rviz config names topics the node publishes, with the types its displays take.
+    rviz = yaml.safe_load((prefix / "share" / "fgdwa_ros" / "config" / "fgdwa.rviz").read_text())
+    kinds = {"rviz/Map": "nav_msgs/OccupancyGrid", "rviz/Path": "nav_msgs/Path",
+             "rviz/MarkerArray": "visualization_msgs/MarkerArray", "rviz/Polygon": "geometry_msgs/PolygonStamped",
+             "rviz/LaserScan": "sensor_msgs/LaserScan"}
+    published = dict(master.getTopicTypes())
+    shown = 0
+    for display in rviz["Visualization Manager"]["Displays"]:
+        if display["Class"] in kinds:
+            topic = display.get("Topic") or display.get("Marker Topic")
+            check(published.get(topic) == kinds[display["Class"]],
+                  f"rviz display {display['Name']!r}: {topic} is {published.get(topic)}, not {kinds[display['Class']]}")
+            shown += 1
+    check(rviz["Visualization Manager"]["Global Options"]["Fixed Frame"] == "odom", "rviz's fixed frame is not odom")
+    print(f"footprint: {len(got)} vertices as configured; rviz config: {shown} displays on the node's topics",
+          flush=True)
 
 
 def replay(args, bag: Path, out: Path) -> None:
