@@ -479,7 +479,7 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
 }
 
 void NavigatorNode::publish_map(const ros::Time& now) {
-  constexpr double map_rate = 2.0;  // Hz at most: a 5 cm map of BARN's field is about 20 kB, a city block's megabytes
+  constexpr double map_rate = 2.0;  // Hz at most: a 5 cm map of BARN's field is about 40 kB, a city block's megabytes
   const fgdwa::WorldModel& world = navigator_->world_model();
   if (map_pub_.getNumSubscribers() == 0 || world.version() == map_version_) return;
   if (map_version_ >= 0 && (now - map_published_).toSec() < 1.0 / map_rate) return;
