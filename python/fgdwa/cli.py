@@ -114,7 +114,8 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 
 def cmd_experiment(args: argparse.Namespace, argv) -> int:
-    from fgdwa.bench.experiments import EXPERIMENTS, run_experiments
+    from fgdwa.bench.experiments import EXPERIMENTS, run_experiments, trial_failures
+    from fgdwa.bench.recordings import print_failures
     from fgdwa.bench.report import save_experiment, terminal_report, write_results
     from fgdwa.bench.runner import run_tasks
 
@@ -129,6 +130,13 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
                               scheduler=args.scheduler, workers=args.workers, progress=not args.no_progress,
                               options=options)
     trials_wall = time.perf_counter() - tic
+    recordings = {}
+    if args.record_failures:
+        from fgdwa.bench.experiments import record_failed_trials
+
+        recordings = record_failed_trials(results, args.record_failures, executor=args.executor,
+                                          scheduler=args.scheduler, workers=args.workers,
+                                          progress=not args.no_progress)
     drawn = [{} for _ in results]
     surfaces = None
     if not args.no_figures:
@@ -156,6 +164,7 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
         d = save_experiment(result, out, paths)
         print()
         print(terminal_report(d))
+        print_failures(trial_failures(result, recordings), ("planner", "trial"))
         print(f"files: {out / result.spec.name}/")
     written = []
     if len(names) > 1:
@@ -207,6 +216,7 @@ def build_parser() -> argparse.ArgumentParser:
     from fgdwa.bench.barn import register_barn_commands
     from fgdwa.bench.dynamic import register_dynamic_commands
     from fgdwa.bench.options import add_executor_arguments, add_output_arguments, positive
+    from fgdwa.bench.recordings import add_record_failures_argument
 
     parser = argparse.ArgumentParser(prog="fgdwa", description="fgdwa: dynamic window local planning.")
     parser.add_argument("--version", action="version", version=f"fgdwa {importlib.metadata.version('fgdwa')}")
@@ -244,6 +254,7 @@ def build_parser() -> argparse.ArgumentParser:
     add_executor_arguments(exp)
     add_output_arguments(exp, DEFAULT_EXPERIMENT_OUT, "the tables, figures and reports, one folder per experiment",
                          figures="the PNG figures")
+    add_record_failures_argument(exp)
     exp.set_defaults(func=cmd_experiment)
     ins = sub.add_parser("inspect", help="open a recording (fgdwa run ... --record FILE.rrd) in Rerun's viewer, "
                                          "or its web viewer when there is no display")

@@ -235,3 +235,27 @@ def test_navigator_and_episode_reject_bad_settings():
         run_episode(World(grid=grid), (0.5, 1.0, 0.0), (5.5, 1.0), mapping="lidar")
     with pytest.raises(FgdwaError, match="needs a grid"):
         run_episode(World(), (0.5, 1.0, 0.0), (5.5, 1.0), mapping="scan")
+
+
+def test_failed_runs_are_named_and_recorded(barn_file, tmp_path, capsys):
+    """A lidar that almost never returns leaves the map built from scans empty:
+    the robot drives into a wall. The table's line names why, and its recording
+    holds the run up to the collision."""
+    pytest.importorskip("rerun")
+    from fgdwa.cli import main
+    from fgdwa.plot.recording import read_recording
+
+    out, recordings = tmp_path / "barn", tmp_path / "rrd"
+    assert main(["barn", "--data", str(barn_file), "--worlds", "0", "--planners", "fgdwa", "--map", "scan",
+                 "--dropout", "0.99", "--executor", "serial", "--no-progress", "--no-figures", "--out", str(out),
+                 "--record-failures", str(recordings)]) == 0
+    printed = capsys.readouterr().out
+    with open(out / "runs.csv") as handle:
+        (row,) = list(csv.DictReader(handle))
+    assert row["outcome"] == "collision" and row["reason"].startswith("collision: the robot drove into")
+    path = recordings / "barn_0_fgdwa_scan_trial0.rrd"
+    assert f"world 0 planner fgdwa trial 0: {row['reason']} (fgdwa inspect {path})" in printed
+    (failed,) = json.loads((out / "summary.json").read_text())["failed"]
+    assert failed == {"world": 0, "planner": "fgdwa", "trial": 0, "outcome": "collision", "reason": row["reason"],
+                      "recording": str(path)}
+    assert len(read_recording(path, "/world/robot/true")) == int(round(float(row["time"]) / 0.1))

@@ -203,7 +203,7 @@ def test_failed_runs_can_be_recorded_and_the_recordings_hold_their_runs(tmp_path
     row = next(csv.DictReader(open(out / "runs.csv")))
     assert row["outcome"] == "collision"
     path = recordings / "dynamic_hard_0_fgdwa-notrack.rrd"
-    assert f"seed 0 fgdwa-notrack: {row['reason']} (fgdwa inspect {path})" in printed
+    assert f"seed 0 planner fgdwa-notrack: {row['reason']} (fgdwa inspect {path})" in printed
     summary = json.loads((out / "summary.json").read_text())
     assert summary["failed"][0]["recording"] == str(path)
     # The recording is that run: as many cycles as the run had steps, up to the collision.

@@ -300,6 +300,24 @@ def test_a_single_experiment_updates_the_results_page_from_saved_runs(tmp_path):
     assert "E1" in page and (out / "e1" / "e1.json").exists()
 
 
+def test_failed_trials_are_named_in_the_runs_table_and_recorded(tmp_path, capsys):
+    """30 cycles are too few to reach E1's goal: every trial times out, says how far it was, and is recorded."""
+    pytest.importorskip("rerun")
+    from fgdwa.plot.recording import read_recording
+
+    out, recordings = tmp_path / "r", tmp_path / "rrd"
+    assert main(["experiment", "e1", "--trials", "1", "--out", str(out), "--no-figures", "--no-progress",
+                 "--executor", "serial", "--max-steps", "30", "--record-failures", str(recordings)]) == 0
+    printed = capsys.readouterr().out
+    with open(out / "e1" / "e1_runs.csv") as handle:
+        rows = list(csv.DictReader(handle))
+    assert rows and all(r["outcome"] == "timeout" and r["reason"].startswith("timeout: ") for r in rows)
+    for row in rows:
+        path = recordings / f"e1_{row['planner']}_trial0.rrd"
+        assert f"planner {row['planner']} trial 0: {row['reason']} (fgdwa inspect {path})" in printed
+        assert len(read_recording(path, "/world/robot/true")) == 30
+
+
 def test_run_writes_png_and_a_readable_gif(tmp_path, capsys):
     from PIL import Image
 

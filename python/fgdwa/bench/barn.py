@@ -28,6 +28,8 @@ from fgdwa._core import (FgdwaError, LidarParams, NavigatorParams, OccupancyGrid
                          robot_preset)
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments, check_sensing, planner_list)
+from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, failure_entries,
+                                    print_failures, record_failures, run_outcomes)
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.runs import (OUTCOMES, Run, episode_columns, format_table, paths_followed, write_run_outputs,
                               written_files)
@@ -122,6 +124,7 @@ class BarnTask:
     trial: int
     seed: int
     setup: BarnSetup = field(default_factory=BarnSetup)
+    record: str = ""  # a path: keep every cycle and write the run there as a Rerun recording
 
 
 def barn_tasks(dataset: BarnDataset, world_ids: Sequence[int], planners: Sequence[str], mapping: str,
@@ -159,12 +162,19 @@ def run_barn_task(task: BarnTask) -> Run:
     robot = robot_preset("jackal")
     world = World(grid=OccupancyGrid(task.cells, task.resolution, task.origin))
     max_steps = int(math.floor(task.time_limit / setup.dt + 1e-9))
+    navigator = setup.navigator()
+    if task.record:
+        navigator.record_top_k = RECORDED_ROLLOUTS
     tic = time.perf_counter()
     result = run_episode(world, task.start, task.goal, limits=setup.limits(), footprint=robot.footprint,
                          params=params, max_steps=max_steps, goal_tolerance=task.goal_radius, lidar=setup.lidar(),
                          weight_policy=preset.weight_policy(), seed=task.seed, mapping=task.mapping,
-                         navigator=setup.navigator(), latency=setup.latency)
+                         navigator=navigator, latency=setup.latency, record_cycles=bool(task.record))
     wall = time.perf_counter() - tic
+    if task.record:
+        from fgdwa.plot.recording import write_recording
+
+        write_recording(result, world, task.goal, robot.footprint, task.record, title=barn_run_name(task))
     # The challenge knows three outcomes; running out of steps is its timeout.
     outcome = result.summary.outcome if result.summary.outcome in OUTCOMES else "timeout"
     success = outcome == "success"
@@ -176,6 +186,15 @@ def run_barn_task(task: BarnTask) -> Run:
     }
     return Run(row=row, cells=task.cells, extent=tuple(world.grid.extent), poses=result.motion.poses,
                paths=paths_followed(result), scan_map=result.context.scan_map)
+
+
+# What names a failed run in the terminal and in summary.json.
+FAILURE_KEYS = ("world", "planner", "trial")
+
+
+def barn_run_name(task: BarnTask) -> str:
+    """A run's name in file names: world, planner, mapping, trial."""
+    return f"barn_{task.world_id}_{task.planner}_{task.mapping}_trial{task.trial}"
 
 
 def run_barn(dataset: BarnDataset, worlds="all", planners: Sequence[str] = BARN_PLANNERS, mapping: str = "known",
@@ -207,15 +226,21 @@ def barn_command(args) -> int:
     world_ids = dataset.select_ids(args.worlds)
     planners = check_planners(args.planners)
     setup = BarnSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency)
-    tic = time.perf_counter()
-    runs = run_barn(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup=setup,
-                    executor=args.executor, scheduler=args.scheduler, workers=args.workers,
+    executor = dict(executor=args.executor, scheduler=args.scheduler, workers=args.workers,
                     progress=not args.no_progress)
+    tic = time.perf_counter()
+    tasks = barn_tasks(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup)
+    runs = run_tasks(tasks, run_barn_task, **executor)
     wall = time.perf_counter() - tic
+    recordings = None
+    if args.record_failures:
+        recordings = record_failures(tasks, run_outcomes(runs), run_barn_task, args.record_failures, barn_run_name, **executor)
+    failed = failure_entries(runs, FAILURE_KEYS, recordings)
     meta = {"data": str(dataset.source), "worlds": world_ids, "trials": args.trials, "seed": args.seed,
-            "setup": dataclasses.asdict(setup), "wall_time": wall}
+            "setup": dataclasses.asdict(setup), "wall_time": wall, "failed": failed}
     summary = write_barn_outputs(runs, args.out, args.mapping, meta, figure=not args.no_figures)
     print(format_summary(summary, args.mapping))
+    print_failures(failed, FAILURE_KEYS)
     print(written_files(runs, wall, args.out, figure=not args.no_figures))
     return 0
 
@@ -253,6 +278,7 @@ def register_barn_commands(subparsers) -> None:
     add_sensing_arguments(barn, BarnSetup())
     add_executor_arguments(barn)
     add_output_arguments(barn, "out/barn", "runs.csv, summary.json, failures.png")
+    add_record_failures_argument(barn)
     barn.set_defaults(func=lambda args, *_: barn_command(args))
     barn_sub = barn.add_subparsers(dest="barn_command", required=False, metavar="{import}")
     imp = barn_sub.add_parser(

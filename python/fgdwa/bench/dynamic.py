@@ -22,9 +22,11 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from fgdwa._core import FgdwaError, NavigatorParams
+from fgdwa._core import NavigatorParams
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments, check_sensing, planner_list)
+from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, print_failures,
+                                    record_failures, run_outcomes)
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.runs import Run, episode_columns, format_table, paths_followed, write_run_outputs, written_files
 from fgdwa.io.barn_data import parse_world_selection
@@ -73,6 +75,7 @@ class DynamicTask:
     seed: int
     planner: str  # a PLANNER_VARIANTS label
     setup: DynamicSetup = field(default_factory=DynamicSetup)
+    record: str = ""  # a path: keep every cycle and write the run there as a Rerun recording
 
 
 def check_variants(planners) -> list:
@@ -107,15 +110,20 @@ def field_document(task: DynamicTask) -> dict:
     return generate_field(task.level, task.seed, task.setup.noise_std, task.setup.dropout)
 
 
-def _episode(task: DynamicTask, record: bool = False):
-    """The task's scenario and its episode; ``record`` keeps every cycle, with the fan a recording shows."""
+def _episode(task: DynamicTask):
+    """The task's scenario and its episode (every cycle kept, with the fan a recording shows, when ``task.record``)."""
     scenario = scenario_from_dict(field_document(task), where=field_name(task.level, task.seed))
     preset, overrides = PLANNER_VARIANTS[task.planner]
     navigator = NavigatorParams(**overrides)
-    if record:
-        navigator.record_top_k = 40  # recorded only: it changes no choice
+    if task.record:
+        navigator.record_top_k = RECORDED_ROLLOUTS
     return scenario, run_scenario(scenario, preset, task.seed, navigator=navigator, latency=task.setup.latency,
-                                  record_cycles=record)
+                                  record_cycles=bool(task.record))
+
+
+def dynamic_run_name(task: DynamicTask) -> str:
+    """A run's name in file names: level, seed, planner."""
+    return f"{field_name(task.level, task.seed)}_{task.planner}"
 
 
 def run_dynamic_task(task: DynamicTask) -> Run:
@@ -127,6 +135,10 @@ def run_dynamic_task(task: DynamicTask) -> Run:
     row = {"level": task.level, "seed": task.seed, "planner": task.planner, "outcome": outcome,
            "success": int(outcome == "success"), **episode_columns(result, wall)}
     _, world, _ = trial_variation(scenario, task.seed)
+    if task.record:
+        from fgdwa.plot.recording import write_recording
+
+        write_recording(result, world, scenario.goal, scenario.footprint, task.record, title=dynamic_run_name(task))
     grid = world.grid
     cells = (np.asarray(grid.cells) != 0).astype(np.uint8)
     if world.hidden is not None:
@@ -185,30 +197,6 @@ def write_failed_fields(runs: Sequence[Run], out_dir, setup: DynamicSetup) -> li
     return failed
 
 
-def record_failed_runs(runs: Sequence[Run], setup: DynamicSetup, directory) -> dict:
-    """Run every failed run again with its cycles kept and write it as a Rerun
-    recording into ``directory``; returns {(seed, planner): path}. A run is its
-    task's alone, so the second time ends as the first did (checked)."""
-    from fgdwa.plot.recording import write_recording
-
-    paths = {}
-    for run in runs:
-        row = run.row
-        if row["outcome"] == "success":
-            continue
-        task = DynamicTask(row["level"], row["seed"], row["planner"], setup)
-        scenario, result = _episode(task, record=True)
-        if result.summary.outcome != row["outcome"]:
-            raise FgdwaError(f"{field_name(task.level, task.seed)} {task.planner}: ran again it ended in "
-                             f"{result.summary.outcome}, not {row['outcome']}")
-        _, world, _ = trial_variation(scenario, task.seed)
-        path = Path(directory) / f"{field_name(task.level, task.seed)}_{task.planner}.rrd"
-        write_recording(result, world, scenario.goal, scenario.footprint, path,
-                        title=f"{field_name(task.level, task.seed)} {task.planner}")
-        paths[(task.seed, task.planner)] = path
-    return paths
-
-
 def dynamic_command(args) -> int:
     """``fgdwa dynamic``: run, print the table, write the outputs."""
     check_executor_arguments(args)
@@ -216,22 +204,23 @@ def dynamic_command(args) -> int:
     seeds = parse_seeds(args.seeds)
     planners = check_variants(args.planners)
     setup = DynamicSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency)
+    executor = dict(executor=args.executor, scheduler=args.scheduler, workers=args.workers,
+                    progress=not args.no_progress)
     tic = time.perf_counter()
-    runs = run_dynamic(level, seeds, planners, setup, executor=args.executor, scheduler=args.scheduler,
-                       workers=args.workers, progress=not args.no_progress)
+    tasks = dynamic_tasks(level, seeds, planners, setup)
+    runs = run_tasks(tasks, run_dynamic_task, **executor)
     wall = time.perf_counter() - tic
     failed = write_failed_fields(runs, args.out, setup)
     if args.record_failures:
-        recordings = record_failed_runs(runs, setup, args.record_failures)
-        for entry in failed:
-            entry["recording"] = str(recordings[(entry["seed"], entry["planner"])])
+        recordings = record_failures(tasks, run_outcomes(runs), run_dynamic_task, args.record_failures, dynamic_run_name,
+                                     **executor)
+        for entry, path in zip(failed, [p for p in recordings if p is not None]):
+            entry["recording"] = str(path)
     head = {"level": level, "seeds": seeds, "setup": dataclasses.asdict(setup), "wall_time": wall,
             "failed": failed}
     summary = write_run_outputs(runs, args.out, RUN_FIELDS, head, figure=not args.no_figures, outcomes=OUTCOMES)
     print(format_table(summary, f"dynamic fields, level {level}, {describe_seeds(seeds)}", OUTCOMES))
-    for entry in failed:
-        print(f"  seed {entry['seed']} {entry['planner']}: {entry['reason']}"
-              + (f" (fgdwa inspect {entry['recording']})" if "recording" in entry else ""))
+    print_failures(failed, ("seed", "planner"))
     print(written_files(runs, wall, args.out, figure=not args.no_figures)
           + (f", {len({f['file'] for f in failed})} field file(s) of failed runs in {Path(args.out) / 'fields'}"
              if failed else ""))
@@ -267,9 +256,7 @@ def register_dynamic_commands(subparsers) -> None:
     add_sensing_arguments(dynamic, DynamicSetup())
     add_executor_arguments(dynamic)
     add_output_arguments(dynamic, "out/dynamic", "runs.csv, summary.json, failures.png and fields/")
-    dynamic.add_argument("--record-failures", default=None, metavar="DIR",
-                         help="run each failed run again and write it as a Rerun recording into DIR "
-                              "(needs rerun-sdk: pip install 'fgdwa[inspect]')")
+    add_record_failures_argument(dynamic)
     dynamic.set_defaults(func=lambda args, *_: dynamic_command(args))
     sub = dynamic.add_subparsers(dest="dynamic_command", required=False, metavar="{generate}")
     gen = sub.add_parser("generate", help="write one field (level, seed) as a scenario file for `fgdwa run`")

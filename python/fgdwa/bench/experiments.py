@@ -26,11 +26,12 @@ from typing import Iterable, Optional, Sequence, Union
 
 import numpy as np
 
-from fgdwa._core import FgdwaError
+from fgdwa._core import FgdwaError, NavigatorParams
 from fgdwa.bench import stats
+from fgdwa.bench.recordings import RECORDED_ROLLOUTS, record_failures
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.stats import SIGNIFICANCE, finishing_rate
-from fgdwa.sim.scenario import Scenario, run_scenario
+from fgdwa.sim.scenario import Scenario, run_scenario, trial_variation
 
 
 @dataclass(frozen=True)
@@ -190,6 +191,7 @@ class TrialTask:
     trial: int  # 0-based
     seed: int
     options: tuple = ()  # (name, value) pairs of run_scenario keyword arguments, e.g. (("max_steps", 100),)
+    record: str = ""  # a path: keep every cycle and write the trial there as a Rerun recording
 
 
 @dataclass
@@ -220,9 +222,17 @@ class TrialRecord:
 def run_trial(task: TrialTask) -> TrialRecord:
     """Run one trial (in whatever process calls it)."""
     scenario = resolve_scenario(task.scenario)
+    options = dict(task.options)
+    if task.record:
+        options.update(record_cycles=True, navigator=NavigatorParams(record_top_k=RECORDED_ROLLOUTS))
     tic = time.perf_counter()
-    result = run_scenario(scenario, task.planner, task.seed, **dict(task.options))
+    result = run_scenario(scenario, task.planner, task.seed, **options)
     wall = time.perf_counter() - tic
+    if task.record:
+        from fgdwa.plot.recording import write_recording
+
+        _, world, _ = trial_variation(scenario, task.seed)
+        write_recording(result, world, scenario.goal, scenario.footprint, task.record, title=trial_name(task))
     summary, trace = result.summary, result.trace
     return TrialRecord(
         experiment=task.experiment, planner=task.planner, trial=task.trial, seed=task.seed,
@@ -231,6 +241,40 @@ def run_trial(task: TrialTask) -> TrialRecord:
         global_path=result.context.global_path, key_nodes=result.context.key_nodes,
         dt=summary.sim_time / summary.steps if summary.steps else float("nan"),
     )
+
+
+def trial_name(task) -> str:
+    """A trial's name in file names: experiment, planner, trial (a TrialTask or TrialRecord)."""
+    return f"{task.experiment}_{task.planner}_trial{task.trial}"
+
+
+def record_failed_trials(results: Sequence["ExperimentResult"], directory, **executor) -> dict:
+    """Run each failed trial of ``results`` again, writing it as a Rerun recording
+    into ``directory`` (see fgdwa.bench.recordings); returns {trial_name: path}."""
+    tasks, outcomes = [], []
+    for result in results:
+        options = tuple(sorted(result.options.items()))
+        for r in result.records:
+            tasks.append(TrialTask(result.spec.name, result.spec.scenario, r.planner, r.trial, r.seed, options))
+            outcomes.append(r.metrics["outcome"])
+    paths = record_failures(tasks, outcomes, run_trial, directory, trial_name,
+                            outcome_of=lambda record: record.metrics["outcome"], check_task=check_portable,
+                            **executor)
+    return {trial_name(task): path for task, path in zip(tasks, paths) if path is not None}
+
+
+def trial_failures(result: "ExperimentResult", recordings: Optional[dict] = None) -> list:
+    """One entry per failed trial: planner, trial, seed, outcome, reason and its recording when there is one."""
+    entries = []
+    for r in result.records:
+        if r.success:
+            continue
+        entry = {"planner": r.planner, "trial": r.trial, "seed": r.seed, "outcome": r.metrics["outcome"],
+                 "reason": r.metrics["reason"]}
+        if recordings and trial_name(r) in recordings:
+            entry["recording"] = str(recordings[trial_name(r)])
+        entries.append(entry)
+    return entries
 
 
 def trial_tasks(spec: ExperimentSpec, trials: int, base_seed: int = 0, options: Optional[dict] = None) -> list:

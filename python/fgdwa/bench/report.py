@@ -285,7 +285,7 @@ def write_csvs(d: dict, directory: Path) -> list:
     name = d["experiment"]
     metric_keys = [m["key"] for m in d["metrics"]]
     runs = _write_csv(directory / f"{name}_runs.csv",
-                      ["experiment", "planner", "trial", "seed", "outcome"] + metric_keys + ["wall_time"],
+                      ["experiment", "planner", "trial", "seed", "outcome", "reason"] + metric_keys + ["wall_time"],
                       [dict(experiment=name, **r) for r in d["runs"]])
     summary_rows = []
     for p in d["planners"]:
