@@ -71,6 +71,10 @@ def cmd_run(args: argparse.Namespace) -> int:
     from fgdwa.plot.episode import plot_episode
     from fgdwa.sim import run_scenario, trial_variation
 
+    if args.record:
+        from fgdwa.plot.recording import require_rerun
+
+        require_rerun()  # before the run, not after it
     scenario = resolve_scenario(args.scenario)
     planner = args.planner or scenario.planner
     options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
@@ -115,11 +119,12 @@ def cmd_run(args: argparse.Namespace) -> int:
 
 def cmd_experiment(args: argparse.Namespace, argv) -> int:
     from fgdwa.bench.experiments import EXPERIMENTS, run_experiments, trial_failures
-    from fgdwa.bench.recordings import print_failures
+    from fgdwa.bench.recordings import check_recording_possible, print_failures
     from fgdwa.bench.report import save_experiment, terminal_report, write_results
     from fgdwa.bench.runner import run_tasks
 
     names = list(EXPERIMENTS) if args.name == "all" else [args.name]
+    check_recording_possible(args.record_failures)
     out = Path(args.out)
     options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
     command = "fgdwa " + " ".join(shlex.quote(a) for a in (argv if argv is not None else sys.argv[1:]))

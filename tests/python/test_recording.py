@@ -91,3 +91,29 @@ def test_a_recording_holds_the_critics_spread_vetoes_stage_times_and_mode_of_eve
     logged = [i for i, c in enumerate(cycles) if c.scan_map is not None]
     assert logged and logged[0] == 0
     assert own["/world/map/robot:Image:buffer"].notna().sum() == len(logged)
+
+
+def test_without_rerun_everything_else_runs_and_inspect_says_what_to_install(tmp_path):
+    """rerun-sdk is optional: with it unimportable, fgdwa runs and draws, and
+    fgdwa inspect / --record name the extra to install."""
+    import subprocess
+    import sys
+
+    rrd = tmp_path / "x.rrd"
+    rrd.write_bytes(b"")
+    code = f"""
+import sys
+sys.modules["rerun"] = None  # import rerun raises ImportError
+from fgdwa.cli import main
+assert main(["run", "demo", "--max-steps", "5", "--out", {str(tmp_path)!r}]) in (0, 1)
+assert main(["inspect", {str(rrd)!r}]) != 0
+assert main(["run", "demo", "--max-steps", "5", "--out", {str(tmp_path / "r")!r}, "--record", {str(rrd)!r}]) != 0
+assert main(["dynamic", "--level", "easy", "--seeds", "0", "--out", {str(tmp_path / "d")!r},
+             "--record-failures", {str(tmp_path / "rrd")!r}]) != 0
+"""
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.count('pip install "fgdwa[inspect]"') == 3
+    assert (tmp_path / "demo_fgdwa.png").is_file()
+    # Refused before running: nothing was run or written.
+    assert not (tmp_path / "r").exists() and not (tmp_path / "d").exists()

@@ -28,8 +28,8 @@ from fgdwa._core import (FgdwaError, LidarParams, NavigatorParams, OccupancyGrid
                          robot_preset)
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments, check_sensing, planner_list)
-from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, failure_entries,
-                                    print_failures, record_failures, run_outcomes)
+from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
+                                    failure_entries, print_failures, record_failures, run_outcomes)
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.runs import (OUTCOMES, Run, episode_columns, format_table, paths_followed, write_run_outputs,
                               written_files)
@@ -222,6 +222,7 @@ def write_barn_outputs(runs: Sequence[Run], out_dir, mapping: str, meta: Optiona
 def barn_command(args) -> int:
     """``fgdwa barn``: run, print the table, write the outputs."""
     check_executor_arguments(args)
+    check_recording_possible(args.record_failures)
     dataset = load_barn(find_barn_file(args.data))
     world_ids = dataset.select_ids(args.worlds)
     planners = check_planners(args.planners)

@@ -25,8 +25,8 @@ import numpy as np
 from fgdwa._core import NavigatorParams
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments, check_sensing, planner_list)
-from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, print_failures,
-                                    record_failures, run_outcomes)
+from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
+                                    print_failures, record_failures, run_outcomes)
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.runs import Run, episode_columns, format_table, paths_followed, write_run_outputs, written_files
 from fgdwa.io.barn_data import parse_world_selection
@@ -200,6 +200,7 @@ def write_failed_fields(runs: Sequence[Run], out_dir, setup: DynamicSetup) -> li
 def dynamic_command(args) -> int:
     """``fgdwa dynamic``: run, print the table, write the outputs."""
     check_executor_arguments(args)
+    check_recording_possible(args.record_failures)
     level = check_level(args.level)
     seeds = parse_seeds(args.seeds)
     planners = check_variants(args.planners)

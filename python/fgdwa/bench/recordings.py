@@ -66,6 +66,15 @@ def print_failures(entries: Sequence[dict], keys: Sequence[str], limit: int = 40
         print(f"  ... and {len(entries) - limit} more failed runs (summary.json, runs.csv)")
 
 
+def check_recording_possible(directory) -> None:
+    """Before a benchmark runs: FgdwaError when its failures could not be
+    recorded (no rerun-sdk), rather than after the runs."""
+    if directory:
+        from fgdwa.plot.recording import require_rerun
+
+        require_rerun()
+
+
 def add_record_failures_argument(parser) -> None:
     parser.add_argument("--record-failures", default=None, metavar="DIR",
                         help="run each failed run again and write it as a Rerun recording into DIR "

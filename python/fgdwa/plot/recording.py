@@ -26,7 +26,8 @@ TIMELINE = "cycle"
 FAN = "world/rollouts"  # FAN/total: coloured by the total; FAN/by_critic/<name>: by that critic's term
 
 
-def _rerun():
+def require_rerun():
+    """The rerun module, or FgdwaError naming the extra to install."""
     try:
         import rerun as rr
     except ImportError as error:
@@ -111,7 +112,7 @@ def write_recording(result, world, goal, footprint, path, title: str = "fgdwa ru
         raise FgdwaError("write_recording: the episode kept no cycles; run it with record_cycles=True")
     outline = footprint if outline is None else outline
     dt = result.summary.sim_time / result.summary.steps  # s, the control period
-    rr = _rerun()
+    rr = require_rerun()
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     rec = rr.RecordingStream(application_id="fgdwa", recording_id=title)
@@ -209,7 +210,7 @@ def read_recording(path, contents: str = "/**"):
     """The entities matching ``contents`` of a recording as a pandas DataFrame,
     one row per cycle (Rerun's dataframe API, through a catalog server on this
     machine that lives for the call)."""
-    rr = _rerun()
+    rr = require_rerun()
     if not Path(path).is_file():
         raise FgdwaError(f"{path}: no such recording")
     server = rr.server.Server(host="127.0.0.1", datasets={"run": [str(path)]})
@@ -227,7 +228,7 @@ def viewer_command(path, web: bool = False, web_port: int | None = None, grpc_po
     import shutil
     import sys
 
-    _rerun()
+    require_rerun()
     path = Path(path)
     if not path.is_file():
         raise FgdwaError(f"{path}: no such recording")
