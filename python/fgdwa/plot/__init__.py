@@ -7,7 +7,7 @@ controller's control surfaces (``fuzzy``) and a bag replay's commands
 """
 
 from fgdwa.plot.animation import write_gif
-from fgdwa.plot.episode import draw_world, footprint_patch, plot_episode, save_figure
+from fgdwa.plot.episode import draw_world, footprint_patch, plot_episode, save_figure, world_legend
 from fgdwa.plot.experiments import FigureJob, draw_figures, experiment_figures
 from fgdwa.plot.failures import plot_failures
 from fgdwa.plot.fuzzy import plot_control_surfaces
@@ -24,5 +24,6 @@ __all__ = [
     "plot_failures",
     "plot_replay",
     "save_figure",
+    "world_legend",
     "write_gif",
 ]

@@ -51,10 +51,10 @@ def paths_figure(result: ExperimentResult, path: Path, trial: int = 0, scenario=
     first = result.record(result.spec.proposed, trial)
     _, world, _ = trial_variation(scenario, first.seed)
     fig, ax = plt.subplots(figsize=(9, 6.5))
-    draw_world(ax, world, 0.0)
-    for mover in world.movers:
-        if mover.waypoints is not None:
-            ax.plot(*mover.route.T, ":", color="tab:purple", linewidth=0.8)
+    world_entries = draw_world(ax, world, 0.0)
+    routes = [mover.route for mover in world.movers if mover.waypoints is not None]
+    for k, route in enumerate(routes):
+        ax.plot(*route.T, ":", color="tab:purple", linewidth=0.8, label="moving obstacles' routes" if k == 0 else None)
     reference = next((r for r in result.records if r.global_path is not None and r.trial == trial), None)
     if reference is not None:
         ax.plot(*reference.global_path.T, "--", color="tab:red", linewidth=1.2, label="global path")
@@ -85,7 +85,8 @@ def paths_figure(result: ExperimentResult, path: Path, trial: int = 0, scenario=
         ax.set_ylim(y0, y1)
     ax.set_title(f"{result.spec.name.upper()}: executed paths, trial {trial + 1} (seed {first.seed}) bold, "
                  f"the other {result.trials - 1} faint")
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
+    ax.legend(handles=world_entries + ax.get_legend_handles_labels()[0], loc="upper left",
+              bbox_to_anchor=(1.01, 1.0), fontsize=8)
     fig.tight_layout()
     return _save(fig, path)
 

@@ -1,0 +1,95 @@
+"""Pictures a person reads: every element of a figure has a legend entry, the colour
+bar says what it scores and which way is better."""
+
+import re
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import fgdwa  # noqa: E402
+from fgdwa.bench.experiments import resolve_scenario  # noqa: E402
+from fgdwa.plot.episode import plot_episode  # noqa: E402
+from fgdwa.sim import World, run_episode, run_scenario, trial_variation  # noqa: E402
+
+
+def legend_labels(fig) -> list:
+    return [text.get_text() for legend in [*fig.legends, *(ax.get_legend() for ax in fig.axes)] if legend
+            for text in legend.get_texts()]
+
+
+def colour_bar_labels(fig) -> list:
+    return [label for ax in fig.axes for label in (ax.get_xlabel(), ax.get_ylabel()) if "score" in label]
+
+
+def marker_points(ax, marker: str) -> list:
+    return [tuple(np.ravel(line.get_xydata())) for line in ax.get_lines()
+            if line.get_marker() == marker and len(line.get_xydata())]
+
+
+@pytest.fixture(scope="module")
+def demo_run():
+    """The first 30 cycles of the shipped demo (a map, a box missing from it, a mover) driven by fgdwa."""
+    scenario = resolve_scenario("demo")
+    result = run_scenario(scenario, "fgdwa", 0, max_steps=30, record_cycles=True,
+                          navigator=fgdwa.NavigatorParams(record_top_k=10))
+    return scenario, result
+
+
+@pytest.fixture(scope="module")
+def mover_collision():
+    """A disc driving into a robot that cannot get away: a collision with mover 0."""
+    disc = fgdwa.Disc((3.0, 0.0), 0.3, velocity=(-2.0, 0.0))
+    params = fgdwa.PlannerParams(critics=[("heading", 1.0), ("velocity", 1.0)])
+    world = World(discs=[disc])
+    result = run_episode(world, (0.0, 0.0, np.pi), (-20.0, 0.0), limits=fgdwa.RobotLimits(v_max=0.2), params=params,
+                         max_steps=50)
+    assert result.summary.outcome == "collision"
+    return world, result
+
+
+def test_the_episode_figure_names_every_element_and_its_colour_bar(demo_run):
+    scenario, result = demo_run
+    fig = plot_episode(result, trial_variation(scenario, 0)[1], scenario.goal)
+    labels = legend_labels(fig)
+    for expected in ("map (known to the robot)", "obstacles missing from the map", "executed path", "key nodes",
+                     "footprint at the end", "rollout chosen in the last cycle", "start", "goal"):
+        assert expected in labels
+    assert any(label.startswith("global path") for label in labels)
+    assert any(re.fullmatch(r"moving obstacles at t = 4\.5 s, numbered", label) for label in labels)
+    assert any(re.fullmatch(r"rollouts scored in the last cycle \(\d+; colour: score\)", label) for label in labels)
+    (bar,) = colour_bar_labels(fig)
+    assert "total score" in bar and "higher is better" in bar and "cycle 29 at t = 4.35 s" in bar
+    plt.close(fig)
+
+
+def test_terrain_grades_have_legend_entries():
+    grades = np.zeros((40, 60), np.uint8)
+    grades[5:10, 5:10] = 2
+    grades[20:25, 20:25] = 4
+    cells = np.zeros_like(grades)
+    cells[0, :] = 1
+    world = World(grid=fgdwa.OccupancyGrid(cells, 0.1), terrain=fgdwa.TerrainGrid(grades, 0.1))
+    result = run_episode(world, (1.0, 3.0, 0.0), (5.0, 3.0), max_steps=5)
+    fig = plot_episode(result, world, (5.0, 3.0))
+    labels = legend_labels(fig)
+    assert "terrain grade 2 (speed x0.6)" in labels and "terrain grade 4 (entering it is a fall)" in labels
+    assert not any(label.startswith(("terrain grade 1", "terrain grade 3")) for label in labels)
+    assert "obstacles missing from the map" not in labels and not any("moving" in label for label in labels)
+    plt.close(fig)
+
+
+def test_the_episode_figure_marks_the_point_of_contact(mover_collision):
+    world, result = mover_collision
+    fig = plot_episode(result, world, (-20.0, 0.0))
+    (ax,) = [ax for ax in fig.axes if ax.get_xlabel() == "x [m]"]
+    assert "contact with mover 0" in legend_labels(fig)
+    (point,) = marker_points(ax, "X")
+    np.testing.assert_allclose(point, result.collision.point)
+    assert "mover 0 drove into the robot" in ax.get_title()
+    # The disc that hit is numbered as the reason names it.
+    assert "0" in [text.get_text() for text in ax.texts]
+    plt.close(fig)
