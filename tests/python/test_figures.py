@@ -1,5 +1,6 @@
 """Pictures a person reads: every element of a figure has a legend entry, the colour
-bar says what it scores and which way is better."""
+bar says what it scores and which way is better, failures.png has axes, start,
+goal and the point of contact."""
 
 import re
 
@@ -11,8 +12,10 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import fgdwa  # noqa: E402
+from fgdwa.bench.runs import Run, episode_columns  # noqa: E402
 from fgdwa.bench.experiments import resolve_scenario  # noqa: E402
 from fgdwa.plot.episode import plot_episode  # noqa: E402
+from fgdwa.plot.failures import failures_figure  # noqa: E402
 from fgdwa.sim import World, run_episode, run_scenario, trial_variation  # noqa: E402
 
 
@@ -92,4 +95,56 @@ def test_the_episode_figure_marks_the_point_of_contact(mover_collision):
     assert "mover 0 drove into the robot" in ax.get_title()
     # The disc that hit is numbered as the reason names it.
     assert "0" in [text.get_text() for text in ax.texts]
+    plt.close(fig)
+
+
+def test_benchmark_rows_carry_the_goal_and_the_contact(mover_collision, demo_run):
+    _, result = mover_collision
+    row = episode_columns(result, 1.0)
+    assert (row["goal_x"], row["goal_y"]) == (-20.0, 0.0)
+    assert (row["contact_x"], row["contact_y"]) == result.collision.point and row["hit"] == "mover 0"
+    row = episode_columns(demo_run[1], 1.0)
+    assert np.isnan(row["contact_x"]) and np.isnan(row["contact_y"]) and row["hit"] == ""
+
+
+def _run(outcome: str, reason: str, contact=None, hit: str = "", discs=()) -> Run:
+    cells = np.zeros((40, 80), np.uint8)
+    cells[20:24, 40:44] = 1  # a block at x 4.0 .. 4.4, y 2.0 .. 2.4
+    cells[10:12, 60:62] = 2  # one the map misses
+    poses = np.column_stack([np.linspace(0.5, 3.8, 20), np.full(20, 2.2), np.zeros(20)])
+    x, y = contact if contact is not None else (np.nan, np.nan)
+    row = {"world": 3, "planner": "fgdwa", "outcome": outcome, "time": 12.0, "reason": reason, "goal_x": 7.5,
+           "goal_y": 2.2, "contact_x": x, "contact_y": y, "hit": hit}
+    return Run(row=row, cells=cells, extent=(0.0, 8.0, 0.0, 4.0), poses=poses, paths=[(0, poses[:, :2])],
+               routes=[np.array([[5.0, 1.0], [6.0, 1.0], [5.0, 1.0]])] if discs else [], discs=list(discs))
+
+
+def test_failure_panels_have_axes_start_goal_reason_and_the_point_of_contact():
+    runs = [_run("success", ""),
+            _run("collision", "collision: the robot drove into a wall at (4.00, 2.20)", (4.0, 2.2), "a wall"),
+            _run("timeout", "timeout: 3.70 m from the goal after 60 s, last mode Following"),
+            _run("collision", "collision: mover 1 drove into the robot at (3.95, 2.20) (closing at 0.50 m/s, "
+                 "the robot at 0.10 m/s)", (3.95, 2.2), "mover 1", discs=[(5.0, 1.0, 0.3), (4.1, 2.2, 0.2)])]
+    fig = failures_figure(runs)
+    panels = [ax for ax in fig.axes if ax.axison]
+    assert len(panels) == 3
+    for ax, run in zip(panels, runs[1:]):
+        assert (ax.get_xlabel(), ax.get_ylabel()) == ("x [m]", "y [m]")
+        assert run.row["reason"][:40] in ax.get_title().replace("\n", " ")
+        assert len(ax.get_xticks()) > 1 and len(ax.get_yticks()) > 1
+        assert marker_points(ax, "o") == [(0.5, 2.2)]  # start
+        assert marker_points(ax, "*") == [(7.5, 2.2)]  # goal
+        hit = run.row["hit"]
+        if hit:
+            assert marker_points(ax, "X") == [(run.row["contact_x"], run.row["contact_y"])]
+            assert hit in [text.get_text() for text in ax.texts]
+        else:
+            assert marker_points(ax, "X") == []
+    assert "1" in [text.get_text() for text in panels[2].texts]  # the mover hit, numbered
+    labels = legend_labels(fig)
+    for expected in ("map", "obstacles missing from the map", "last global path", "moving obstacles' routes",
+                     "moving obstacles at the end, numbered", "start", "goal", "point of contact (what was hit)",
+                     "path driven, x where it ended (collision)", "path driven, x where it ended (timeout)"):
+        assert expected in labels
+    assert "what the robot mapped" not in labels
     plt.close(fig)

@@ -59,12 +59,20 @@ def run_timing(wall: float, cycle_times) -> dict:
 def episode_columns(result, wall: float) -> dict:
     """The columns every benchmark takes from an episode (an EpisodeResult that
     ran ``wall`` seconds): simulated time, mileage, clearance, replans, cycles
-    spent backing up, the cost per cycle, the wall time and why a failed run ended."""
-    paths = result.context.paths
+    spent backing up, the cost per cycle, the wall time and why a failed run ended;
+    and for failures.png the goal (``goal_x``, ``goal_y``, m) and, after a
+    collision, the point of contact (``contact_x``, ``contact_y``, m; NaN
+    otherwise) and what was hit (``hit``: "a wall", "mover 3", ...; "" otherwise)."""
+    paths, contact, goal = result.context.paths, result.collision, result.context.goal
+    goal = (float("nan"), float("nan")) if goal is None else goal
     return {"time": result.summary.sim_time, "mileage": result.summary.mileage,
             "min_clearance": result.summary.min_clearance, "replans": max(0, len(paths) - 1),
             "backing_up": result.trace.statuses.count("BackingUp"),
-            **run_timing(wall, result.trace.cycle_times), "wall_time": wall, "reason": result.summary.reason}
+            **run_timing(wall, result.trace.cycle_times), "wall_time": wall, "reason": result.summary.reason,
+            "goal_x": float(goal[0]), "goal_y": float(goal[1]),
+            "contact_x": float("nan") if contact is None else contact.point[0],
+            "contact_y": float("nan") if contact is None else contact.point[1],
+            "hit": "" if contact is None else contact.what}
 
 
 def paths_followed(result) -> list:

@@ -9,7 +9,7 @@ controller's control surfaces (``fuzzy``) and a bag replay's commands
 from fgdwa.plot.animation import write_gif
 from fgdwa.plot.episode import draw_world, footprint_patch, plot_episode, save_figure, world_legend
 from fgdwa.plot.experiments import FigureJob, draw_figures, experiment_figures
-from fgdwa.plot.failures import plot_failures
+from fgdwa.plot.failures import failures_figure, plot_failures
 from fgdwa.plot.fuzzy import plot_control_surfaces
 from fgdwa.plot.replay import plot_replay
 
@@ -18,6 +18,7 @@ __all__ = [
     "draw_figures",
     "draw_world",
     "experiment_figures",
+    "failures_figure",
     "footprint_patch",
     "plot_control_surfaces",
     "plot_episode",

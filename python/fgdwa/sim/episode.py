@@ -134,7 +134,7 @@ class PlannerTrace:
 
 @dataclass
 class NavigationContext:
-    """The paths and the map the navigator worked with, and its last cycle."""
+    """The goal, the paths and the map the navigator worked with, and its last cycle."""
 
     mapping: str = "known"  # "known": the planners had the map; "scan": they had the robot's own map
     global_path: Optional[np.ndarray] = None  # (n, 2), the path followed at the end, when the planner followed one
@@ -144,6 +144,7 @@ class NavigationContext:
     last_plan: Optional[PlanResult] = None
     last_rollouts: Optional[np.ndarray] = None  # (samples, n_steps, 3)
     last_scan: Optional[object] = None  # the last cycle's Scan, when sensing
+    goal: Optional[np.ndarray] = None  # (2,) where it was sent, m
 
 
 @dataclass
@@ -447,6 +448,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         cycles=cycles,
     )
     context = NavigationContext(
+        goal=goal_point,
         mapping=mapping,
         global_path=None if path is None else path.points,
         key_nodes=None if path is None else path.points[robot.planner.key_nodes],
