@@ -1,6 +1,6 @@
 """Pictures a person reads: every element of a figure has a legend entry, the colour
 bar says what it scores and which way is better, failures.png has axes, start,
-goal and the point of contact."""
+goal and the point of contact, and the animation shows the time and the mode."""
 
 import re
 
@@ -14,6 +14,7 @@ import pytest  # noqa: E402
 import fgdwa  # noqa: E402
 from fgdwa.bench.runs import Run, episode_columns  # noqa: E402
 from fgdwa.bench.experiments import resolve_scenario  # noqa: E402
+from fgdwa.plot.animation import AnimationScene, frame_status, write_gif  # noqa: E402
 from fgdwa.plot.episode import plot_episode  # noqa: E402
 from fgdwa.plot.failures import failures_figure  # noqa: E402
 from fgdwa.sim import World, run_episode, run_scenario, trial_variation  # noqa: E402
@@ -49,7 +50,7 @@ def mover_collision():
     params = fgdwa.PlannerParams(critics=[("heading", 1.0), ("velocity", 1.0)])
     world = World(discs=[disc])
     result = run_episode(world, (0.0, 0.0, np.pi), (-20.0, 0.0), limits=fgdwa.RobotLimits(v_max=0.2), params=params,
-                         max_steps=50)
+                         max_steps=50, record_cycles=True)
     assert result.summary.outcome == "collision"
     return world, result
 
@@ -148,3 +149,52 @@ def test_failure_panels_have_axes_start_goal_reason_and_the_point_of_contact():
         assert expected in labels
     assert "what the robot mapped" not in labels
     plt.close(fig)
+
+
+def test_the_animation_shows_time_mode_legend_and_a_progress_bar(demo_run, tmp_path, capsys):
+    from PIL import Image
+
+    scenario, result = demo_run
+    dt = fgdwa.PlannerParams().dt
+    gif = write_gif(result, scenario, tmp_path / "demo.gif", max_frames=12)
+    with Image.open(gif) as image:
+        assert image.n_frames == 12 and image.size == (1120, 640)
+    bar = capsys.readouterr().err
+    assert "drawing demo.gif" in bar and "12/12" in bar
+    write_gif(result, scenario, tmp_path / "quiet.gif", max_frames=3, progress=False)
+    assert capsys.readouterr().err == ""
+
+    assert frame_status(result, 3, dt).startswith(f"t =  0.45 s   cycle 3/30   mode {result.trace.modes[3]}")
+    assert re.search(r"\nI \d\.\d\d   D \d\.\d\d   beta \d\.\d\d   delta \d\.\d\d$", frame_status(result, 3, dt))
+    assert frame_status(result, 30, dt).startswith("t =  4.50 s   cycle 30/30   timeout\ntimeout: ")
+
+    _, world, _ = trial_variation(scenario, 0)
+    scene = AnimationScene(result, scenario, world, dt, 100)
+    labels = legend_labels(scene.fig)
+    for expected in ("map (known to the robot)", "obstacles missing from the map", "moving obstacles, numbered",
+                     "global path (the one in force)", "path driven so far", "chosen rollout", "lidar hits",
+                     "detect window (obstacle density I)", "robot: footprint, heading", "start", "goal",
+                     "best rollouts of the cycle (colour: score)"):
+        assert expected in labels
+    (bar,) = colour_bar_labels(scene.fig)
+    assert "higher is better" in bar and "frame's cycle" in bar
+    first = np.asarray(scene.frame(0))
+    last = np.asarray(scene.frame(30))
+    assert first.shape == (640, 1120, 3) and not np.array_equal(first, last)
+    plt.close(scene.fig)
+
+
+def test_the_animation_marks_a_collision(mover_collision):
+    from fgdwa.sim.scenario import Scenario
+
+    world, result = mover_collision
+    scenario = Scenario(name="disc", world=world, start=(0.0, 0.0, np.pi), goal=(-20.0, 0.0))
+    scene = AnimationScene(result, scenario, world, fgdwa.PlannerParams().dt, 100)
+    assert "point of contact (mover 0)" in legend_labels(scene.fig)
+    steps = result.summary.steps
+    scene.frame(steps - 1)
+    assert len(scene.contact.get_xdata()) == 0  # shown at the end only
+    scene.frame(steps)
+    np.testing.assert_allclose(np.ravel(scene.contact.get_xydata()), result.collision.point)
+    assert "mover 0 drove into the robot" in frame_status(result, steps, fgdwa.PlannerParams().dt)
+    plt.close(scene.fig)
