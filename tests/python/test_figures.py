@@ -90,7 +90,7 @@ def test_the_episode_figure_marks_the_point_of_contact(mover_collision):
     world, result = mover_collision
     fig = plot_episode(result, world, (-20.0, 0.0))
     (ax,) = [ax for ax in fig.axes if ax.get_xlabel() == "x [m]"]
-    assert "contact with mover 0" in legend_labels(fig)
+    assert "point of contact (mover 0)" in legend_labels(fig)
     (point,) = marker_points(ax, "X")
     np.testing.assert_allclose(point, result.collision.point)
     assert "mover 0 drove into the robot" in ax.get_title()

@@ -170,7 +170,7 @@ def plot_episode(result: EpisodeResult, world: World, goal, path: Optional[Path]
     contact = result.collision
     if contact is not None:
         handles += ax.plot(*contact.point, "X", color="red", markeredgecolor="k", markersize=13, zorder=6,
-                           label=f"contact with {contact.what}")
+                           label=f"point of contact ({contact.what})")
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
