@@ -47,7 +47,8 @@ def failures_figure(runs: Sequence, max_panels: int = MAX_PANELS):
     shown = failed[:max_panels]
     cols = min(4, len(shown))
     rows = math.ceil(len(shown) / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.4 * rows + 0.9), squeeze=False, layout="constrained")
+    fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.8 * rows + 0.9), squeeze=False, layout="constrained")
+    fig.get_layout_engine().set(h_pad=0.2)  # inches: room for a three-line title under the row above
     for ax in axes.flat:
         ax.axis("off")
     for ax, run in zip(axes.flat, shown):

@@ -145,8 +145,9 @@ class Contact:
             who = f"{self.what} drove into the robot"
         else:
             who = f"the robot drove into {self.what}"
-        return (f"collision: {who} {where} (closing at {self.mover_closing:.2f} m/s, the robot at "
-                f"{self.robot_closing:.2f} m/s)")
+        # Rounded before formatting, so that a speed of -0.001 m/s reads 0.00, not -0.00.
+        mover, robot = round(self.mover_closing, 2) + 0.0, round(self.robot_closing, 2) + 0.0
+        return f"collision: {who} {where} (closing at {mover:.2f} m/s, the robot at {robot:.2f} m/s)"
 
 
 def collision_contact(truth: CollisionWorld, footprint: Footprint, pose, velocity,
