@@ -6,7 +6,9 @@ import asyncio
 import base64
 import io
 import json
+import os
 import shutil
+import signal
 import socket
 import subprocess
 import time
@@ -84,12 +86,14 @@ def test_the_web_viewer_shows_a_recorded_run(tmp_path):
     rrd = tmp_path / "demo.rrd"
     assert main(["run", "demo", "--max-steps", "20", "--out", str(tmp_path), "--record", str(rrd)]) in (0, 1)
     web, grpc, devtools = _free_port(), _free_port(), _free_port()
+    # In a session of its own: the `rerun` script starts the viewer as a child, and both must go at the end.
     viewer = subprocess.Popen(viewer_command(rrd, web=True, web_port=web, grpc_port=grpc),
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     browser = subprocess.Popen([CHROMIUM, "--headless=new", "--no-sandbox", "--enable-unsafe-swiftshader",
                                 "--use-angle=swiftshader", "--window-size=1600,1000",
                                 f"--user-data-dir={tmp_path / 'chromium'}", f"--remote-debugging-port={devtools}",
-                                "about:blank"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                                "about:blank"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               start_new_session=True)
     try:
         _wait_for(f"http://127.0.0.1:{web}/", 30)
         pages = json.loads(_wait_for(f"http://127.0.0.1:{devtools}/json/list", 30))
@@ -97,10 +101,9 @@ def test_the_web_viewer_shows_a_recorded_run(tmp_path):
         url = f"http://127.0.0.1:{web}/?url=rerun%2Bhttp://127.0.0.1:{grpc}/proxy"
         image = asyncio.run(_screenshots(page["webSocketDebuggerUrl"], url, _shows_the_run, 150))
     finally:
-        browser.kill()
-        viewer.kill()
-        browser.wait()
-        viewer.wait()
+        for process in (browser, viewer):
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
     from PIL import Image
 
     Image.fromarray(image).save(tmp_path / "viewer.png")
