@@ -29,6 +29,14 @@ const char* to_string(HeadingTarget target) {
   return "?";
 }
 
+const char* to_string(WheelModel wheels) {
+  switch (wheels) {
+    case WheelModel::Ramp: return "ramp";
+    case WheelModel::Instant: return "instant";
+  }
+  return "?";
+}
+
 const char* to_string(RejectReason reason) {
   switch (reason) {
     case RejectReason::None: return "None";
@@ -307,12 +315,18 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   // A footprint already over grade-4 cells may still leave: only its centre is held to them then.
   const bool terrain_centre_only = impassable_ && impassable_->clearance(footprint_, state.pose, 0.0) <= 0.0;
   const double cos_start = std::cos(state.pose.theta), sin_start = std::sin(state.pose.theta);
-  // Samples come v-major: the headings of the first row serve every row.
+  // Samples come v-major: the headings of the first row serve every row, and
+  // the speeds of a row's first sample the whole row.
   const std::size_t n_omega = static_cast<std::size_t>(params_.window.n_omega);
   const bool bounds_exact = fixed.lower_bounds_exact(footprint_);
+  const bool instant = params_.wheels == WheelModel::Instant;
+  start_twist_ = state.twist;
+  speed_profiles(state.twist.v, n_omega, instant);
   headings_.resize(std::min(n_omega, n));
   for (std::size_t j = 0; j < headings_.size(); ++j) {
-    headings_[j].assign(state.pose.theta, cos_start, sin_start, result_.samples[j].omega, params_.dt, n_steps_);
+    const double omega = result_.samples[j].omega;
+    headings_[j].assign(state.pose.theta, cos_start, sin_start, instant ? omega : state.twist.omega, omega,
+                        limits_.acc_omega, limits_.braking_omega(), params_.dt, n_steps_);
     rollouts_sharing(state.pose, j, n_omega);
   }
   // Cheap lower bounds first, for every pose of every rollout at once; exact
@@ -322,8 +336,12 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
   for (std::size_t i = 0; i < n; ++i) {
     const Twist& cmd = result_.samples[i];
     const Trajectory& poses = rollouts_[i];
-    // Every step of the rollout turns and drives alike.
-    const detail::StepSweep step(footprint_, margin, cmd.omega * params_.dt, cmd.v * params_.dt, obstacle_travel);
+    const SpeedProfile& speed = profiles_[i / n_omega];
+    const double* const travel = travel_.data() + (i / n_omega) * (steps + 1);
+    const double max_turn = headings_[i % n_omega].max_turn;
+    // No step turns or drives farther than the rollout's longest: the sweep's
+    // end clearances vouch for every step with those (the rest is measured).
+    const detail::StepSweep step(footprint_, margin, max_turn, speed.longest, obstacle_travel);
     const double* const bounds = bounds_.data() + i * steps;
     if (bounds_exact)
       for (int k = 0; k < n_steps_; ++k) exact_[static_cast<std::size_t>(k)] = bounds[static_cast<std::size_t>(k)] - margin;
@@ -396,7 +414,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
                                                                    k * params_.dt, params_.dt, margin));
       if (!clear) {
         // Contact at or before pose k + 1: the robot travels k full steps in free space.
-        free_distance = k * cmd.v * params_.dt;
+        free_distance = travel[k];
         last = k;
         break;
       }
@@ -415,11 +433,16 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
       if (bounds[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = below(k, min_clearance);
     result_.min_clearance[i] = min_clearance + margin;
     result_.free_distance[i] = free_distance;
-    RejectReason reason = detail::is_admissible_unchecked(cmd, free_distance, limits_, params_.dt, params_.braking) ? RejectReason::None : RejectReason::Collision;
+    // Where the first period leaves the robot, and from there it must be able to stop.
+    Twist reached{speed.reached, instant ? cmd.omega : state.twist.omega};
+    ramp_step(reached.omega, cmd.omega, limits_.acc_omega, limits_.braking_omega(), params_.dt);
+    const auto admissible = [&](double free) {
+      return detail::is_admissible_unchecked(cmd, reached, speed.first, free, limits_, params_.dt, params_.braking);
+    };
+    RejectReason reason = admissible(free_distance) ? RejectReason::None : RejectReason::Collision;
     if (reason == RejectReason::None && impassable_) {
       const int k = first_terrain_contact(poses, terrain_centre_only);
-      if (k < n_steps_ && !detail::is_admissible_unchecked(cmd, k * cmd.v * params_.dt, limits_, params_.dt, params_.braking))
-        reason = RejectReason::Terrain;
+      if (k < n_steps_ && !admissible(travel[k])) reason = RejectReason::Terrain;
       // A pit is as impassable as a wall: the clearance critic keeps the robot
       // off its edge too, leaving it room to get out of a mover's way there.
       if (!terrain_centre_only)
@@ -428,7 +451,8 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
     result_.moving_contact[i] = std::numeric_limits<double>::infinity();
     if (reason == RejectReason::None && moving_world) {
       double closest = std::numeric_limits<double>::infinity();
-      result_.moving_contact[i] = first_moving_contact(cmd, poses, world, std::max(margin, 0.0), last,
+      const Twist fastest{speed.longest / params_.dt, max_turn / params_.dt};
+      result_.moving_contact[i] = first_moving_contact(fastest, poses, world, std::max(margin, 0.0), last,
                                                        moving_at_start, result_.min_clearance[i], closest, escape_[i]);
       // An evasion must not trade the mover for a wall.
       escape_[i] = std::min(escape_[i], result_.min_clearance[i]);
@@ -469,26 +493,61 @@ double LocalPlanner::first_moving_contact(const Twist& cmd, const Trajectory& po
 // operations as rollout() per pose, so the same bits.
 void LocalPlanner::rollouts_sharing(const Pose2& start, std::size_t first, std::size_t stride) {
   const RolloutHeadings& h = headings_[first];
-  const std::size_t n = result_.samples.size(), steps = h.theta.size();
+  const std::size_t n = result_.samples.size(), steps = h.theta.size(), row = stride;
   std::size_t i = first;
   for (; i + 3 * stride < n; i += 4 * stride) {
     Trajectory* out[4];
-    double step[4], x[4], y[4];
+    const double* step[4];
+    double x[4], y[4];
     for (std::size_t l = 0; l < 4; ++l) {
       out[l] = &rollouts_[i + l * stride];
       out[l]->resize(steps);
-      step[l] = result_.samples[i + l * stride].v * params_.dt;
+      step[l] = lengths_.data() + (i + l * stride) / row * steps;
       x[l] = start.x;
       y[l] = start.y;
     }
     for (std::size_t k = 0; k < steps; ++k)
       for (std::size_t l = 0; l < 4; ++l) {
-        x[l] += step[l] * h.cos[k];
-        y[l] += step[l] * h.sin[k];
+        x[l] += step[l][k] * h.cos[k];
+        y[l] += step[l][k] * h.sin[k];
         (*out[l])[k] = Pose2{x[l], y[l], h.theta[k]};
       }
   }
-  for (; i < n; i += stride) rollout(start, result_.samples[i].v * params_.dt, h, rollouts_[i]);
+  for (; i < n; i += stride) {
+    const double* step = lengths_.data() + i / row * steps;
+    Trajectory& out = rollouts_[i];
+    out.resize(steps);
+    double x = start.x, y = start.y;
+    for (std::size_t k = 0; k < steps; ++k) {
+      x += step[k] * h.cos[k];
+      y += step[k] * h.sin[k];
+      out[k] = Pose2{x, y, h.theta[k]};
+    }
+  }
+}
+
+void LocalPlanner::speed_profiles(double v_now, std::size_t row, bool instant) {
+  const std::size_t n = result_.samples.size(), steps = static_cast<std::size_t>(n_steps_);
+  const std::size_t rows = (n + row - 1) / row;
+  lengths_.resize(rows * steps);
+  travel_.resize(rows * (steps + 1));
+  profiles_.resize(rows);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const double target = result_.samples[r * row].v;
+    double* length = lengths_.data() + r * steps;
+    double* travel = travel_.data() + r * (steps + 1);
+    SpeedProfile& p = profiles_[r];
+    double v = instant ? target : v_now;
+    p.longest = std::abs(target) * params_.dt;
+    travel[0] = 0.0;
+    for (std::size_t k = 0; k < steps; ++k) {
+      length[k] = (v == target ? target : ramp_step(v, target, limits_.acc_v, limits_.braking_v(), params_.dt)) * params_.dt;
+      if (k == 0) p.reached = v;
+      p.longest = std::max(p.longest, std::abs(length[k]));
+      travel[k + 1] = travel[k] + std::abs(length[k]);
+    }
+    p.first = steps ? std::abs(length[0]) : 0.0;
+  }
 }
 
 namespace {
@@ -506,7 +565,10 @@ double LocalPlanner::half_step_motion(const Twist& twist, double obstacle_speed)
 }
 
 LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world) const {
-  const Twist& first = result_.samples[i];
+  // Where the first period, ramping from the measured twist, leaves the wheels.
+  Twist first = params_.wheels == WheelModel::Instant ? result_.samples[i] : start_twist_;
+  ramp_step(first.v, result_.samples[i].v, limits_.acc_v, limits_.braking_v(), params_.dt);
+  ramp_step(first.omega, result_.samples[i].omega, limits_.acc_omega, limits_.braking_omega(), params_.dt);
   const Trajectory& poses = rollouts_[i];
   Escape best{result_.moving_contact[i], -std::numeric_limits<double>::infinity()};
   // A contact in the first period cannot be helped by what follows it.

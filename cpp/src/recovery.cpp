@@ -259,10 +259,11 @@ Twist Recovery::backup_command(const RobotState& state) {
   const double brake = limits_.braking_v();
   const double remaining = params_.backup_distance - backed_up_;
   backup_braking_ = backup_braking_ || remaining <= speed * speed / (2.0 * brake) + speed * dt_;
-  const double target = backup_braking_ ? 0.0 : params_.backup_speed;
-  const double next = std::max(0.0, approach(speed, target, (target > speed ? limits_.acc_v : brake) * dt_));
+  const double target = backup_braking_ ? 0.0 : reverse_limit();
+  // A robot reversing faster than that is asked for no more: its wheels brake toward it.
+  const double next = std::clamp(approach(speed, target, (target > speed ? limits_.acc_v : brake) * dt_), 0.0, reverse_limit());
   const double omega = approach(state.twist.omega, 0.0, limits_.braking_omega() * dt_);
-  return Twist{-next, omega};
+  return Twist{-next, std::clamp(omega, -limits_.omega_max, limits_.omega_max)};
 }
 
 bool Recovery::standing_clear_of(const std::vector<Disc>& movers, const RobotState& state, double duration) const {
@@ -285,7 +286,8 @@ Twist Recovery::rotate_command(const RobotState& state) const {
   const double omega = approach(state.twist.omega, target, limits_.acc_omega * dt_);
   const double v = state.twist.v >= 0.0 ? std::max(0.0, state.twist.v - limits_.braking_v() * dt_)
                                         : std::min(0.0, state.twist.v + limits_.braking_v() * dt_);
-  return Twist{v, omega};
+  // Whatever the state, the wheels are asked for nothing beyond the limits.
+  return Twist{std::clamp(v, -reverse_limit(), limits_.v_max), std::clamp(omega, -limits_.omega_max, limits_.omega_max)};
 }
 
 }  // namespace fgdwa

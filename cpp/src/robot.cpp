@@ -165,15 +165,35 @@ Pose2 unicycle_step(const Pose2& pose, const Twist& twist, double dt) {
 
 void RolloutHeadings::assign(double start_theta, double cos_start, double sin_start, double omega, double dt,
                              int n_steps) {
+  assign(start_theta, cos_start, sin_start, omega, omega, 1.0, 1.0, dt, n_steps);
+}
+
+void RolloutHeadings::assign(double start_theta, double cos_start, double sin_start, double omega_now, double omega,
+                             double rise, double fall, double dt, int n_steps) {
   const std::size_t n = static_cast<std::size_t>(std::max(n_steps, 0));
   theta.resize(n);
   cos.resize(n);
   sin.resize(n);
+  max_turn = std::abs(omega * dt);
+  double c = cos_start, s = sin_start, heading = wrap_angle(start_theta);
+  std::size_t k = 0;
+  // The ramp's steps, each with its own turn.
+  for (; k < n && omega_now != omega; ++k) {
+    const double turn = ramp_step(omega_now, omega, rise, fall, dt) * dt;
+    max_turn = std::max(max_turn, std::abs(turn));
+    const double cos_turn = std::cos(turn), sin_turn = std::sin(turn);
+    const double c_next = c * cos_turn - s * sin_turn;
+    s = s * cos_turn + c * sin_turn;
+    c = c_next;
+    heading = wrap_angle(heading + turn);
+    theta[k] = heading;
+    cos[k] = c;
+    sin[k] = s;
+  }
   // The heading turns by the same angle every step, so its cosine and sine are
   // advanced by a rotation instead of one sin/cos pair per pose.
   const double cos_turn = std::cos(omega * dt), sin_turn = std::sin(omega * dt), turn = wrap_angle(omega * dt);
-  double c = cos_start, s = sin_start, heading = wrap_angle(start_theta);
-  for (std::size_t k = 0; k < n; ++k) {
+  for (; k < n; ++k) {
     const double c_next = c * cos_turn - s * sin_turn;
     s = s * cos_turn + c * sin_turn;
     c = c_next;
@@ -210,6 +230,52 @@ void rollout(const Pose2& start, double step_length, const RolloutHeadings& head
 Trajectory rollout(const Pose2& start, const Twist& twist, double dt, int n_steps) {
   Trajectory out;
   rollout(start, twist, dt, n_steps, out);
+  return out;
+}
+
+double ramp_step(double& value, double target, double rise, double fall, double dt) {
+  double t = 0.0, area = 0.0;
+  // At most two pieces: toward zero at `fall`, then away from it at `rise`.
+  for (int piece = 0; piece < 2 && t < dt && value != target; ++piece) {
+    const bool shrinking = value > 0.0 ? target < value : value < 0.0 && target > value;
+    const bool crossing = shrinking && (value > 0.0 ? target < 0.0 : target > 0.0);
+    const double goal = crossing ? 0.0 : target;
+    const double rate = shrinking ? fall : rise;
+    const double need = std::abs(goal - value) / rate;
+    const double tau = std::min(need, dt - t);
+    const double next = tau == need ? goal : value + std::copysign(rate * tau, goal - value);
+    area += 0.5 * (value + next) * tau;
+    value = next;
+    t += tau;
+  }
+  area += value * (dt - t);
+  return area / dt;
+}
+
+void rollout(const Pose2& start, const Twist& current, const Twist& command, const RobotLimits& limits, double dt,
+             int n_steps, Trajectory& out) {
+  detail::require_query_pose("start", start);
+  detail::require_twist("current", current);
+  detail::require_twist("command", command);
+  limits.validate();
+  detail::require_step_length("dt", dt);
+  detail::require_count("n_steps", n_steps, 0, limits::kMaxRolloutSteps);
+  out.resize(static_cast<std::size_t>(n_steps));
+  Pose2 pose = start;
+  Twist now = current;
+  for (int k = 0; k < n_steps; ++k) {
+    Twist mean;
+    mean.v = ramp_step(now.v, command.v, limits.acc_v, limits.braking_v(), dt);
+    mean.omega = ramp_step(now.omega, command.omega, limits.acc_omega, limits.braking_omega(), dt);
+    pose = unicycle_step(pose, mean, dt);
+    out[static_cast<std::size_t>(k)] = pose;
+  }
+}
+
+Trajectory rollout(const Pose2& start, const Twist& current, const Twist& command, const RobotLimits& limits,
+                   double dt, int n_steps) {
+  Trajectory out;
+  rollout(start, current, command, limits, dt, n_steps, out);
   return out;
 }
 

@@ -33,11 +33,12 @@ bool VelocityWindow::contains(const Twist& t, double tol) const {
 }
 
 namespace {
-// [lo, hi] ∩ [a, b], or the point of [a, b] nearest to [lo, hi] when they miss.
+// [lo, hi] ∩ [a, b], or the end of [lo, hi] nearest to [a, b] when they miss:
+// a command is never outside the limits, whatever the robot does now.
 void intersect(double lo, double hi, double a, double b, double& out_lo, double& out_hi) {
   out_lo = std::max(lo, a);
   out_hi = std::min(hi, b);
-  if (out_lo > out_hi) out_lo = out_hi = (a > hi) ? a : b;
+  if (out_lo > out_hi) out_lo = out_hi = (a > hi) ? hi : lo;
 }
 
 void linspace(double lo, double hi, int n, std::vector<double>& out) {
@@ -116,14 +117,10 @@ double stopping_distance(double v, double deceleration, double dt) {
 
 double detail::stopping_distance_unchecked(double v, double deceleration, double dt) {
   if (v <= 0.0) return 0.0;
-  const double drop = deceleration * dt;
-  // Periods after the first with speed left. The quotient is >= 0: below
-  // 2^53 its truncation is the floor, one instruction (std::floor is a call
-  // without SSE4.1).
-  const double quotient = v / drop;
-  const double m = quotient < 0x1p53 ? static_cast<double>(static_cast<std::int64_t>(quotient)) : std::floor(quotient);
-  return dt * ((m + 1.0) * v - drop * m * (m + 1.0) / 2.0);
+  return v * dt + braking_distance(v, deceleration);
 }
+
+double detail::braking_distance(double v, double deceleration) { return v * v / (2.0 * deceleration); }
 
 double arc_deceleration(const Twist& command, const RobotLimits& limits) {
   detail::require_twist("command", command);
@@ -133,8 +130,9 @@ double arc_deceleration(const Twist& command, const RobotLimits& limits) {
 
 double detail::arc_deceleration_unchecked(const Twist& command, const RobotLimits& limits) {
   double b = std::min(limits.acc_v, limits.braking_v());
-  if (command.omega != 0.0 && command.v > 0.0)
-    b = std::min(b, std::min(limits.acc_omega, limits.braking_omega()) * command.v / std::abs(command.omega));
+  const double speed = std::abs(command.v);
+  if (command.omega != 0.0 && speed > 0.0)
+    b = std::min(b, std::min(limits.acc_omega, limits.braking_omega()) * speed / std::abs(command.omega));
   return b;
 }
 
@@ -150,12 +148,32 @@ bool is_admissible(const Twist& command, double free_distance, const RobotLimits
 
 bool detail::is_admissible_unchecked(const Twist& command, double free_distance, const RobotLimits& limits, double dt,
                                      BrakingModel model) {
+  return is_admissible_unchecked(command, command, std::max(command.v, 0.0) * dt, free_distance, limits, dt, model);
+}
+
+bool detail::is_admissible_unchecked(const Twist& command, const Twist& reached, double first_step,
+                                     double free_distance, const RobotLimits& limits, double dt, BrakingModel model) {
+  (void)dt;
   if (std::isinf(free_distance)) return true;
   const bool v_ok =
       model == BrakingModel::Continuous
           ? command.v <= std::sqrt(2.0 * free_distance * limits.braking_v())
-          : stopping_distance_unchecked(command.v, arc_deceleration_unchecked(command, limits), dt) <= free_distance;
+          : first_step + braking_distance(reached.v, arc_deceleration_unchecked(reached, limits)) <= free_distance;
   return v_ok && std::abs(command.omega) <= std::sqrt(2.0 * free_distance * limits.braking_omega());
+}
+
+bool is_admissible(const Twist& current, const Twist& command, double free_distance, const RobotLimits& limits,
+                   double dt, BrakingModel model) {
+  detail::require_twist("current", current);
+  detail::require_twist("command", command);
+  if (std::isnan(free_distance) || free_distance < 0.0)
+    throw Error(detail::describe("free_distance", free_distance, "must be >= 0 (+inf: no contact)"));
+  limits.validate();
+  detail::require_time_step("dt", dt);
+  Twist reached = current;
+  const double first = std::abs(ramp_step(reached.v, command.v, limits.acc_v, limits.braking_v(), dt)) * dt;
+  ramp_step(reached.omega, command.omega, limits.acc_omega, limits.braking_omega(), dt);
+  return detail::is_admissible_unchecked(command, reached, first, free_distance, limits, dt, model);
 }
 
 Twist braking_command(const RobotLimits& limits, const Twist& current, double dt) {

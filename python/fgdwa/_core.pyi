@@ -1361,6 +1361,7 @@ class PlannerParams:
       window: samples of the dynamic window
       normalization: how each critic's terms are scaled before weighting: sum (classic DWA), minmax, or none (raw, as Nav2's DWB adds them)
       braking: admissibility's braking rule (Eq. 3): discrete (one period of latency, stepped deceleration) or continuous (the paper's literal form)
+      wheels: how a rollout's first steps reach the sampled velocity: ramp (from the measured twist at the acceleration limits, as a robot's wheels do) or instant (at once, as an ideal simulated body does)
       goal_tolerance (m): GoalReached within this distance of the goal
       safety_margin (m): clearance below which a rollout counts as in contact (never more than the robot's own)
       moving_horizon (s): a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: only the braking rule counts movers)
@@ -1384,6 +1385,7 @@ class PlannerParams:
     normalization: typing.Any
     safety_margin: typing.Any
     sim_time: typing.Any
+    wheels: typing.Any
     window: typing.Any
     @staticmethod
     def schema() -> list:

@@ -551,3 +551,45 @@ TEST(PlannerTerrain, RejectsRolloutsIntoGradeFourAndCapsTheWindow) {
   EXPECT_EQ(free.reject_counts[static_cast<std::size_t>(RejectReason::Terrain)], 0);
   EXPECT_GT(free.command.v, cap);
 }
+
+namespace {
+
+// States no command produces: a push, a slope or a bad report.
+const std::vector<Twist> kWildTwists = {{5.0, 0.0}, {-1.0, 0.0}, {0.3, 10.0}, {0.3, -10.0}, {5.0, 10.0}, {-1.0, -10.0}};
+
+// Inside [v_min, v_max] x [-omega_max, omega_max], or reversing no faster than a backup may.
+void expect_inside_limits(const Twist& command, const RobotLimits& limits, NavigatorMode mode,
+                          const NavigatorParams& params) {
+  const double v_lo = mode == NavigatorMode::BackingUp || mode == NavigatorMode::Rotating
+                          ? -std::min(params.backup_speed, limits.v_max)
+                          : limits.v_min;
+  EXPECT_GE(command.v, v_lo) << to_string(mode);
+  EXPECT_LE(command.v, limits.v_max) << to_string(mode);
+  EXPECT_LE(std::abs(command.omega), limits.omega_max) << to_string(mode);
+}
+
+}  // namespace
+
+TEST(Navigator, CommandsStayInsideTheLimitsWhateverTheStateReports) {
+  const OccupancyGrid map = room(30, 60, {{12, 30, 6, 3}});
+  RobotLimits limits;
+  limits.v_max = 0.8;
+  NavigatorParams params;
+  params.stall_time = 0.3;
+  for (const Twist& wild : kWildTwists) {
+    SCOPED_TRACE(::testing::Message() << "state twist " << wild.v << ", " << wild.omega);
+    Navigator nav(limits, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+    nav.set_goal(Vec2(5.5, 1.5));
+    double t = 0.0;
+    RobotState state = at(1.0, 1.5);
+    // Following, then held in place until a recovery backs up or rotates, then failing.
+    for (int i = 0; i < 40; ++i, t += 0.15) {
+      state.twist = wild;
+      const CycleRecord& r = nav.step(state, nullptr, t);
+      expect_inside_limits(r.command, limits, r.mode, params);
+    }
+    EXPECT_GT(nav.mode_counts()[static_cast<std::size_t>(NavigatorMode::BackingUp)] +
+                  nav.mode_counts()[static_cast<std::size_t>(NavigatorMode::Rotating)],
+              0);
+  }
+}

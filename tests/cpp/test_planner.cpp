@@ -12,6 +12,7 @@
 
 #include "fgdwa/clearance.hpp"
 #include "fgdwa/collision.hpp"
+#include "fgdwa/controller.hpp"
 #include "fgdwa/planner.hpp"
 #include "fgdwa/presets.hpp"
 #include "test_support.hpp"
@@ -136,24 +137,34 @@ Pose2 along_rollout_arc(const Pose2& start, const Twist& cmd, double dt, double 
   return Pose2{p.real(), p.imag(), a + steps * b};
 }
 
-// Drives the command for one period, then brakes as the planner's fallback does
-// (braking_command each period) until the robot stands, moving as the motion
-// model does: each period turns in place, then drives straight. Checks every `h`
-// metres of the drives and every 0.01 rad of the turns; returns the smallest
-// clearance seen and the distance travelled.
-double braking_clearance(const ClearanceSource& world, const Footprint& fp, const Pose2& start, const Twist& cmd,
-                         const RobotLimits& limits, double dt, double h, double& travelled) {
+// From `current`, heads for the command for one period (the wheels ramping
+// toward it at the limits), then brakes as the planner's fallback does
+// (braking_command each period, the wheels ramping down along the arc) until
+// the robot stands, moving with the wheels' mean twist as the motion model
+// does: each period turns in place, then drives straight. Checks every `h` metres of the drives and every
+// 0.01 rad of the turns; returns the smallest clearance seen and the distance
+// travelled.
+double braking_clearance(const ClearanceSource& world, const Footprint& fp, const Pose2& start, const Twist& current,
+                         const Twist& cmd, const RobotLimits& limits, double dt, double h, double& travelled) {
   travelled = 0.0;
   double worst = world.clearance(fp, start, 0.0);
   Pose2 pose = start;
-  Twist twist = cmd;
-  for (int period = 0; period < 10000 && (twist.v > 0.0 || twist.omega != 0.0); ++period) {
+  Twist wheels = current, command = cmd;
+  for (int period = 0; period < 10000 && (wheels.v != 0.0 || wheels.omega != 0.0); ++period) {
+    Twist twist;
+    if (period == 0) {
+      twist.v = ramp_step(wheels.v, command.v, limits.acc_v, limits.braking_v(), dt);
+      twist.omega = ramp_step(wheels.omega, command.omega, limits.acc_omega, limits.braking_omega(), dt);
+    } else {
+      twist = Twist{0.5 * (wheels.v + command.v), 0.5 * (wheels.omega + command.omega)};
+      wheels = command;
+    }
     const Pose2 next = unicycle_step(pose, twist, dt);
     const double turn = angle_difference(next.theta, pose.theta);
     const int turns = fp.is_circle() ? 0 : static_cast<int>(std::ceil(std::abs(turn) / 0.01));
     for (int k = 1; k <= turns; ++k)
       worst = std::min(worst, world.clearance(fp, Pose2{pose.x, pose.y, pose.theta + turn * k / turns}, 0.0));
-    const double length = twist.v * dt;
+    const double length = std::abs(twist.v) * dt;
     const int pieces = std::max(1, static_cast<int>(std::ceil(length / h)));
     for (int k = 1; k <= pieces; ++k) {
       const double f = double(k) / pieces;
@@ -162,7 +173,7 @@ double braking_clearance(const ClearanceSource& world, const Footprint& fp, cons
     }
     travelled += length;
     pose = next;
-    twist = braking_command(limits, twist, dt);
+    command = braking_command(limits, wheels, dt);
   }
   return worst;
 }
@@ -175,6 +186,7 @@ void check_admissible_samples_can_stop(const RobotLimits& limits, const Footprin
                                        int states, const WindowParams& window, double h) {
   PlannerParams params;
   params.window = window;
+  params.wheels = WheelModel::Ramp;
   LocalPlanner planner(limits, fp, params);
   const double dt = params.dt;
   int finite = 0, rejected = 0;
@@ -195,9 +207,8 @@ void check_admissible_samples_can_stop(const RobotLimits& limits, const Footprin
         if (r.reasons[i] != RejectReason::None) {
           ++rejected;
           ASSERT_TRUE(std::isfinite(free));
-          // The default braking model: one period at the command, then stepped braking.
-          const double stop = stopping_distance(cmd.v, std::min(limits.acc_v, limits.braking_v()), dt);
-          ASSERT_TRUE(stop > free || std::abs(cmd.omega) > std::sqrt(2 * free * limits.braking_omega()));
+          // The default braking model: one period ramping toward the command, then braking.
+          ASSERT_FALSE(is_admissible(state.twist, cmd, free, limits, dt));
           continue;
         }
         if (std::isinf(free)) continue;
@@ -205,11 +216,20 @@ void check_admissible_samples_can_stop(const RobotLimits& limits, const Footprin
         ASSERT_LE(cmd.v * cmd.v / (2 * limits.braking_v()), free + 1e-12);
         ASSERT_LE(cmd.omega * cmd.omega / (2 * limits.braking_omega()), free + 1e-12);
         const Trajectory& poses = planner.rollouts()[i];
+        const Trajectory expected = rollout(state.pose, state.twist, cmd, limits, dt, 3);
         for (int k = 1; k <= 3; ++k) {
-          ASSERT_LT((along_rollout_arc(state.pose, cmd, dt, k).position() - poses[k - 1].position()).norm(), 1e-9);
+          ASSERT_LT((expected[k - 1].position() - poses[k - 1].position()).norm(), 1e-9);
+          ASSERT_LT(std::abs(angle_difference(expected[k - 1].theta, poses[k - 1].theta)), 1e-9);
+        }
+        // Once at the command, the poses keep to its arc.
+        Twist reached = state.twist;
+        ramp_step(reached.v, cmd.v, limits.acc_v, limits.braking_v(), dt);
+        ramp_step(reached.omega, cmd.omega, limits.acc_omega, limits.braking_omega(), dt);
+        for (int k = 2; k <= 4 && reached.v == cmd.v && reached.omega == cmd.omega; ++k) {
+          ASSERT_LT((along_rollout_arc(poses[0], cmd, dt, k - 1).position() - poses[k - 1].position()).norm(), 1e-9);
         }
         double travelled = 0.0;
-        const double c = braking_clearance(source, fp, state.pose, cmd, limits, dt, h, travelled);
+        const double c = braking_clearance(source, fp, state.pose, state.twist, cmd, limits, dt, h, travelled);
         ASSERT_LE(travelled, free + 1e-9);
         ASSERT_GT(c, 0.0) << "collides while braking after " << travelled << " m";
       }
@@ -289,7 +309,12 @@ void expect_free_distances_match_sweeps(LocalPlanner& planner, const ClearanceSo
     } else {
       ++n.touching;
       n.between += ends_clear;  // the step's end placement clear: only its sweep shows contact
-      EXPECT_NEAR(r.free_distance[i], first_touch * cmd.v * dt, 1e-12);
+      // The distance travelled over the first_touch steps before it.
+      double travelled = 0.0;
+      for (int k = 0; k < first_touch; ++k)
+        travelled += (poses[static_cast<std::size_t>(k)].position() -
+                      (k == 0 ? state.pose.position() : poses[static_cast<std::size_t>(k - 1)].position())).norm();
+      EXPECT_NEAR(r.free_distance[i], travelled, 1e-9);
     }
   }
 }
@@ -1097,6 +1122,68 @@ TEST(LocalPlanner, SinglePrecisionDtwChoosesAsDoubleDoes) {
   std::printf("single vs double DTW: %d cycles, %d with a choice, %d differ within a 1e-6 tie\n", cycles, chosen, ties);
   EXPECT_EQ(cycles, 10000);
   EXPECT_GT(chosen, 9000);
+}
+
+}  // namespace
+}  // namespace fgdwa
+
+namespace fgdwa {
+namespace {
+
+// States no command produces: a push, a slope or a bad report.
+const std::vector<Twist> kWildTwists = {{5.0, 0.0}, {-1.0, 0.0}, {0.3, 10.0}, {0.3, -10.0}, {5.0, 10.0}, {-1.0, -10.0}};
+
+void expect_inside_limits(const Twist& command, const RobotLimits& limits) {
+  EXPECT_GE(command.v, limits.v_min);
+  EXPECT_LE(command.v, limits.v_max);
+  EXPECT_LE(std::abs(command.omega), limits.omega_max);
+}
+
+TEST(LocalPlanner, CommandsStayInsideTheLimitsWhateverTheState) {
+  RobotLimits limits;
+  limits.v_max = 0.8;
+  PlannerParams params;
+  params.wheels = WheelModel::Ramp;
+  LocalPlanner planner(limits, Footprint::circle(0.25), params);
+  const FieldClearance open;
+  const std::vector<std::uint8_t> cells = [] {
+    std::vector<std::uint8_t> c(40 * 40, 0);
+    for (int row = 15; row < 25; ++row) c[static_cast<std::size_t>(row) * 40 + 30] = 1;  // a wall 1 m ahead
+    return c;
+  }();
+  const FieldClearance wall(std::make_shared<DistanceField>(OccupancyGrid(40, 40, 0.1, Vec2(-2.0, -2.0), cells)));
+  for (const Twist& wild : kWildTwists)
+    for (const FieldClearance* world : {&open, &wall}) {
+      SCOPED_TRACE(::testing::Message() << "state twist " << wild.v << ", " << wild.omega);
+      const RobotState state{Pose2{}, wild};
+      const PlanResult& r = planner.plan(state, Vec2(3.0, 0.0), *world);
+      expect_inside_limits(r.command, limits);
+      for (const Twist& sample : r.samples) expect_inside_limits(sample, limits);
+      // The rollouts start where the robot is: the first step brakes from the state's twist.
+      if (!r.samples.empty()) {
+        const Trajectory expected = rollout(state.pose, wild, r.samples[0], limits, params.dt, 2);
+        EXPECT_LT((planner.rollouts()[0][1].position() - expected[1].position()).norm(), 1e-9);
+      }
+    }
+  // With a wall 1 m ahead, 5 m/s cannot stop in time: every sample is rejected, the command brakes.
+  const PlanResult& r = planner.plan(RobotState{Pose2{}, Twist{5.0, 0.0}}, Vec2(3.0, 0.0), wall);
+  EXPECT_EQ(r.status, Status::NoAdmissibleVelocity);
+  EXPECT_EQ(r.command.v, limits.v_max);  // the closest to braking the wheels may be asked for
+}
+
+TEST(Controller, CommandsStayInsideTheLimitsWhateverTheState) {
+  RobotLimits limits;
+  limits.v_max = 0.8;
+  Controller controller(limits, Footprint::circle(0.25), PlannerParams{});
+  for (const Twist& wild : kWildTwists) {
+    SCOPED_TRACE(::testing::Message() << "state twist " << wild.v << ", " << wild.omega);
+    const CycleReport& r = controller.step(RobotState{Pose2{}, wild}, Vec2(3.0, 0.0), nullptr);
+    expect_inside_limits(r.command, limits);
+    // At the goal the command brakes, inside the limits too.
+    const CycleReport& at_goal = controller.step(RobotState{Pose2{3.0, 0.0, 0.0}, wild}, Vec2(3.0, 0.0), nullptr);
+    EXPECT_EQ(at_goal.status, Status::GoalReached);
+    expect_inside_limits(at_goal.command, limits);
+  }
 }
 
 }  // namespace

@@ -96,11 +96,19 @@ TEST(Window, WindowIsTheIntersectionOfLimitsAndReachableVelocities) {
   EXPECT_NEAR(w.v_hi, 1.2, 1e-12);
   EXPECT_NEAR(w.omega_lo, -1.0, 1e-12);
   EXPECT_NEAR(w.omega_hi, -0.6, 1e-12);
-  // A speed beyond what any command could produce: the window is the reachable
-  // point nearest to the limits rather than empty.
+  // A speed beyond what any command could produce: the window is the point of
+  // the limits nearest to what is reachable, never outside them.
   const VelocityWindow far = dynamic_window(limits, Twist{2.0, 0.0}, 0.15);
-  EXPECT_NEAR(far.v_lo, 1.85, 1e-12);
+  EXPECT_EQ(far.v_lo, limits.v_max);
   EXPECT_EQ(far.v_lo, far.v_hi);
+  const VelocityWindow reversing = dynamic_window(limits, Twist{-1.0, 10.0}, 0.15);
+  EXPECT_EQ(reversing.v_lo, limits.v_min);
+  EXPECT_EQ(reversing.v_hi, limits.v_min);
+  EXPECT_EQ(reversing.omega_lo, limits.omega_max);
+  EXPECT_EQ(reversing.omega_hi, limits.omega_max);
+  const VelocityWindow spinning = dynamic_window(limits, Twist{5.0, -10.0}, 0.15);
+  EXPECT_EQ(spinning.v_hi, limits.v_max);
+  EXPECT_EQ(spinning.omega_lo, -limits.omega_max);
 }
 
 TEST(Window, BrakingCommandSlowsDownAlongTheSameArc) {
@@ -162,21 +170,26 @@ TEST(Window, ContinuousAdmissibilityIsEquationThree) {
   EXPECT_TRUE(ok(Twist{2.0, 0.0}, 0.5));
 }
 
-// The stepped model: one period at the command, then min(acc_v, brake_v) dt less per period.
-TEST(Window, DiscreteStoppingDistanceSumsTheSteppedSpeeds) {
+// The discrete model: one period at the command, then wheels ramping down at
+// min(acc_v, brake_v), period by period as braking_command asks.
+TEST(Window, DiscreteStoppingDistanceRampsDownAfterOnePeriod) {
   EXPECT_EQ(stopping_distance(0.0, 1.0, 0.15), 0.0);
-  // 1.0, 0.85, ..., 0.1 m/s for 0.15 s each.
-  EXPECT_NEAR(stopping_distance(1.0, 1.0, 0.15), 0.15 * (7 * 1.0 - 0.15 * 21), 1e-12);
+  EXPECT_NEAR(stopping_distance(1.0, 1.0, 0.15), 0.15 + 0.5, 1e-12);
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> speed(0.0, 2.0), decel(0.1, 3.0), dts(0.02, 0.5);
   for (int i = 0; i < 2000; ++i) {
     const double v = speed(rng), b = decel(rng), dt = dts(rng);
-    double sum = 0.0;
-    for (double u = v; u > 0.0; u -= b * dt) sum += u * dt;
-    ASSERT_NEAR(stopping_distance(v, b, dt), sum, 1e-9);
-    // Never shorter than continuous braking, and at most one period longer.
-    ASSERT_GE(stopping_distance(v, b, dt), v * v / (2 * b) - 1e-12);
-    ASSERT_LE(stopping_distance(v, b, dt), v * v / (2 * b) + v * dt + 1e-12);
+    // Wheels that ramp toward a command b dt lower each period, moving with the ramp's mean.
+    double ramped = v * dt, wheels = v;
+    for (int period = 0; period < 100000 && wheels > 0.0; ++period) {
+      const double command = std::max(wheels - b * dt, 0.0);
+      ramped += ramp_step(wheels, command, b, b, dt) * dt;
+    }
+    ASSERT_NEAR(stopping_distance(v, b, dt), ramped, 1e-9);
+    // Never shorter than wheels that jump to each command at the period's start.
+    double stepped = 0.0;
+    for (double u = v; u > 0.0; u -= b * dt) stepped += u * dt;
+    ASSERT_GE(stopping_distance(v, b, dt), stepped - 1e-12);
   }
   RobotLimits limits;
   const double d = stopping_distance(1.0, 1.0, 0.15);
@@ -189,6 +202,38 @@ TEST(Window, DiscreteStoppingDistanceSumsTheSteppedSpeeds) {
   limits.brake_v = 2.0;
   EXPECT_FALSE(is_admissible(Twist{1.0, 0.0}, d, limits, 0.15));
   EXPECT_TRUE(is_admissible(Twist{1.0, 0.0}, stopping_distance(1.0, 0.5, 0.15), limits, 0.15));
+}
+
+// From a robot moving otherwise, the first period ramps toward the command:
+// speeding up it covers less than the command's v dt, slowing down more.
+TEST(Window, AdmissibilityCountsTheFirstPeriodsRamp) {
+  const RobotLimits limits;  // acc_v 1
+  const double dt = 0.15;
+  const Twist command{1.0, 0.0};
+  const double steady = stopping_distance(1.0, 1.0, dt);
+  const double from_slower = (0.85 + 1.0) / 2 * dt + 0.5;  // ramp 0.85 -> 1.0, then braking from 1.0
+  EXPECT_TRUE(is_admissible(Twist{0.85, 0.0}, command, from_slower, limits, dt));
+  EXPECT_FALSE(is_admissible(Twist{0.85, 0.0}, command, from_slower - 1e-9, limits, dt));
+  EXPECT_LT(from_slower, steady);
+  EXPECT_TRUE(is_admissible(command, command, steady, limits, dt));
+  // A state beyond the limits: the first period brakes from it and ends above the command.
+  const double from_faster = (2.0 + 1.85) / 2 * dt + 1.85 * 1.85 / 2;
+  EXPECT_TRUE(is_admissible(Twist{2.0, 0.0}, command, from_faster, limits, dt));
+  EXPECT_FALSE(is_admissible(Twist{2.0, 0.0}, command, from_faster - 1e-9, limits, dt));
+}
+
+TEST(Window, RampStepMovesAtTheLimitsThenHolds) {
+  double v = 0.0;
+  EXPECT_DOUBLE_EQ(ramp_step(v, 1.0, 2.0, 4.0, 0.25), 0.25);  // 0 -> 0.5 at 2 m/s^2
+  EXPECT_DOUBLE_EQ(v, 0.5);
+  EXPECT_NEAR(ramp_step(v, 0.6, 2.0, 4.0, 0.25), 0.59, 1e-12);  // reaches 0.6 after 0.05 s
+  EXPECT_DOUBLE_EQ(v, 0.6);
+  EXPECT_DOUBLE_EQ(ramp_step(v, 0.6, 2.0, 4.0, 0.25), 0.6);  // holds
+  v = 1.0;
+  ramp_step(v, -1.0, 2.0, 4.0, 0.25);  // through zero: down at 4 for 0.25 s, then up at 2
+  EXPECT_DOUBLE_EQ(v, 0.0);
+  ramp_step(v, -1.0, 2.0, 4.0, 0.25);
+  EXPECT_DOUBLE_EQ(v, -0.5);
 }
 
 }  // namespace

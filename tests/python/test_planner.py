@@ -154,3 +154,24 @@ def test_peer_case_python_robotics_dwa():
                          footprint=fgdwa.Footprint.circle(1.0), params=params, max_steps=1500)
     assert result.summary.outcome == "success"
     assert result.summary.min_clearance > 0.0
+
+
+@pytest.mark.parametrize("twist", [(5.0, 0.0), (-1.0, 0.0), (0.3, 10.0), (0.3, -10.0)])
+def test_a_state_beyond_the_limits_never_yields_a_command_beyond_them(twist):
+    # A push, a slope or a bad report: the wheels are still asked for nothing the limits forbid.
+    limits = fgdwa.RobotLimits(v_max=0.8)
+    footprint = fgdwa.Footprint.circle(0.25)
+    cells = np.zeros((30, 60), dtype=np.uint8)
+    cells[:22, 30] = 1
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    world = fgdwa.FieldClearance(fgdwa.DistanceField(grid))
+    state = fgdwa.RobotState((0.5, 1.0, 0.0), twist)
+    planner = fgdwa.LocalPlanner(limits, footprint, fgdwa.PlannerParams())
+    controller = fgdwa.Controller(limits, footprint, fgdwa.PlannerParams())
+    navigator = fgdwa.Navigator(limits, footprint, fgdwa.PlannerParams(), grid, mapping="known")
+    navigator.set_goal((5.5, 1.0))
+    commands = [planner.plan(state, (5.5, 1.0), world).command, controller.step(state, (5.5, 1.0), None).command,
+                navigator.step(state, None, 0.0).command]
+    for command in commands:
+        assert limits.v_min <= command.v <= limits.v_max
+        assert abs(command.omega) <= limits.omega_max

@@ -63,8 +63,16 @@ enum class HeadingTarget : std::uint8_t {
   KeyNodes,  // the first key node of the global path not yet reached: GDWA
 };
 
+// How the wheels take a new command, in the rollouts' first steps.
+enum class WheelModel : std::uint8_t {
+  Ramp,     // from the measured twist toward the command at the acceleration limits, as a robot's wheels do
+  Instant,  // the command from the period's start, as an ideal simulated body does
+};
+
 const char* to_string(Status status);
 const char* to_string(HeadingTarget target);
+const char* to_string(WheelModel wheels);
+constexpr std::array<WheelModel, 2> enum_values(WheelModel) { return {WheelModel::Ramp, WheelModel::Instant}; }
 const char* to_string(RejectReason reason);
 const char* to_string(Normalization normalization);
 constexpr std::array<Normalization, 3> enum_values(Normalization) {
@@ -78,6 +86,7 @@ struct PlannerParams {
   WindowParams window;
   Normalization normalization = Normalization::Sum;
   BrakingModel braking = BrakingModel::Discrete;
+  WheelModel wheels = WheelModel::Instant;
   double goal_tolerance = 0.3;
   double safety_margin = 0.02;
   // A robot that brakes is still hit by what moves into it, so standing
@@ -100,6 +109,7 @@ struct PlannerParams {
     v.group("window", &P::window, "samples of the dynamic window");
     v.choice("normalization", &P::normalization, "how each critic's terms are scaled before weighting: sum (classic DWA), minmax, or none (raw, as Nav2's DWB adds them)");
     v.choice("braking", &P::braking, "admissibility's braking rule (Eq. 3): discrete (one period of latency, stepped deceleration) or continuous (the paper's literal form)");
+    v.choice("wheels", &P::wheels, "how a rollout's first steps reach the sampled velocity: ramp (from the measured twist at the acceleration limits, as a robot's wheels do) or instant (at once, as an ideal simulated body does)");
     v.real("goal_tolerance", &P::goal_tolerance, "m", Bounds::at_least(0), "GoalReached within this distance of the goal");
     v.real("safety_margin", &P::safety_margin, "m", Bounds::at_least(0), "clearance below which a rollout counts as in contact (never more than the robot's own)");
     v.real("moving_horizon", &P::moving_horizon, "s", Bounds::at_least(0, limits::kMaxHorizon), "a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: only the braking rule counts movers)");
@@ -219,6 +229,18 @@ class LocalPlanner {
   // rollouts_[first], rollouts_[first + stride], ...: the samples turning as
   // the first does, from headings_[first].
   void rollouts_sharing(const Pose2& start, std::size_t first, std::size_t stride);
+  // Each row of the window (one v, `row` samples) ramps from `v_now` toward
+  // its v the same way: the signed length of every step, the distance
+  // travelled after k steps and what its first period does.
+  struct SpeedProfile {
+    double reached = 0.0;  // m/s, v at the end of the first period
+    double first = 0.0;    // m, the first period's travel
+    double longest = 0.0;  // m, the longest step
+  };
+  void speed_profiles(double v_now, std::size_t row, bool instant);
+  std::vector<double> lengths_;  // rows x steps
+  std::vector<double> travel_;   // rows x (steps + 1), from 0
+  std::vector<SpeedProfile> profiles_;
   std::vector<double> escape_;  // per sample: clearance to the movers at the end of moving_horizon
   // The velocity critic's index (none: past the end), and the weights this
   // cycle scores with (its weight scaled while a mover is near).
@@ -263,6 +285,7 @@ class LocalPlanner {
   // is farthest from the movers at the horizon); -1 if there is none.
   int best_evasion(const ClearanceSource& world) const;
   double margin_ = 0.0;  // this cycle's contact margin (m)
+  Twist start_twist_;    // this cycle's measured twist, where every rollout starts
 
   std::shared_ptr<const TerrainGrid> terrain_;
   PassingFactors passing_factors_ = kDefaultPassingFactors;

@@ -7,6 +7,7 @@
 //
 // Lifecycle: reset() with every new goal; step() every cycle, before the local
 // planner; end_cycle() after it.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <deque>
@@ -99,6 +100,8 @@ class Recovery {
   bool standing_clear_of(const std::vector<Disc>& movers, const RobotState& state, double duration) const;
   Twist backup_command(const RobotState& state);
   Twist rotate_command(const RobotState& state) const;
+  // The fastest reverse a recovery asks for: backup_speed, never beyond v_max.
+  double reverse_limit() const { return std::min(params_.backup_speed, limits_.v_max); }
   double open_heading(const FieldClearance& seen, const Pose2& pose) const;
 
   RobotLimits limits_;

@@ -111,13 +111,35 @@ Pose2 unicycle_step(const Pose2& pose, const Twist& twist, double dt);
 void rollout(const Pose2& start, const Twist& twist, double dt, int n_steps, Trajectory& out);
 Trajectory rollout(const Pose2& start, const Twist& twist, double dt, int n_steps);
 
+// How wheels follow a new command, the way Nav2 DWB's trajectory generator
+// models it: a velocity moves toward its target at `rise` (per second) while
+// its magnitude grows and at `fall` while it shrinks (through zero: shrinking,
+// then growing), then holds it. One step of dt: `value` becomes the velocity at
+// the step's end; returns its mean over the step, which a unicycle step uses.
+double ramp_step(double& value, double target, double rise, double fall, double dt);
+
+// The rollout a planner predicts for `command` from a robot moving at
+// `current`: each step moves with the mean twist of the ramp toward the
+// command at the limits (acc_v, braking_v(); acc_omega, braking_omega()), then
+// with the command itself.
+void rollout(const Pose2& start, const Twist& current, const Twist& command, const RobotLimits& limits, double dt,
+             int n_steps, Trajectory& out);
+Trajectory rollout(const Pose2& start, const Twist& current, const Twist& command, const RobotLimits& limits,
+                   double dt, int n_steps);
+
 // The headings of a rollout, pose by pose, with their cosines and sines: they
 // depend on the start heading and omega only, so every command of a window
 // with the same omega shares them.
 struct RolloutHeadings {
   // Computes them in place, reusing the storage.
   void assign(double start_theta, double cos_start, double sin_start, double omega, double dt, int n_steps);
+  // The same for a turn rate that ramps from `omega_now` toward `omega`
+  // (ramp_step, at `rise` and `fall`) before it holds: the first steps turn by
+  // the ramp's mean, `max_turn` becomes the largest |turn| of a step (rad).
+  void assign(double start_theta, double cos_start, double sin_start, double omega_now, double omega, double rise,
+              double fall, double dt, int n_steps);
   std::vector<double> theta, cos, sin;  // per pose; theta wrapped to (-pi, pi]
+  double max_turn = 0.0;
 };
 
 // The same rollout with the headings given and the step length v dt.

@@ -35,9 +35,11 @@ struct VelocityWindow {
   void validate() const;
 };
 
-// Vm ∩ Vd for the current velocity. When the current velocity lies so far
-// outside the limits that the two do not meet (a state no command of this
-// planner produces), the window collapses onto the point of Vd nearest to Vm.
+// Vm ∩ Vd for the current velocity, always inside the limits. When the
+// current velocity lies so far outside them that the two do not meet (a
+// state no command of this planner produces: a push, a slope, a bad report),
+// the window collapses onto the point of Vm nearest to Vd; the rollouts then
+// brake from the state toward it at the limits.
 VelocityWindow dynamic_window(const RobotLimits& limits, const Twist& current, double dt);
 
 // n_v x n_omega commands, v-major. The interior sample nearest to the current
@@ -52,23 +54,30 @@ enum class BrakingModel : std::uint8_t {
   // Eq. 3 as written: v <= sqrt(2 dist brake_v), braking starting at once and
   // continuously.
   Continuous,
-  // The robot drives the command for one control period, then slows down on
-  // the same arc as the window lets it (braking_command): v drops by b dt per
-  // period, b = min(acc_v, brake_v, acc_omega v / |omega|), and
-  // stopping_distance(v, b) <= dist. Without the period of latency, Eq. 3
-  // admits commands that the stepped deceleration cannot stop in time.
+  // The robot follows the rollout for one control period (its wheels ramping
+  // from the measured twist toward the command), then slows down on the same
+  // arc as the window lets it (braking_command): its wheels ramp down at
+  // b = min(acc_v, brake_v, acc_omega v / |omega|), covering v^2 / (2 b).
+  // The first period's travel plus that must fit in dist. Without the period
+  // of latency, Eq. 3 admits commands that cannot stop in time.
   Discrete,
 };
 const char* to_string(BrakingModel braking);
 constexpr std::array<BrakingModel, 2> enum_values(BrakingModel) { return {BrakingModel::Discrete, BrakingModel::Continuous}; }
 
-// Distance covered by the Discrete model from speed v: dt sum_j max(v - j b dt, 0), j >= 0.
+// Distance covered by the Discrete model from a robot already at speed v:
+// v dt + v^2 / (2 b), 0 for v <= 0.
 double stopping_distance(double v, double deceleration, double dt);
 
 // Eq. 3: the v condition per the braking model, and |omega| <= sqrt(2 dist brake_omega),
-// where `free_distance` is the arc length travelled before first contact (+inf if none).
+// where `free_distance` is the arc length travelled before first contact (+inf if none),
+// for a robot already moving at `command`.
 bool is_admissible(const Twist& command, double free_distance, const RobotLimits& limits, double dt,
                    BrakingModel model = BrakingModel::Discrete);
+// The same for a robot moving at `current`: its first period ramps toward
+// the command (ramp_step), and the braking starts from where that leaves it.
+bool is_admissible(const Twist& current, const Twist& command, double free_distance, const RobotLimits& limits,
+                   double dt, BrakingModel model = BrakingModel::Discrete);
 
 // Deceleration along the command's arc when v and omega shrink together, as
 // braking_command shrinks them: min(acc_v, brake_v, min(acc_omega, brake_omega) v / |omega|).
