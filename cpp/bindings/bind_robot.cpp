@@ -38,6 +38,10 @@ void init_robot(py::module_& m) {
       .def_static(
           "polygon", [](py::handle vertices) { return Footprint::polygon(to_points(vertices, "vertices")); },
           py::arg("vertices"), "A convex polygon, (n, 2) vertices in metres, robot frame (x forward, y left).")
+      .def(
+          "padded", [](const Footprint& f, FloatArg margin) { return f.padded(to_float(margin, "margin")); },
+          py::arg("margin"),
+          "The footprint grown by `margin` metres on every side (a polygon's corners kept sharp).")
       .def_property_readonly("is_circle", &Footprint::is_circle)
       .def_property_readonly("radius", &Footprint::radius, "Circle radius or circumscribed radius, m.")
       .def_property_readonly("inscribed_radius", &Footprint::inscribed_radius,

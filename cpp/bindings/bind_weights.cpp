@@ -125,11 +125,12 @@ void init_weights(py::module_& m) {
         "A planner by name: dwa, gdwa, sgdwa, fgdwa, gdwa_high_safety, gdwa_high_similarity; dwb (Nav2's DWB critics).");
   m.def("preset_names", &preset_names);
 
-  py::class_<RobotPreset>(m, "RobotPreset", "A robot by name: limits and footprint.")
+  py::class_<RobotPreset>(m, "RobotPreset", "A robot by name: limits, the footprint it is planned with and its true outline.")
       .def_readonly("name", &RobotPreset::name)
       .def_readonly("description", &RobotPreset::description)
       .def_readonly("limits", &RobotPreset::limits)
-      .def_readonly("footprint", &RobotPreset::footprint)
+      .def_readonly("footprint", &RobotPreset::footprint, "What the planner is configured with.")
+      .def_readonly("outline", &RobotPreset::outline, "The body itself: what a referee judges contact with.")
       .def("__repr__", [](const RobotPreset& r) { return "RobotPreset('" + r.name + "')"; });
   m.def("robot_preset", &robot_preset, py::arg("name"), "A robot by name: default, jackal.");
   m.def("robot_names", &robot_names);

@@ -36,11 +36,11 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
                      std::optional<TerrainGrid> terrain, const PassingFactors& passing_factors,
                      const DetectWindowParams& window)
     : limits_(limits),
-      footprint_(footprint),
+      footprint_(footprint.padded(validated(params).footprint_padding)),
       params_(validated(params)),
       lidar_(validated(lidar)),
       dt_(planner.dt),
-      controller_(limits, footprint, planner, nullptr, std::move(policy), window),
+      controller_(limits, footprint_, planner, nullptr, std::move(policy), window),
       world_(map, mode, params_, lidar_, footprint_, field_edge_margin(params_, limits_, footprint_, planner)),
       route_(map, footprint_, params_, dt_, terrain),
       recovery_(limits_, footprint_, params_, dt_, controller_.planner().params().safety_margin,

@@ -108,7 +108,7 @@ PlannerPreset planner_preset(const std::string& name) {
 RobotPreset robot_preset(const std::string& name) {
   if (name == "default")
     return RobotPreset{"default", "fgdwa's default robot: 1.2 m/s, 1 rad/s, circle of 0.25 m", RobotLimits{},
-                       Footprint::circle(0.25)};
+                       Footprint::circle(0.25), Footprint::circle(0.25)};
   if (name == "jackal") {
     // Clearpath's jackal_control/config/control.yaml: linear x max_velocity 2.0 m/s,
     // max_acceleration 20 m/s^2; angular z max_velocity 4.0 rad/s, max_acceleration 25 rad/s^2.
@@ -118,8 +118,11 @@ RobotPreset robot_preset(const std::string& name) {
     limits.omega_max = 4.0;
     limits.acc_v = 20.0;
     limits.acc_omega = 25.0;
-    return RobotPreset{"jackal", "Clearpath Jackal: 0.42 m x 0.33 m, 2 m/s, 4 rad/s, 20 m/s^2, 25 rad/s^2", limits,
-                       Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}})};
+    // The outline: Clearpath's outer dimensions, 508 mm x 430 mm with the wheels, about base_link.
+    return RobotPreset{"jackal", "Clearpath Jackal: planned as BARN's 0.42 m x 0.33 m box, body 0.508 m x 0.430 m, "
+                                 "2 m/s, 4 rad/s, 20 m/s^2, 25 rad/s^2", limits,
+                       Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}}),
+                       Footprint::polygon({{0.254, 0.215}, {-0.254, 0.215}, {-0.254, -0.215}, {0.254, -0.215}})};
   }
   throw Error("unknown robot preset '" + name + "' (known: default, jackal)");
 }

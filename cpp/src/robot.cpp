@@ -35,6 +35,29 @@ namespace {
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 }  // namespace
 
+Footprint Footprint::padded(double margin) const {
+  detail::require_magnitude("footprint padding", margin, limits::kMaxFootprintRadius);
+  if (margin < 0.0) throw Error(describe("footprint padding", margin, "must be >= 0 (m)"));
+  if (margin == 0.0) return *this;
+  if (is_circle()) return circle(radius_ + margin);
+  // Each edge moves out by `margin` along its normal; a vertex moves to where
+  // its two moved edges meet. Counter-clockwise, the outward normal of an
+  // edge e is (e.y, -e.x) / |e|.
+  const std::size_t n = vertices_.size();
+  std::vector<Vec2> grown(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& prev = vertices_[(i + n - 1) % n];
+    const Vec2& here = vertices_[i];
+    const Vec2& next = vertices_[(i + 1) % n];
+    const Vec2 a = (here - prev).normalized(), b = (next - here).normalized();
+    const Vec2 na(a.y(), -a.x()), nb(b.y(), -b.x());
+    // The point p with (p - here).na = (p - here).nb = margin.
+    const Vec2 bisector = na + nb;
+    grown[i] = here + bisector * (margin / (1.0 + na.dot(nb)));
+  }
+  return polygon(std::move(grown));
+}
+
 Footprint Footprint::polygon(std::vector<Vec2> vertices) {
   if (vertices.size() < 3)
     throw Error(describe("footprint vertices", vertices.size(), "a polygon needs at least 3 vertices"));

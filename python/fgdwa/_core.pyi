@@ -148,6 +148,10 @@ class Footprint:
         """
     def __repr__(self) -> str:
         ...
+    def padded(self, margin: typing.SupportsFloat | typing.SupportsIndex) -> Footprint:
+        """
+        The footprint grown by `margin` metres on every side (a polygon's corners kept sharp).
+        """
     def signed_distance(self, pose: typing.Any, point: typing.Any) -> float:
         ...
     @property
@@ -1753,7 +1757,7 @@ class PlannerPreset:
         ...
 class RobotPreset:
     """
-    A robot by name: limits and footprint.
+    A robot by name: limits, the footprint it is planned with and its true outline.
     """
     def __repr__(self) -> str:
         ...
@@ -1762,13 +1766,20 @@ class RobotPreset:
         ...
     @property
     def footprint(self) -> Footprint:
-        ...
+        """
+        What the planner is configured with.
+        """
     @property
     def limits(self) -> RobotLimits:
         ...
     @property
     def name(self) -> str:
         ...
+    @property
+    def outline(self) -> Footprint:
+        """
+        The body itself: what a referee judges contact with.
+        """
 class ScoredRollout:
     """
     A rollout the planner scored: its sample, command, total, poses.
@@ -2548,6 +2559,7 @@ class NavigatorParams:
     Replanning, recovery, the map from scans and moving obstacles of a Navigator.
     
     Keyword arguments, attributes (SI units, radians):
+      footprint_padding (m): the footprint grows by this on every side for everything the navigator plans and checks (room for a body larger than its configured footprint)
       path_margin (m): kept beyond the footprint's circumscribed radius by the global path where the map allows
       replan_period (s): shortest time between two replans for a blocked path
       stall_time (s): time over which too little progress is a stall (0: never stalls)
@@ -2578,6 +2590,7 @@ class NavigatorParams:
     name: typing.ClassVar[str] = 'navigator'
     backup_distance: typing.Any
     backup_speed: typing.Any
+    footprint_padding: typing.Any
     give_up_length: typing.Any
     keep_clear: typing.Any
     learn_obstacles: typing.Any

@@ -80,6 +80,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
     if args.latency:
         options["latency"] = args.latency
+    options["body"] = args.body
     tic = time.perf_counter()
     if args.gif or args.record:
         # The GIF and the recording replay the cycles; a wider fan of scored rollouts than the default 5
@@ -90,7 +91,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     result = run_scenario(scenario, planner, args.seed, **options)
     wall = time.perf_counter() - tic
     print(f"scenario {scenario.name}: {scenario.description}")
-    print(f"planner {planner}, seed {args.seed}")
+    print(f"planner {planner}, seed {args.seed}, body {args.body}")
     print(_format_metrics(result.metrics()))
     print(_cycle_line(result.trace.cycle_times))
     print(f"  episode wall     {wall:.2f} s")
@@ -127,6 +128,7 @@ def cmd_experiment(args: argparse.Namespace, argv) -> int:
     check_recording_possible(args.record_failures)
     out = Path(args.out)
     options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
+    options["body"] = args.body
     command = "fgdwa " + " ".join(shlex.quote(a) for a in (argv if argv is not None else sys.argv[1:]))
     tic = time.perf_counter()
     print(f"{', '.join(n.upper() for n in names)}: {args.trials} trials per planner, seeds {args.seed}.."
@@ -220,7 +222,7 @@ def _existing(path: Path):
 def build_parser() -> argparse.ArgumentParser:
     from fgdwa.bench.barn import register_barn_commands
     from fgdwa.bench.dynamic import register_dynamic_commands
-    from fgdwa.bench.options import add_executor_arguments, add_output_arguments, positive
+    from fgdwa.bench.options import add_body_argument, add_executor_arguments, add_output_arguments, positive
     from fgdwa.bench.recordings import add_record_failures_argument
 
     parser = argparse.ArgumentParser(prog="fgdwa", description="fgdwa: dynamic window local planning.")
@@ -245,6 +247,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--max-steps", type=positive, default=None, help="override the scenario's max_steps")
     run.add_argument("--latency", type=int, default=0, metavar="CYCLES",
                      help="control cycles from a scan to its command reaching the wheels (default 0)")
+    add_body_argument(run)
     run.set_defaults(func=lambda args, argv: cmd_run(args))
 
     exp = sub.add_parser("experiment", help="run the paper's experiments E1-E3 and write tables, figures "
@@ -260,6 +263,7 @@ def build_parser() -> argparse.ArgumentParser:
     add_output_arguments(exp, DEFAULT_EXPERIMENT_OUT, "the tables, figures and reports, one folder per experiment",
                          figures="the PNG figures")
     add_record_failures_argument(exp)
+    add_body_argument(exp)
     exp.set_defaults(func=cmd_experiment)
     ins = sub.add_parser("inspect", help="open a recording (fgdwa run ... --record FILE.rrd) in Rerun's viewer, "
                                          "or its web viewer when there is no display")

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fgdwa/error.hpp"
+#include "fgdwa/presets.hpp"
 #include "fgdwa/robot.hpp"
 #include "test_support.hpp"
 
@@ -352,6 +353,39 @@ TEST(Geometry, WrapAngleIsTheRemainderToTheBit) {
     const double got = wrap_angle(a), want = reference(a);
     ASSERT_EQ(std::memcmp(&got, &want, sizeof got), 0) << std::hexfloat << a << " -> " << got << ", not " << want;
   }
+}
+
+
+TEST(Footprint, PaddedGrowsEverySideByTheMargin) {
+  const Footprint box = Footprint::polygon({{0.21, 0.165}, {-0.21, 0.165}, {-0.21, -0.165}, {0.21, -0.165}});
+  const Footprint grown = box.padded(0.05);
+  ASSERT_EQ(grown.vertices().size(), 4u);
+  for (const Vec2& v : grown.vertices()) {
+    EXPECT_NEAR(std::abs(v.x()), 0.26, 1e-12);
+    EXPECT_NEAR(std::abs(v.y()), 0.215, 1e-12);
+  }
+  // A triangle: every point of the grown outline lies `margin` off the original.
+  const Footprint triangle = Footprint::polygon({{0.4, 0.0}, {-0.2, 0.25}, {-0.2, -0.25}});
+  const Footprint wider = triangle.padded(0.1);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Vec2 a = wider.vertices()[i], b = wider.vertices()[(i + 1) % 3];
+    EXPECT_NEAR(triangle.signed_distance(Pose2{}, 0.5 * (a + b)), 0.1, 1e-9);
+  }
+  EXPECT_DOUBLE_EQ(Footprint::circle(0.25).padded(0.05).radius(), 0.3);
+  EXPECT_DOUBLE_EQ(box.padded(0.0).radius(), box.radius());
+  expect_error_naming([&] { box.padded(-0.01); }, "footprint padding");
+  expect_error_naming([&] { box.padded(std::nan("")); }, "footprint padding");
+}
+
+TEST(Presets, TheJackalIsPlannedAsBarnsBoxAndJudgedAsItsBody) {
+  const RobotPreset jackal = robot_preset("jackal");
+  EXPECT_NEAR(jackal.footprint.vertices()[0].norm(), std::hypot(0.21, 0.165), 1e-12);
+  for (const Vec2& v : jackal.outline.vertices()) {
+    EXPECT_NEAR(std::abs(v.x()), 0.254, 1e-12);
+    EXPECT_NEAR(std::abs(v.y()), 0.215, 1e-12);
+  }
+  const RobotPreset plain = robot_preset("default");
+  EXPECT_EQ(plain.outline.radius(), plain.footprint.radius());
 }
 
 }  // namespace

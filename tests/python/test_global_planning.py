@@ -245,9 +245,11 @@ def test_plan_global_errors():
 
 def test_c_shaped_trap_dwa_is_stuck_gdwa_gets_through():
     scenario = c_trap_scenario()
-    dwa = run_episode(scenario.world, scenario.start, scenario.goal,
+    # With a lidar: the body's odometry drifts, and a robot that does not look drives into what its map
+    # holds at the wrong place.
+    dwa = run_episode(scenario.world, scenario.start, scenario.goal, lidar=fgdwa.LidarParams(),
                       params=fgdwa.PlannerParams(heading_target="goal"), max_steps=400)
-    gdwa = run_episode(scenario.world, scenario.start, scenario.goal,
+    gdwa = run_episode(scenario.world, scenario.start, scenario.goal, lidar=fgdwa.LidarParams(),
                        params=fgdwa.PlannerParams(heading_target="key_nodes"), max_steps=400)
     # Heading straight for the goal, DWA stalls in the trap; its recoveries cannot get it out,
     # and the navigator gives up after max_recoveries of them.

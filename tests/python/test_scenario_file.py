@@ -413,7 +413,7 @@ def test_constructor_keywords_are_the_schemas_fields():
     from fgdwa.sim.scenario import init_keywords
 
     names = init_keywords(fgdwa.NavigatorParams)
-    assert names[:2] == ("path_margin", "replan_period")
+    assert names[:3] == ("footprint_padding", "path_margin", "replan_period")
     assert {"occupancy", "segment", "tracker", "learn_obstacles", "mover_margin"} <= set(names)
     assert all(hasattr(fgdwa.NavigatorParams(), name) for name in names)
     assert init_keywords(fgdwa.RobotLimits) == ("v_min", "v_max", "omega_max", "acc_v", "acc_omega", "brake_v",
@@ -515,3 +515,11 @@ def test_png_map_over_the_cell_limit_is_refused_before_decoding(tmp_path, monkey
     monkeypatch.setattr(matplotlib_image, "imread", lambda *a, **k: pytest.fail("the pixels were decoded"))
     path = write(tmp_path, "map: {png: room.png, resolution: 0.5}\nstart: [0.5, 0.5]\ngoal: [1, 1]\n")
     fails(path, str(path), "map.png = 'room.png'", "4 x 6 = 24 cells")
+
+
+def test_a_robot_may_give_its_true_outline_which_the_referee_judges():
+    robot = "robot:\n  footprint: {radius: 0.2}\n  outline: {radius: 0.3}\n"
+    scenario = load_scenario(TINY + robot)
+    assert scenario.footprint.radius == 0.2 and scenario.outline.radius == 0.3
+    fails(TINY + "robot:\n  outline: {radius: -1}\n", "robot.outline.radius", "-1")
+    assert load_scenario(TINY).outline is None

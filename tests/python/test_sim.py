@@ -46,7 +46,7 @@ def test_timeout_when_steps_run_out():
 def test_a_disc_driving_into_the_robot_is_a_collision():
     disc = fgdwa.Disc((3.0, 0.0), 0.3, velocity=(-2.0, 0.0))
     params = fgdwa.PlannerParams(critics=[("heading", 1.0), ("velocity", 1.0)])
-    result = run_episode(World(discs=[disc]), (0.0, 0.0, np.pi), (-20.0, 0.0),
+    result = run_episode(World(discs=[disc]), (0.0, 0.0, np.pi), (-20.0, 0.0), body="ideal",
                          limits=fgdwa.RobotLimits(v_max=0.2), params=params, max_steps=50)
     assert result.summary.outcome == "collision"
     assert result.motion.clearances[-1] == pytest.approx(0.0, abs=1e-6)
@@ -166,13 +166,24 @@ def test_obstacles_missing_from_the_map_are_seen_by_the_lidar():
     assert np.any(np.all((squares - 1e-9 <= point) & (point <= squares + hidden.resolution + 1e-9), axis=1))
     assert np.hypot(*(point - blind.motion.poses[-1, :2])) <= 0.25 + 1e-6
     sensing = run_episode(scenario.world, scenario.start, scenario.goal, params=params, lidar=fgdwa.LidarParams(),
-                          max_steps=300)
+                          max_steps=300, body="ideal")
     assert sensing.summary.outcome == "success"
     assert sensing.summary.min_clearance > 0.0
     # The density of the detect window rises when the hidden blocks come into it.
     assert sensing.trace.density[0] == pytest.approx(0.5 ** (4 * np.sin(np.pi / 3)))
     assert sensing.trace.density.max() > 0.5
     assert np.all(np.isfinite(sensing.trace.deviation)) and sensing.trace.deviation.max() > 0.3
+
+
+def test_a_robot_whose_odometry_drifted_says_so_when_it_stops_short():
+    """With drifting odometry the navigator can stop where it believes the goal
+    is; the reason says so, and by how much its odometry was off."""
+    world = World()
+    result = run_episode(world, (0.0, 0.0, 0.0), (6.0, 0.0), max_steps=150, goal_tolerance=0.05,
+                         params=fgdwa.PlannerParams(goal_tolerance=0.05), odometry_drift=(0.2, 0.0), seed=4)
+    assert result.summary.outcome == "timeout" and result.trace.modes[-1] == "GoalReached"
+    off = np.hypot(*(result.motion.believed_poses[-1, :2] - result.motion.poses[-1, :2]))
+    assert result.summary.reason.endswith(f"(it believed it had arrived: its odometry was {off:.2f} m off)")
 
 
 def test_hidden_layout_must_match_the_map():
@@ -210,7 +221,7 @@ def test_recorded_cycles_are_what_the_planner_scored_and_the_gif_replays_them(tm
     assert plain.trace.cycles == []
     with pytest.raises(fgdwa.FgdwaError, match="record_cycles"):
         write_gif(plain, scenario, tmp_path / "x.gif", planner="dwa")
-    result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=30, lidar=fgdwa.LidarParams(),
+    result = run_episode(scenario.world, scenario.start, scenario.goal, max_steps=30, lidar=fgdwa.LidarParams(), body="ideal",
                          record_cycles=True, navigator=fgdwa.NavigatorParams(record_top_k=7))
     assert len(result.trace.cycles) == result.summary.steps == 30
     n_steps = fgdwa.PlannerParams().n_steps
@@ -259,8 +270,8 @@ def test_episode_options_and_keyword_settings_agree():
 
 
 def open_run(**settings):
-    """The classic DWA driving 8 m across an empty world."""
-    return run_episode(World(), (0.0, 0.0, 0.0), (8.0, 0.0), **settings)
+    """The classic DWA driving 8 m across an empty world, on the ideal body with the given settings."""
+    return run_episode(World(), (0.0, 0.0, 0.0), (8.0, 0.0), **{"body": "ideal", **settings})
 
 
 def test_latency_delays_every_command_by_its_cycles():
@@ -294,13 +305,16 @@ def test_actuation_lag_follows_the_command_as_a_first_order_lag():
 
 
 def test_actuation_noise_has_the_asked_spread():
-    # A latency longer than the run: the wheels only ever get the noise on a standing command.
-    result = open_run(max_steps=400, latency=1000, actuation_noise=(0.05, 0.1), seed=2)
-    v, omega = result.motion.commands.T
+    from fgdwa.sim.body import Body, BodySettings
+
+    body = Body(BodySettings(actuation_noise=(0.05, 0.1)), 0.15, seed=2)
+    v, omega = np.array([tuple(body.wheels(fgdwa.Twist(0.5, 0.2))) for _ in range(400)]).T
     # 400 draws: the sample std lies within 15 % of the true one with odds far beyond 1e-5.
     assert 0.85 * 0.05 < np.std(v) < 1.15 * 0.05
     assert 0.85 * 0.1 < np.std(omega) < 1.15 * 0.1
-    assert abs(np.mean(v)) < 0.05 * 5 / np.sqrt(400)
+    assert abs(np.mean(v) - 0.5) < 0.05 * 5 / np.sqrt(400)
+    # A standing command stays standing.
+    assert all(tuple(body.wheels(fgdwa.Twist(0.0, 0.0))) == (0.0, 0.0) for _ in range(50))
 
 
 def test_odometry_drift_misleads_the_navigator_but_not_the_referee():
@@ -324,7 +338,7 @@ def test_odometry_drift_misleads_the_navigator_but_not_the_referee():
     final = result.motion.poses[-1]
     assert result.motion.clearances[-1] == pytest.approx(truth.clearance(fgdwa.Footprint.circle(0.25), final))
     # Without drift the believed pose is the true one.
-    plain = run_episode(world, start, goal, max_steps=10, lidar=fgdwa.LidarParams(beams=181), seed=1)
+    plain = run_episode(world, start, goal, max_steps=10, lidar=fgdwa.LidarParams(beams=181), seed=1, body="ideal")
     np.testing.assert_array_equal(plain.motion.believed_poses, plain.motion.poses)
 
 
@@ -376,9 +390,43 @@ def test_a_fast_disc_passing_a_standing_robot_within_one_step_is_a_collision():
     ("latency", -1), ("latency", 1.5), ("latency", True),
     ("actuation_noise", (-0.1, 0.0)), ("actuation_noise", (0.1,)), ("actuation_noise", "ab"),
     ("actuation_lag", -0.1), ("actuation_lag", float("nan")),
-    ("odometry_drift", (float("nan"), 0.0)), ("odometry_drift", None),
+    ("odometry_drift", (float("nan"), 0.0)), ("odometry_drift", "x"), ("motor_rate", -1.0), ("motor_rate", 1e5),
+    ("actuation_lag", 10 ** 400), ("body", "wobbly"),
     ("seed", -1), ("seed", 0.5),
 ])
 def test_bad_body_settings_are_named(setting, value):
     with pytest.raises(fgdwa.FgdwaError, match=setting):
         open_run(max_steps=2, **{setting: value})
+
+
+def test_the_wheels_ramp_at_the_acceleration_limits_of_a_100_hz_motor_controller():
+    from fgdwa.sim.body import Body, BodySettings
+
+    limits = fgdwa.RobotLimits(acc_v=1.0, acc_omega=2.0, brake_v=3.0)
+    body = Body(BodySettings(motor_rate=100.0), 0.15, seed=0, limits=limits)
+    mean = body.drive(fgdwa.Twist(1.0, 1.0))
+    # 15 periods of 0.01 s: v gains 0.01 m/s each, omega 0.02 rad/s; the mean is over the trapezoids.
+    assert body.twist.v == pytest.approx(0.15) and body.twist.omega == pytest.approx(0.30)
+    assert mean.v == pytest.approx(0.075) and mean.omega == pytest.approx(0.15)
+    for _ in range(10):
+        body.drive(fgdwa.Twist(1.0, 1.0))
+    assert body.twist.v == pytest.approx(1.0) and body.twist.omega == pytest.approx(1.0)
+    # Slowing down is limited by the braking deceleration: 3 m/s^2 over 0.15 s.
+    body.drive(fgdwa.Twist(0.0, 1.0))
+    assert body.twist.v == pytest.approx(0.55)
+    with pytest.raises(fgdwa.FgdwaError, match="limits"):
+        Body(BodySettings(motor_rate=100.0), 0.15, seed=0)
+
+
+def test_the_default_body_is_a_real_robots_and_ideal_is_the_old_one():
+    from fgdwa.sim.body import BODY_PROFILES, BodySettings
+
+    default = BODY_PROFILES["default"]
+    assert default.motor_rate == 100.0 and min(default.actuation_noise) > 0 and min(default.odometry_drift) > 0
+    assert BODY_PROFILES["ideal"] == BodySettings()
+    drifting = open_run(max_steps=40, body="default", seed=5)
+    assert np.any(drifting.motion.believed_poses != drifting.motion.poses)
+    assert np.all(drifting.motion.twists[:3, 0] < drifting.motion.commands[:3, 0])
+    # A field given replaces the profile's.
+    exact = open_run(max_steps=40, body="default", odometry_drift=(0.0, 0.0), seed=5)
+    np.testing.assert_array_equal(exact.motion.believed_poses, exact.motion.poses)

@@ -2,18 +2,22 @@
 
 Run by Debian's /usr/bin/python3 (rospy) with fgdwa's package on the path.
 The world is a BARN map (fgdwa.io.load_barn); the robot is the
-``jackal`` robot preset's footprint driven by ``cmd_vel`` in real time: each
-tick (``--tick`` s) its velocity moves toward the last command within the
-Jackal's accelerations (a command older than ``--cmd-timeout`` s counts as a
-stop, as the Jackal's controller does), then fgdwa's unicycle step moves it.
+``jackal`` robot preset driven by ``cmd_vel`` in real time: each tick
+(``--tick`` s) its velocity moves toward the last command within the Jackal's
+accelerations (a command older than ``--cmd-timeout`` s counts as a stop, as
+the Jackal's controller does), then fgdwa's unicycle step moves it.
 It publishes what a Jackal publishes: ``front/scan`` (fgdwa's LaserScanner,
 720 beams over 270 degrees, range noise and dropped beams), ``odometry/filtered``
-and the ``odom -> base_link`` transform (exact: no drift), and the static
-``base_link -> front_laser`` mounting.
+and the ``odom -> base_link`` transform, which drift as the ``default`` body's
+odometry does (fgdwa.sim.body: a random walk per sqrt(m) travelled and per
+sqrt(rad) turned, ``--drift``), the static ``base_link -> front_laser``
+mounting, and ``/clock``: the simulated time, which the node runs on
+(``use_sim_time``) and every stamp carries.
 
 The referee is fgdwa's own (fgdwa.sim.collides_during_step on the exact FCL
-world, the same footprint the planner uses): a collision is the footprint
-touching the map's obstacles anywhere along a tick. ``sim/referee`` carries
+world) and judges the Jackal's true outline, 0.508 m x 0.430 m, not the
+smaller box the planner is configured with: a collision is the body touching
+the map's obstacles anywhere along a tick, at the true pose. ``sim/referee`` carries
 its verdict and the robot's true state as JSON; ``sim/scan_enabled``
 (std_msgs/Bool) silences the lidar and brings it back; ``sim/reset``
 (std_msgs/Empty) puts the robot back at the start, at rest. ``map`` (latched)
@@ -32,12 +36,14 @@ import rospy
 import tf2_ros
 from geometry_msgs.msg import TransformStamped, Twist as TwistMsg
 from nav_msgs.msg import OccupancyGrid as GridMsg, Odometry
+from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import LaserScan
 from std_msgs.msg import Bool, Empty, String
 
 import fgdwa
 from fgdwa.io import load_barn
 from fgdwa.sim import collides_during_step
+from fgdwa.sim.body import BODY_PROFILES, Body, BodySettings
 
 # m, m, rad: the challenge's UST-10 sits 0.065 m behind the Jackal's front mount (0.12 m ahead of base_link).
 LASER_MOUNT = (0.055, 0.0, 0.0)
@@ -63,8 +69,9 @@ class SimJackal:
         self.world = world
         self.grid = world.grid
         jackal = fgdwa.robot_preset("jackal")
-        self.footprint = jackal.footprint
+        self.outline = jackal.outline  # the body the referee judges
         self.limits = jackal.limits
+        self.odometry = Body(BodySettings(odometry_drift=tuple(args.drift)), args.tick, args.seed)
         self.truth = fgdwa.CollisionWorld(self.grid)
         lidar = fgdwa.LidarParams(fov=270.0 * math.pi / 180.0, beams=720, max_range=args.range_max, noise_std=args.noise,
                                   dropout=args.dropout)
@@ -74,6 +81,8 @@ class SimJackal:
         self.origin = np.array(world.start, dtype=float)
         self.odom_turn = args.odom_yaw - world.start[2]
         self.pose = np.array(world.start, dtype=float)  # map frame
+        self.believed = self.pose.copy()  # where the odometry says the robot is, map frame
+        self.sim_time = 0.0  # s since the start, published on /clock
         self.v = self.omega = 0.0
         self.cmd = (0.0, 0.0)
         self.cmd_time = -math.inf
@@ -86,6 +95,7 @@ class SimJackal:
         self.last_scan_time = 0.0
         self.scan_seed = args.seed * 1_000_003
 
+        self.clock_pub = rospy.Publisher("/clock", Clock, queue_size=10)
         self.scan_pub = rospy.Publisher("front/scan", LaserScan, queue_size=5)
         self.odom_pub = rospy.Publisher("odometry/filtered", Odometry, queue_size=5)
         self.referee_pub = rospy.Publisher("sim/referee", String, queue_size=5, latch=True)
@@ -107,6 +117,7 @@ class SimJackal:
 
     def on_reset(self, _msg: Empty) -> None:
         self.pose = np.array(self.world.start, dtype=float)
+        self.believed = self.pose.copy()
         self.v = self.omega = 0.0
         self.cmd = (0.0, 0.0)
         self.travelled = 0.0
@@ -153,12 +164,14 @@ class SimJackal:
          t.transform.rotation.w) = quaternion(LASER_MOUNT[2])
         self.static_tf.sendTransform(t)
 
-    def odom_pose(self):
-        """The robot's pose in the odometry frame: the map's, turned by odom_turn about the start."""
+    def odom_pose(self, pose=None):
+        """A pose (default: where the odometry believes the robot is) in the odometry
+        frame: the map's, turned by odom_turn about the start."""
+        pose = self.believed if pose is None else pose
         x0, y0, _ = self.origin
-        dx, dy = self.pose[0] - x0, self.pose[1] - y0
+        dx, dy = pose[0] - x0, pose[1] - y0
         c, s = math.cos(self.odom_turn), math.sin(self.odom_turn)
-        return c * dx - s * dy, s * dx + c * dy, fgdwa.wrap_angle(self.pose[2] + self.odom_turn)
+        return c * dx - s * dy, s * dx + c * dy, fgdwa.wrap_angle(pose[2] + self.odom_turn)
 
     def advance(self, dt: float, now: float) -> None:
         cmd_v, cmd_omega = self.cmd if now - self.cmd_time <= self.args.cmd_timeout else (0.0, 0.0)
@@ -167,9 +180,12 @@ class SimJackal:
         before = self.pose.copy()
         after = fgdwa.unicycle_step(tuple(before), (self.v, self.omega), dt)
         self.pose = np.array([after.x, after.y, after.theta])
+        self.odometry.dt = dt
+        self.believed = self.odometry.odometry(self.believed, fgdwa.Twist(self.v, self.omega), after)
+        self.sim_time += dt
         self.travelled += math.hypot(*(self.pose[:2] - before[:2]))
-        self.min_clearance = min(self.min_clearance, float(self.truth.clearance(self.footprint, tuple(self.pose), 0.0)))
-        if not self.collided and collides_during_step(self.truth, self.footprint, before, self.pose, 0.0, dt):
+        self.min_clearance = min(self.min_clearance, float(self.truth.clearance(self.outline, tuple(self.pose), 0.0)))
+        if not self.collided and collides_during_step(self.truth, self.outline, before, self.pose, 0.0, dt):
             self.collided = True
             self.collision_pose = self.pose.tolist()
             rospy.logwarn(f"sim_jackal: COLLISION at {self.collision_pose}")
@@ -216,8 +232,11 @@ class SimJackal:
 
     def publish_referee(self) -> None:
         x, y, th = self.odom_pose()
+        tx, ty, tth = self.odom_pose(self.pose)
         report = {"collided": self.collided, "collision_pose": self.collision_pose,
                   "min_clearance": self.min_clearance, "map_pose": self.pose.tolist(), "odom_pose": [x, y, th],
+                  "true_odom_pose": [tx, ty, tth], "odometry_error": float(np.hypot(*(self.believed - self.pose)[:2])),
+                  "sim_time": self.sim_time,
                   "v": self.v, "omega": self.omega, "travelled": self.travelled, "scans": self.scans,
                   "scan_enabled": self.scan_enabled, "last_scan_time": self.last_scan_time,
                   "world": self.world.world_id, "optimal_time": self.world.optimal_time,
@@ -238,7 +257,8 @@ class SimJackal:
             # Real time: integrate what passed, however late this tick is.
             self.advance(now - last, now)
             last = now
-            stamp = rospy.Time.now()
+            stamp = rospy.Time.from_sec(self.sim_time)
+            self.clock_pub.publish(Clock(clock=stamp))
             if count % odom_every == 0:
                 self.publish_state(stamp)
             if count % scan_every == 0 and self.scan_enabled:
@@ -267,6 +287,9 @@ def main() -> None:
     parser.add_argument("--range-max", type=float, default=30.0, help="m, the lidar's range")
     parser.add_argument("--odom-yaw", type=float, default=ODOM_YAW, help="rad, the robot's heading at the start, in odom")
     parser.add_argument("--cmd-timeout", type=float, default=0.25, help="s after which a command counts as a stop")
+    parser.add_argument("--drift", type=float, nargs=2, default=BODY_PROFILES["default"].odometry_drift,
+                        metavar=("M", "RAD"), help="odometry drift: m per sqrt(m) travelled, rad per sqrt(rad) turned "
+                                                   "(default: fgdwa's default body)")
     args = parser.parse_args(rospy.myargv()[1:])
     rospy.init_node("sim_jackal")
     SimJackal(args).run()

@@ -17,6 +17,7 @@ enum class MapMode : std::uint8_t {
 const char* to_string(MapMode mode);
 
 struct NavigatorParams {
+  double footprint_padding = 0.0;
   double path_margin = 0.3;
   double replan_period = 0.5;
   double stall_time = 3.0;
@@ -55,6 +56,7 @@ struct NavigatorParams {
     using P = NavigatorParams;
     const Bounds distance = Bounds::at_least(0);
     const Bounds time = Bounds::at_least(0, limits::kMaxHorizon);
+    v.real("footprint_padding", &P::footprint_padding, "m", Bounds::at_least(0, limits::kMaxFootprintRadius), "the footprint grows by this on every side for everything the navigator plans and checks (room for a body larger than its configured footprint)");
     v.real("path_margin", &P::path_margin, "m", distance, "kept beyond the footprint's circumscribed radius by the global path where the map allows");
     v.real("replan_period", &P::replan_period, "s", Bounds::positive(limits::kMaxHorizon), "shortest time between two replans for a blocked path");
     v.real("stall_time", &P::stall_time, "s", time, "time over which too little progress is a stall (0: never stalls)");

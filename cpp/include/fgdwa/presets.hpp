@@ -24,11 +24,14 @@ struct RobotPreset {
   std::string name;
   std::string description;
   RobotLimits limits;
-  Footprint footprint;
+  Footprint footprint;  // what the planner is configured with
+  Footprint outline;    // the body itself: what a referee judges contact with
 };
 
-// "default" (our choice: 1.2 m/s, 1 rad/s, circle of 0.25 m) and "jackal" (Clearpath
-// Jackal: 0.42 m x 0.33 m, the limits of its stock velocity controller).
+// "default" (our choice: 1.2 m/s, 1 rad/s, a body that is a circle of 0.25 m,
+// planned with as it is) and "jackal" (Clearpath Jackal: planned with the BARN
+// challenge's costmap box, 0.42 m x 0.33 m, while its body with the wheels is
+// 0.508 m x 0.430 m; the limits of its stock velocity controller).
 RobotPreset robot_preset(const std::string& name);
 std::vector<std::string> robot_names();
 

@@ -53,6 +53,11 @@ class Footprint {
   static Footprint circle(double radius);
   static Footprint polygon(std::vector<Vec2> vertices);
 
+  // The footprint grown by `margin` (m, >= 0) on every side: a circle's radius,
+  // a polygon's edges moved outward, its corners kept sharp (mitred) so
+  // that the grown polygon covers every point within `margin` of the outline.
+  Footprint padded(double margin) const;
+
   bool is_circle() const { return vertices_.empty(); }
   // Circle radius, or the polygon's circumscribed radius about the robot origin.
   double radius() const { return radius_; }

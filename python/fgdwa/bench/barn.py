@@ -36,6 +36,7 @@ from fgdwa.bench.runs import (OUTCOMES, Run, episode_columns, format_table, path
 from fgdwa.io.barn_convert import convert_barn_worlds
 from fgdwa.io.barn_data import BarnDataset, barn_score, describe_world_ids, find_barn_file, load_barn
 from fgdwa.mapping import MAPPING_MODES, check_mapping
+from fgdwa.sim.body import DEFAULT_BODY, body_profile
 from fgdwa.sim.episode import run_episode
 from fgdwa.sim.scenario import params_with
 from fgdwa.sim.world import World
@@ -73,6 +74,9 @@ class BarnSetup:
     noise_std: float = 0.03  # m, Gaussian range noise
     dropout: float = 0.01  # probability a beam returns nothing
     latency: int = 0  # control cycles from a scan to its command reaching the wheels
+    body: str = DEFAULT_BODY  # a profile of fgdwa.sim.body.BODY_PROFILES
+    # m: the planner's footprint (BARN's box) grows by this on every side; 0.05 covers the Jackal's body
+    footprint_padding: float = 0.05
     replan_period: float = 0.5  # s between replans of a blocked path at most
     stall_time: float = 3.0  # s without 0.1 m of progress before a recovery
     # The challenge's time limit ends a run: the navigator keeps recovering until then.
@@ -84,6 +88,10 @@ class BarnSetup:
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
                 raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be a finite number > 0")
         check_sensing("BarnSetup", self.noise_std, self.dropout, self.latency)
+        body_profile(self.body)
+        padding = self.footprint_padding
+        if not (isinstance(padding, (int, float)) and not isinstance(padding, bool) and 0 <= padding <= 1):
+            raise FgdwaError(f"BarnSetup.footprint_padding = {padding!r}: must be a number in [0, 1] (m)")
         for name in ("lidar_beams", "max_recoveries"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
@@ -97,7 +105,8 @@ class BarnSetup:
                            acc_omega=jackal.acc_omega)
 
     def navigator(self) -> NavigatorParams:
-        return NavigatorParams(replan_period=self.replan_period, stall_time=self.stall_time,
+        return NavigatorParams(footprint_padding=self.footprint_padding, replan_period=self.replan_period,
+                               stall_time=self.stall_time,
                                max_recoveries=self.max_recoveries)
 
     def lidar(self) -> LidarParams:
@@ -167,6 +176,7 @@ def run_barn_task(task: BarnTask) -> Run:
         navigator.record_top_k = RECORDED_ROLLOUTS
     tic = time.perf_counter()
     result = run_episode(world, task.start, task.goal, limits=setup.limits(), footprint=robot.footprint,
+                         outline=robot.outline, body=setup.body,
                          params=params, max_steps=max_steps, goal_tolerance=task.goal_radius, lidar=setup.lidar(),
                          weight_policy=preset.weight_policy(), seed=task.seed, mapping=task.mapping,
                          navigator=navigator, latency=setup.latency, record_cycles=bool(task.record))
@@ -226,7 +236,8 @@ def barn_command(args) -> int:
     dataset = load_barn(find_barn_file(args.data))
     world_ids = dataset.select_ids(args.worlds)
     planners = check_planners(args.planners)
-    setup = BarnSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency)
+    setup = BarnSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency, body=args.body,
+                      footprint_padding=args.footprint_padding)
     executor = dict(executor=args.executor, scheduler=args.scheduler, workers=args.workers,
                     progress=not args.no_progress)
     tic = time.perf_counter()
@@ -280,6 +291,10 @@ def register_barn_commands(subparsers) -> None:
     add_executor_arguments(barn)
     add_output_arguments(barn, "out/barn", "runs.csv, summary.json, failures.png")
     add_record_failures_argument(barn)
+    barn.add_argument("--footprint-padding", type=float, default=BarnSetup.footprint_padding, metavar="M",
+                      help="grow the planner's footprint (BARN's 0.42 m x 0.33 m box) by this on every side; the "
+                           "referee judges the Jackal's body, 0.508 m x 0.430 m "
+                           f"(default {BarnSetup.footprint_padding:g})")
     barn.set_defaults(func=lambda args, *_: barn_command(args))
     barn_sub = barn.add_subparsers(dest="barn_command", required=False, metavar="{import}")
     imp = barn_sub.add_parser(

@@ -33,6 +33,7 @@ from fgdwa.io.barn_data import parse_world_selection
 from fgdwa.io.dynamic_fields import (DROPOUT, LEVELS, NOISE_STD, check_field_seed, check_level, closed_route,
                                      field_name, generate_field, write_field)
 from fgdwa.io.scenario_file import scenario_from_dict
+from fgdwa.sim.body import DEFAULT_BODY, body_profile
 from fgdwa.sim.scenario import run_scenario, trial_variation
 
 # A planner label -> (planner preset, NavigatorParams overrides). A variant of a
@@ -62,9 +63,11 @@ class DynamicSetup:
     noise_std: float = NOISE_STD
     dropout: float = DROPOUT
     latency: int = 0
+    body: str = DEFAULT_BODY  # a profile of fgdwa.sim.body.BODY_PROFILES
 
     def __post_init__(self):
         check_sensing("DynamicSetup", self.noise_std, self.dropout, self.latency)
+        body_profile(self.body)
 
 
 @dataclass(frozen=True)
@@ -118,7 +121,7 @@ def _episode(task: DynamicTask):
     if task.record:
         navigator.record_top_k = RECORDED_ROLLOUTS
     return scenario, run_scenario(scenario, preset, task.seed, navigator=navigator, latency=task.setup.latency,
-                                  record_cycles=bool(task.record))
+                                  body=task.setup.body, record_cycles=bool(task.record))
 
 
 def dynamic_run_name(task: DynamicTask) -> str:
@@ -158,12 +161,14 @@ def run_dynamic(level: str, seeds: Sequence[int], planners: Sequence[str], setup
                      progress=progress)
 
 
-def replay_command(path, planner: str, seed: int, latency: int) -> str:
+def replay_command(path, planner: str, seed: int, latency: int, body: str = DEFAULT_BODY) -> str:
     """The ``fgdwa run`` command that replays a run of the field in ``path``."""
     preset, overrides = PLANNER_VARIANTS[planner]
     command = f"fgdwa run {path} --planner {preset} --seed {seed}"
     if latency:
         command += f" --latency {latency}"
+    if body != DEFAULT_BODY:
+        command += f" --body {body}"
     if overrides:
         command += f"  # with NavigatorParams({', '.join(f'{k}={v!r}' for k, v in overrides.items())})"
     return command
@@ -193,7 +198,7 @@ def write_failed_fields(runs: Sequence[Run], out_dir, setup: DynamicSetup) -> li
             written.add(path)
         failed.append({"planner": row["planner"], "seed": row["seed"], "outcome": row["outcome"],
                        "reason": row["reason"], "file": str(path),
-                       "replay": replay_command(path, row["planner"], row["seed"], setup.latency)})
+                       "replay": replay_command(path, row["planner"], row["seed"], setup.latency, setup.body)})
     return failed
 
 
@@ -204,7 +209,7 @@ def dynamic_command(args) -> int:
     level = check_level(args.level)
     seeds = parse_seeds(args.seeds)
     planners = check_variants(args.planners)
-    setup = DynamicSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency)
+    setup = DynamicSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency, body=args.body)
     executor = dict(executor=args.executor, scheduler=args.scheduler, workers=args.workers,
                     progress=not args.no_progress)
     tic = time.perf_counter()

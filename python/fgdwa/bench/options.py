@@ -47,8 +47,18 @@ def add_output_arguments(parser, default_out: str, files: str, figures: str = "f
     parser.add_argument("--no-progress", action="store_true", help="no progress bar")
 
 
+def add_body_argument(parser, default: str = "default") -> None:
+    """--body NAME: a profile of fgdwa.sim.body.BODY_PROFILES."""
+    from fgdwa.sim.body import BODY_PROFILES
+
+    parser.add_argument("--body", choices=list(BODY_PROFILES), default=default,
+                        help="the robot's body: default (wheels that ramp at the acceleration limits, command noise, "
+                             "odometry that drifts) or ideal (each command at once, the pose known); "
+                             f"default {default}")
+
+
 def add_sensing_arguments(parser, defaults) -> None:
-    """--noise, --dropout and --latency, defaulting to ``defaults``' noise_std, dropout and latency."""
+    """--noise, --dropout, --latency (defaulting to ``defaults``' noise_std, dropout and latency) and --body."""
     parser.add_argument("--noise", type=float, default=defaults.noise_std, metavar="STD",
                         help=f"lidar range noise std, m (default {defaults.noise_std:g})")
     parser.add_argument("--dropout", type=float, default=defaults.dropout, metavar="P",
@@ -56,6 +66,7 @@ def add_sensing_arguments(parser, defaults) -> None:
     parser.add_argument("--latency", type=int, default=defaults.latency, metavar="CYCLES",
                         help=f"control cycles from a scan to its command reaching the wheels "
                              f"(default {defaults.latency})")
+    add_body_argument(parser, defaults.body)
 
 
 def check_sensing(owner: str, noise_std, dropout, latency) -> None:

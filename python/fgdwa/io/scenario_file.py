@@ -140,7 +140,7 @@ class _Reader(MapReader, FeasibilityChecks):
             grid=grid, hidden=hidden, terrain=terrain, movers=tuple(movers), discs_known=known,
             passing_factors=factors))
 
-        limits, footprint = self.robot(data.get("robot"))
+        limits, footprint, outline = self.robot(data.get("robot"))
         start = self.start(data["start"])
         goal = self.point(data["goal"], "goal")
         self.check_start(start, data["start"], world, footprint, layout)
@@ -170,7 +170,7 @@ class _Reader(MapReader, FeasibilityChecks):
             self.check_not_at_goal(start, goal, planner_preset(planner).params.goal_tolerance, "goal", data["goal"])
         return self.core("scenario", data.get("name"), lambda: Scenario(
             name=name, world=world, start=start, goal=goal, description=description, limits=limits,
-            footprint=footprint, planner=planner, overrides=overrides, global_method=method,
+            footprint=footprint, outline=outline, planner=planner, overrides=overrides, global_method=method,
             global_options=options, **options_kw))
 
     def moving_obstacles(self, value: Any) -> tuple:
@@ -218,11 +218,12 @@ class _Reader(MapReader, FeasibilityChecks):
         return movers, bool(known)
 
     def robot(self, value: Any) -> tuple:
+        """(limits, footprint, outline): outline, the body the referee judges, is the footprint unless given."""
         limits, footprint = RobotLimits(), Footprint.circle(0.25)
         if value is None:
-            return limits, footprint
+            return limits, footprint, None
         key = "robot"
-        self.mapping(value, key, ("limits", "footprint"))
+        self.mapping(value, key, ("limits", "footprint", "outline"))
         if value.get("limits") is not None:
             lkey = join_key(key, "limits")
             raw = self.mapping(value["limits"], lkey, _LIMIT_FIELDS)
@@ -237,17 +238,20 @@ class _Reader(MapReader, FeasibilityChecks):
             limits = self.core(lkey, raw, lambda: RobotLimits(**fields))
             self.core(lkey, raw, limits.validate)
         if value.get("footprint") is not None:
-            fkey = join_key(key, "footprint")
-            raw = self.mapping(value["footprint"], fkey, ("radius", "polygon"))
-            if (raw.get("radius") is None) == (raw.get("polygon") is None):
-                self.fail(fkey, raw, "give exactly one of radius (m) or polygon ([[x, y], ...] m, robot frame)")
-            if raw.get("radius") is not None:
-                radius = self.length(raw["radius"], join_key(fkey, "radius"), positive=True)
-                footprint = self.core(join_key(fkey, "radius"), radius, lambda: Footprint.circle(radius))
-            else:
-                vertices = self.points(raw["polygon"], join_key(fkey, "polygon"), 3)
-                footprint = self.core(join_key(fkey, "polygon"), raw["polygon"], lambda: Footprint.polygon(vertices))
-        return limits, footprint
+            footprint = self.shape(value["footprint"], join_key(key, "footprint"))
+        outline = self.shape(value["outline"], join_key(key, "outline")) if value.get("outline") is not None else None
+        return limits, footprint, outline
+
+    def shape(self, value: Any, key: str) -> Footprint:
+        """A footprint or outline: {radius: m} or {polygon: [[x, y], ...]}."""
+        raw = self.mapping(value, key, ("radius", "polygon"))
+        if (raw.get("radius") is None) == (raw.get("polygon") is None):
+            self.fail(key, raw, "give exactly one of radius (m) or polygon ([[x, y], ...] m, robot frame)")
+        if raw.get("radius") is not None:
+            radius = self.length(raw["radius"], join_key(key, "radius"), positive=True)
+            return self.core(join_key(key, "radius"), radius, lambda: Footprint.circle(radius))
+        vertices = self.points(raw["polygon"], join_key(key, "polygon"), 3)
+        return self.core(join_key(key, "polygon"), raw["polygon"], lambda: Footprint.polygon(vertices))
 
     def start(self, value: Any) -> tuple:
         key = "start"

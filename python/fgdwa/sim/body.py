@@ -11,6 +11,7 @@ switching one on leaves the other's draws unchanged.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections import deque
 from dataclasses import dataclass
@@ -41,12 +42,13 @@ def check_seed(seed) -> int:
 
 @dataclass(frozen=True)
 class BodySettings:
-    """The episode options that shape the body, checked (see EpisodeOptions)."""
+    """How honest the body is (see Body); BODY_PROFILES names the usual ones."""
 
     latency: int = 0  # cycles
     actuation_noise: tuple = (0.0, 0.0)  # (m/s, rad/s)
     actuation_lag: float = 0.0  # s
     odometry_drift: tuple = (0.0, 0.0)  # (m per sqrt(m) travelled, rad per sqrt(rad) turned)
+    motor_rate: float = 0.0  # Hz: the wheels ramp toward the command at the acceleration limits this often; 0: at once
 
     def __post_init__(self):
         latency = self.latency
@@ -58,10 +60,32 @@ class BodySettings:
         object.__setattr__(self, "odometry_drift",
                            tuple(_non_negative_pair(self.odometry_drift, "odometry_drift", "m per metre travelled, "
                                                     "rad per rad turned")))
-        lag = self.actuation_lag
-        if isinstance(lag, bool) or not isinstance(lag, (int, float, np.floating, np.integer)) \
-                or not math.isfinite(lag) or lag < 0:
-            raise FgdwaError(f"actuation_lag = {lag!r}: must be a finite number >= 0 (s, time constant)")
+        for name, unit, top in (("actuation_lag", "s, time constant", 60.0), ("motor_rate", "Hz, 0 for none", 1e4)):
+            value = getattr(self, name)
+            # Compared before any conversion: a huge integer has no float.
+            if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)) \
+                    or not 0 <= value <= top:
+                raise FgdwaError(f"{name} = {value!r}: must be a number in [0, {top:g}] ({unit})")
+
+
+# The bodies the benchmarks run: "default", what a wheeled robot with wheel
+# odometry and a gyro does (docs/simulation.md, "The body", says where the
+# figures come from), and "ideal", the command applied at once and the pose
+# known exactly.
+BODY_PROFILES = {
+    "ideal": BodySettings(),
+    "default": BodySettings(motor_rate=100.0, actuation_noise=(0.02, 0.05), odometry_drift=(0.01, 0.002)),
+}
+DEFAULT_BODY = "default"
+
+
+def body_profile(body) -> BodySettings:
+    """A BodySettings, or the one BODY_PROFILES names."""
+    if isinstance(body, BodySettings):
+        return body
+    if isinstance(body, str) and body in BODY_PROFILES:
+        return BODY_PROFILES[body]
+    raise FgdwaError(f"body = {body!r}: expected a BodySettings or one of {', '.join(BODY_PROFILES)}")
 
 
 class Body:
@@ -71,28 +95,40 @@ class Body:
       k + latency; until a computed command arrives the wheels keep the last
       one they had (at rest at the start).
     * actuation noise: Gaussian noise (std_v, std_omega) added to the command
-      the wheels get, every cycle.
-    * actuation lag: (v, omega) approach that command as a first-order lag of
-      time constant ``actuation_lag``; over a cycle the robot moves with the
-      lag's mean twist and ends it at the lag's end value.
+      the wheels get, every cycle they are asked to move.
+    * actuation lag: what the wheels aim at approaches that command as a
+      first-order lag of time constant ``actuation_lag``.
+    * motor rate: at ``motor_rate`` Hz the motor controller moves (v, omega)
+      toward what it aims at by at most the robot's acceleration (its braking
+      deceleration when slowing) times the period, as a velocity loop with
+      acceleration limits does; 0 reaches it at once.
+      Over a cycle the robot moves with the mean twist and ends it at the last one.
     * odometry drift: the believed pose follows the driven twist plus a random
       walk whose std grows as ``drift[0] * sqrt(metres travelled)`` in x and y
       and ``drift[1] * sqrt(radians turned)`` in heading; the heading's error
       turns later motion, so the position's error grows beyond it.
     """
 
-    def __init__(self, settings: BodySettings, dt: float, seed: int):
+    def __init__(self, settings: BodySettings, dt: float, seed: int, limits=None):
         self.settings = settings
         self.dt = float(dt)
         self._pending = deque()
         self._wheels = Twist(0.0, 0.0)  # the last command the wheels got
         self.twist = Twist(0.0, 0.0)  # the robot's velocity now
+        self._aim = Twist(0.0, 0.0)  # what the lagged command has reached
         self._actuation_rng = np.random.default_rng([seed, ACTUATION_STREAM])
         self._odometry_rng = np.random.default_rng([seed, ODOMETRY_STREAM])
         noise = settings.actuation_noise
         self._noisy = noise[0] > 0 or noise[1] > 0
         drift = settings.odometry_drift
         self.drifts = drift[0] > 0 or drift[1] > 0
+        self._substeps = 0
+        if settings.motor_rate > 0:
+            if limits is None:
+                raise FgdwaError("Body: a motor_rate needs the robot's limits (its accelerations)")
+            self._substeps = max(1, int(round(self.dt * settings.motor_rate)))
+            self._accel = (limits.acc_v, limits.acc_omega)
+            self._brake = (limits.brake_v or limits.acc_v, limits.brake_omega or limits.acc_omega)
 
     def wheels(self, computed: Twist) -> Twist:
         """The command the wheels get this cycle, given the one the navigator computed."""
@@ -103,7 +139,8 @@ class Body:
             self._pending.append(computed)
             command = self._pending.popleft() if len(self._pending) > latency else self._wheels
         self._wheels = command
-        if self._noisy:
+        # A motor controller holds a standing command: the noise is on motion asked for.
+        if self._noisy and (command.v != 0.0 or command.omega != 0.0):
             std_v, std_omega = self.settings.actuation_noise
             dv, domega = self._actuation_rng.normal(0.0, (std_v, std_omega))
             command = Twist(command.v + dv, command.omega + domega)
@@ -111,6 +148,8 @@ class Body:
 
     def drive(self, target: Twist) -> Twist:
         """Move the velocity toward ``target`` for one cycle; the mean twist of the cycle."""
+        if self._substeps:
+            return self._ramp(target)
         tau = self.settings.actuation_lag
         if tau == 0:
             self.twist = target
@@ -121,6 +160,30 @@ class Body:
         mean = Twist(target.v + (v0 - target.v) * mean_keep, target.omega + (w0 - target.omega) * mean_keep)
         self.twist = Twist(target.v + (v0 - target.v) * keep, target.omega + (w0 - target.omega) * keep)
         return mean
+
+    def _ramp(self, target: Twist) -> Twist:
+        """The motor controller's loop over one cycle: each period the aim follows
+        the lag, the velocity steps toward it within the acceleration limits."""
+        h = self.dt / self._substeps
+        tau = self.settings.actuation_lag
+        follow = 1.0 - math.exp(-h / tau) if tau > 0 else 1.0
+        aim = np.array([self._aim.v, self._aim.omega])
+        twist = np.array([self.twist.v, self.twist.omega])
+        goal = np.array([target.v, target.omega])
+        accel, brake = np.array(self._accel) * h, np.array(self._brake) * h
+        total = np.zeros(2)
+        for _ in range(self._substeps):
+            aim += (goal - aim) * follow
+            gap = aim - twist
+            # Speeding up (away from zero) is limited by the acceleration, slowing down by the braking.
+            limit = np.where(gap * twist > 0, accel, np.where(twist == 0, accel, brake))
+            start = twist.copy()
+            twist = twist + np.clip(gap, -limit, limit)
+            total += 0.5 * (start + twist)
+        self._aim = Twist(*aim)
+        self.twist = Twist(*twist)
+        mean = total / self._substeps
+        return Twist(float(mean[0]), float(mean[1]))
 
     def odometry(self, believed, driven: Twist, true_pose) -> np.ndarray:
         """The pose the robot believes after moving with ``driven`` for one cycle
@@ -136,7 +199,10 @@ class Body:
 
 
 def body_settings(options) -> BodySettings:
-    """The BodySettings of an EpisodeOptions."""
-    return BodySettings(latency=options.latency, actuation_noise=options.actuation_noise,
-                        actuation_lag=options.actuation_lag, odometry_drift=options.odometry_drift)
-
+    """The BodySettings of an EpisodeOptions: its body profile, with the body
+    fields it gives (not None) in place of the profile's."""
+    base = body_profile(options.body)
+    given = {name: getattr(options, name) for name in ("latency", "actuation_noise", "actuation_lag",
+                                                        "odometry_drift", "motor_rate")
+             if getattr(options, name) is not None}
+    return dataclasses.replace(base, **given)

@@ -11,8 +11,9 @@ the referee judges with the exact FCL ``CollisionWorld``.
 
 from __future__ import annotations
 
-import time
+import copy
 import dataclasses
+import time
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -45,7 +46,7 @@ from fgdwa._core import (
 )
 from fgdwa.global_planning import plan_global
 from fgdwa.mapping import check_mapping
-from fgdwa.sim.body import Body, body_settings, check_seed
+from fgdwa.sim.body import DEFAULT_BODY, Body, body_settings, check_seed
 from fgdwa.sim.referee import (DANGER_MARGIN, Contact, collides_during_step, collision_contact,
                                danger_point_clearance, danger_points, falls, path_length, smoothness)
 from fgdwa.sim.world import World
@@ -198,13 +199,23 @@ class EpisodeOptions:
     mapping: str = "known"  # or "scan"
     navigator: Optional[NavigatorParams] = None  # default NavigatorParams()
     record_cycles: bool = False  # keep a CycleTrace per cycle
-    latency: int = 0  # cycles from a scan to its command reaching the wheels
-    actuation_noise: tuple = (0.0, 0.0)  # (m/s, rad/s) std of Gaussian noise on the command the wheels get
-    actuation_lag: float = 0.0  # s, time constant of the first-order lag of (v, omega) toward the command
-    odometry_drift: tuple = (0.0, 0.0)  # (m, rad) std of the believed pose's random walk after 1 m travelled, 1 rad turned
+    # The body: a profile of fgdwa.sim.body.BODY_PROFILES ("default": wheels that ramp, command noise,
+    # odometry drift; "ideal") or a BodySettings; the fields below, when not None, replace the profile's.
+    body: object = DEFAULT_BODY
+    latency: Optional[int] = None  # cycles from a scan to its command reaching the wheels
+    actuation_noise: Optional[tuple] = None  # (m/s, rad/s) std of Gaussian noise on the command the wheels get
+    actuation_lag: Optional[float] = None  # s, time constant of the first-order lag of (v, omega) toward the command
+    odometry_drift: Optional[tuple] = None  # (m, rad) std of the believed pose's random walk after 1 m, 1 rad
+    motor_rate: Optional[float] = None  # Hz, the motor controller's rate: the wheels ramp at the acceleration limits
+    # The body the referee judges (the true outline); None: the footprint the planner is given.
+    outline: Optional[Footprint] = None
+    # m the navigator's goal tolerance is tighter than the referee's (at most half of it goes): what a user
+    # whose odometry drifts asks of the robot. None: 0.1 m when the body's odometry drifts, else 0.
+    goal_margin: Optional[float] = None
 
 
 EPISODE_OPTIONS = tuple(f.name for f in dataclasses.fields(EpisodeOptions))
+GOAL_MARGIN = 0.1  # m, goal_margin's default with a drifting body
 
 
 def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = None, **settings) -> EpisodeResult:
@@ -247,17 +258,21 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     the same layout and marks what the lidar (``lidar``, default
     ``LidarParams()``) hits.
 
-    The robot's body is as honest as asked (all off by default; see
-    :class:`fgdwa.sim.body.Body`): ``latency`` cycles pass before a command
-    reaches the wheels (they keep the previous one meanwhile),
+    The robot's body is a real robot's by default (``body="default"``;
+    ``body="ideal"`` applies each command at once and knows the pose; see
+    :mod:`fgdwa.sim.body`): ``motor_rate`` (Hz) is how often the wheels step
+    toward the command within the acceleration limits, ``latency`` cycles pass
+    before a command reaches the wheels (they keep the previous one meanwhile),
     ``actuation_noise`` (std_v m/s, std_omega rad/s) perturbs the command they
-    get, ``actuation_lag`` (s) is the time constant with which (v, omega)
-    follow it, and ``odometry_drift`` (std per metre travelled, per radian
+    get, ``actuation_lag`` (s) is the time constant with which what they aim at
+    follows it, and ``odometry_drift`` (std per metre travelled, per radian
     turned) makes the pose the navigator believes wander from the true one: it
     gets the believed pose, its scans are taken from the true pose but placed at
     the believed one (so its map takes the error), while the referee (goal,
     collision, fall, clearances, ``motion.poses``) always uses the true pose;
-    ``motion.believed_poses`` holds the odometry's. Every random draw (lidar noise and
+    ``motion.believed_poses`` holds the odometry's. The referee judges
+    ``outline``, the robot's true body (default: the planner's ``footprint``).
+    Every random draw (lidar noise and
     dropped beams, actuation, odometry) comes from ``seed``: the same seed gives
     the same episode, bit for bit.
 
@@ -277,6 +292,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     settings_of_body = body_settings(options)
     limits = limits if limits is not None else RobotLimits()
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
+    outline = options.outline if options.outline is not None else footprint  # what the referee judges
     params = params if params is not None else PlannerParams()
     navigator_params = navigator if navigator is not None else NavigatorParams()
     start_pose = _as_pose(start, "start")
@@ -286,6 +302,15 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     tolerance = params.goal_tolerance if goal_tolerance is None else float(goal_tolerance)
     if not np.isfinite(tolerance) or tolerance < 0:
         raise FgdwaError(f"goal_tolerance = {goal_tolerance!r}: must be >= 0")
+    margin = options.goal_margin
+    if margin is None:
+        margin = GOAL_MARGIN if max(settings_of_body.odometry_drift) > 0 else 0.0
+    if isinstance(margin, bool) or not isinstance(margin, (int, float, np.integer, np.floating)) \
+            or not 0 <= margin <= 10:
+        raise FgdwaError(f"goal_margin = {margin!r}: must be a number in [0, 10] (m)")
+    if margin > 0:
+        params = copy.copy(params)
+        params.goal_tolerance = max(tolerance - margin, 0.5 * tolerance, 1e-3)
 
     if weight_policy is not None and lidar is None:
         raise FgdwaError("weight_policy: the obstacle density it reads needs a lidar")
@@ -298,8 +323,8 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     window = window if window is not None else DetectWindowParams()
     true_grid = world.true_grid()
     truth = CollisionWorld(true_grid, world.discs_at(0.0))
-    if truth.in_collision(footprint, start_pose, 0.0):
-        raise FgdwaError(f"start = {tuple(start_pose)}: the robot's footprint there overlaps an obstacle")
+    if truth.in_collision(outline, start_pose, 0.0):
+        raise FgdwaError(f"start = {tuple(start_pose)}: the robot's outline there overlaps an obstacle")
     # One field of what really stands there, for the lidar and the danger-point metric.
     true_field = DistanceField(true_grid) if true_grid is not None else None
     scanner = LaserScanner(lidar, true_field) if lidar is not None else None
@@ -314,13 +339,13 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         robot.set_global_path(given)
 
     dt = params.dt
-    body = Body(settings_of_body, dt, seed)
+    body = Body(settings_of_body, dt, seed, limits)
     pose = Pose2(*start_pose)  # where the robot is
     believed = start_pose.copy()  # where its odometry says it is
     poses = [start_pose.copy()]
     believed_poses = [believed.copy()]
     commands, twists = [], []
-    clearances = [truth.clearance(footprint, start_pose, 0.0)]
+    clearances = [truth.clearance(outline, start_pose, 0.0)]
     statuses, modes, cycle_times, targets = [], [], [], []
     density, deviation, betas, deltas = [], [], [], []
     paths = []
@@ -379,13 +404,13 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         believed_poses.append(believed.copy())
         if world.has_moving:
             truth.discs = world.discs_at(t + dt)
-        clearances.append(truth.clearance(footprint, pose, 0.0))
+        clearances.append(truth.clearance(outline, pose, 0.0))
         # In a world that stands still the clearance at the step's start is the one measured a step ago.
-        if collides_during_step(truth, footprint, poses[-2], poses[-1], t, dt,
+        if collides_during_step(truth, outline, poses[-2], poses[-1], t, dt,
                                 discs_at=world.discs_at if world.has_moving else None,
                                 start_clearance=None if world.has_moving else clearances[-2]):
             outcome = "collision"
-            contact = collision_contact(truth, footprint, poses[-1],
+            contact = collision_contact(truth, outline, poses[-1],
                                         (driven.v * np.cos(pose.theta), driven.v * np.sin(pose.theta)),
                                         grid=true_grid, hidden=world.hidden)
             reason = contact.reason
@@ -402,6 +427,9 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     if outcome == "timeout":
         reason = (f"timeout: {np.hypot(pose.x - goal_point[0], pose.y - goal_point[1]):.2f} m from the goal after "
                   f"{len(commands) * dt:g} s" + (f", last mode {modes[-1]}" if modes else ""))
+        if modes and modes[-1] == "GoalReached":
+            off = np.hypot(believed[0] - pose.x, believed[1] - pose.y)
+            reason += f" (it believed it had arrived: its odometry was {off:.2f} m off)"
     path = robot.path
     poses_arr = np.array(poses)
     clear_arr = np.array(clearances, dtype=float)

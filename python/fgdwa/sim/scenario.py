@@ -66,6 +66,7 @@ class Scenario:
     description: str = ""
     limits: RobotLimits = field(default_factory=RobotLimits)
     footprint: Footprint = field(default_factory=lambda: Footprint.circle(0.25))
+    outline: Optional[Footprint] = None  # the body the referee judges; None: the footprint
     planner: str = "fgdwa"  # the preset run when none is named
     overrides: dict = field(default_factory=dict)  # PlannerParams fields replacing the preset's
     global_method: str = "astar"
@@ -142,5 +143,6 @@ def run_scenario(scenario: Scenario, planner=None, seed: int = 0, **kwargs) -> E
     options = dict(global_method=scenario.global_method, global_options=dict(scenario.global_options),
                    max_steps=scenario.max_steps, goal_tolerance=scenario.goal_tolerance, window=scenario.window)
     options.update(kwargs)
+    options.setdefault("outline", scenario.outline)
     return run_episode(world, start, scenario.goal, limits=scenario.limits, footprint=scenario.footprint,
                        params=params, lidar=lidar, weight_policy=preset.weight_policy(), seed=seed, **options)
