@@ -73,6 +73,9 @@ class BarnSetup:
     noise_std: float = 0.03  # m, Gaussian range noise
     dropout: float = 0.01  # probability a beam returns nothing
     latency: int = 0  # control cycles from a scan to its command reaching the wheels
+    actuation_lag: float = 0.0  # s, first-order lag of the wheels toward the command (run_episode's)
+    actuation_noise: tuple = (0.0, 0.0)  # (m/s, rad/s) std of the command noise (run_episode's)
+    odometry_drift: tuple = (0.0, 0.0)  # (m per sqrt(m), rad per sqrt(rad)) of the believed pose (run_episode's)
     replan_period: float = 0.5  # s between replans of a blocked path at most
     stall_time: float = 3.0  # s without 0.1 m of progress before a recovery
     # The challenge's time limit ends a run: the navigator keeps recovering until then.
@@ -169,7 +172,9 @@ def run_barn_task(task: BarnTask) -> Run:
     result = run_episode(world, task.start, task.goal, limits=setup.limits(), footprint=robot.footprint,
                          params=params, max_steps=max_steps, goal_tolerance=task.goal_radius, lidar=setup.lidar(),
                          weight_policy=preset.weight_policy(), seed=task.seed, mapping=task.mapping,
-                         navigator=navigator, latency=setup.latency, record_cycles=bool(task.record))
+                         navigator=navigator, latency=setup.latency, actuation_lag=setup.actuation_lag,
+                         actuation_noise=setup.actuation_noise, odometry_drift=setup.odometry_drift,
+                         record_cycles=bool(task.record))
     wall = time.perf_counter() - tic
     if task.record:
         from fgdwa.plot.recording import write_recording
