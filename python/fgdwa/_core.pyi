@@ -1937,7 +1937,7 @@ class OccupancyParams:
       hit_share: a cell some beams of a scan end in and others pass is hit when at least this share end in it
       clear: beams clear the cells they pass (false: hits only, for static worlds)
       edge_margin (m): the free margin the map's distance field keeps past the grid's edge
-      fade_time (s): time constant with which an occupied cell no beam reaches fades toward unknown; it is unknown again once below occupied (inf: never fades)
+      fade_time (s): time constant with which an occupied cell no beam reaches fades toward unknown; it is unknown again once below occupied (inf: never fades; 20 s lets what drift smeared go)
     """
     __hash__: typing.ClassVar[None] = None
     name: typing.ClassVar[str] = 'occupancy'

@@ -49,6 +49,12 @@ Scan scan_taken(const OccupancyGrid& world, const Pose2& truth, const Pose2& pla
   return scan;
 }
 
+ScanMatchParams on() {
+  ScanMatchParams params;
+  params.enabled = true;
+  return params;
+}
+
 Pose2 offset(const Pose2& p, double dx, double dy, double dtheta) { return Pose2{p.x + dx, p.y + dy, p.theta + dtheta}; }
 
 TEST(ScanMatcher, PutsAnOffsetScanBackWithinACellAndHalfADegree) {
@@ -57,7 +63,7 @@ TEST(ScanMatcher, PutsAnOffsetScanBackWithinACellAndHalfADegree) {
     const DistanceField field(world);
     const Pose2 truth{5.0, 5.0, 0.3 * static_cast<double>(seed)};
     const Scan scan = scan_taken(world, truth, offset(truth, 0.1, -0.05, 0.03), 0.02, seed);
-    const ScanMatch match = ScanMatcher().match(ScanFrame(scan), field);
+    const ScanMatch match = ScanMatcher(on()).match(ScanFrame(scan), field);
     ASSERT_EQ(match.status, MatchStatus::Accepted) << "seed " << seed << ": " << to_string(match.status);
     EXPECT_LE(std::abs(match.pose.x - truth.x), world.resolution()) << "seed " << seed;
     EXPECT_LE(std::abs(match.pose.y - truth.y), world.resolution()) << "seed " << seed;
@@ -69,7 +75,7 @@ TEST(ScanMatcher, PutsAnOffsetScanBackWithinACellAndHalfADegree) {
 TEST(ScanMatcher, KeepsAScanThatIsAlreadyRight) {
   const OccupancyGrid world = room(3);
   const Pose2 truth{5.0, 5.0, 0.7};
-  const ScanMatch match = ScanMatcher().match(ScanFrame(scan_taken(world, truth, truth, 0.02, 3)), DistanceField(world));
+  const ScanMatch match = ScanMatcher(on()).match(ScanFrame(scan_taken(world, truth, truth, 0.02, 3)), DistanceField(world));
   EXPECT_EQ(match.status, MatchStatus::NotBetter);
 }
 
@@ -79,7 +85,7 @@ TEST(ScanMatcher, RefusesACorridorSeenAlongItsAxis) {
   for (const double heading : {0.0, M_PI}) {
     const Pose2 truth{15.0, 1.5, heading};
     for (const Pose2& placed : {offset(truth, 0.1, 0.0, 0.0), offset(truth, 0.1, 0.05, 0.0)}) {
-      const ScanMatch match = ScanMatcher().match(ScanFrame(scan_taken(world, truth, placed, 0.02, 9)), field);
+      const ScanMatch match = ScanMatcher(on()).match(ScanFrame(scan_taken(world, truth, placed, 0.02, 9)), field);
       EXPECT_FALSE(match.accepted()) << "heading " << heading << ": " << to_string(match.status);
     }
   }
@@ -88,11 +94,10 @@ TEST(ScanMatcher, RefusesACorridorSeenAlongItsAxis) {
 TEST(ScanMatcher, RefusesWithoutAMapOrHits) {
   const OccupancyGrid empty(40, 40, 0.1, Vec2::Zero(), std::vector<std::uint8_t>(1600, 0));
   const Scan blank = scan_taken(empty, Pose2{2.0, 2.0, 0.0}, Pose2{2.0, 2.0, 0.0}, 0.0, 1);
-  EXPECT_EQ(ScanMatcher().match(ScanFrame(blank), DistanceField(empty)).status, MatchStatus::NoMap);
+  EXPECT_EQ(ScanMatcher(on()).match(ScanFrame(blank), DistanceField(empty)).status, MatchStatus::NoMap);
   const OccupancyGrid world = room(2);
-  EXPECT_EQ(ScanMatcher().match(ScanFrame(blank), DistanceField(world)).status, MatchStatus::TooFewPoints);
+  EXPECT_EQ(ScanMatcher(on()).match(ScanFrame(blank), DistanceField(world)).status, MatchStatus::TooFewPoints);
   ScanMatchParams off;
-  off.enabled = false;
   const Scan scan = scan_taken(world, Pose2{5.0, 5.0, 0.0}, Pose2{5.1, 5.0, 0.0}, 0.0, 1);
   EXPECT_EQ(ScanMatcher(off).match(ScanFrame(scan), DistanceField(world)).status, MatchStatus::Off);
 }
@@ -100,7 +105,7 @@ TEST(ScanMatcher, RefusesWithoutAMapOrHits) {
 TEST(ScanMatcher, NeverLeavesItsWindow) {
   const OccupancyGrid world = room(4);
   const DistanceField field(world);
-  ScanMatchParams params;
+  const ScanMatchParams params = on();
   const ScanMatcher matcher(params);
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> far(-0.6, 0.6), turn(-0.3, 0.3);
@@ -134,7 +139,7 @@ TEST(Localiser, KeepsTheCorrectionAsMapToOdomAndLeavesTheOdometryAlone) {
   const DistanceField field(world);
   const Pose2 truth{5.0, 5.0, 1.0};
   const Pose2 odom = offset(truth, -0.08, 0.06, -0.02);
-  Localiser localiser;
+  Localiser localiser(on());
   ScanFrame frame(scan_taken(world, truth, odom, 0.02, 5));
   const ScanMatch& match = localiser.update(frame, &field, 0.0);
   ASSERT_TRUE(match.accepted()) << to_string(match.status);
@@ -166,8 +171,10 @@ TEST(Navigator, TheCorrectionFollowsDriftingOdometry) {
   LidarParams lidar;
   lidar.noise_std = 0.02;
   lidar.dropout = 0.0;
+  NavigatorParams params;
+  params.scan_match.enabled = true;
   const PlannerPreset preset = planner_preset("fgdwa");
-  Navigator nav(RobotLimits{}, Footprint::circle(0.25), preset.params, layout, MapMode::Scan, lidar, nullptr);
+  Navigator nav(RobotLimits{}, Footprint::circle(0.25), preset.params, layout, MapMode::Scan, lidar, nullptr, params);
   nav.set_goal(Vec2(8.0, 8.0));
   const Pose2 truth{5.0, 5.0, 0.4};
   double worst_odometry = 0.0, worst_map = 0.0;

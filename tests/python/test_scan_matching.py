@@ -48,8 +48,10 @@ def test_a_drifting_robot_maps_truer_with_scan_matching():
 def test_the_record_reports_the_correction_and_the_odometry():
     grid = _room()
     from fgdwa import Footprint, Navigator, PlannerParams, RobotLimits, RobotState, LaserScanner, Pose2
+    navigator = NavigatorParams()
+    navigator.scan_match.enabled = True
     nav = Navigator(RobotLimits(), Footprint.circle(0.25), PlannerParams(), grid, mapping="known",
-                    lidar=LidarParams(noise_std=0.0))
+                    lidar=LidarParams(noise_std=0.0), navigator=navigator)
     nav.set_goal((7.4, 3.0))
     scanner = LaserScanner(LidarParams(noise_std=0.0), DistanceField(grid))
     scan = scanner.scan(Pose2(2.0, 3.0, 0.0), [], 0.0, seed=1)

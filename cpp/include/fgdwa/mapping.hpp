@@ -45,7 +45,7 @@ struct OccupancyParams {
   double hit_share = 0.2;
   bool clear = true;
   double edge_margin = DistanceField::kDefaultEdgeMargin;
-  double fade_time = 20.0;
+  double fade_time = std::numeric_limits<double>::infinity();
 
   static constexpr const char* kName = "occupancy";
   template <class V>
@@ -64,7 +64,7 @@ struct OccupancyParams {
     v.real("hit_share", &P::hit_share, "", Bounds::positive(1), "a cell some beams of a scan end in and others pass is hit when at least this share end in it");
     v.flag("clear", &P::clear, "beams clear the cells they pass (false: hits only, for static worlds)");
     v.real("edge_margin", &P::edge_margin, "m", Bounds::at_least(0), "the free margin the map's distance field keeps past the grid's edge");
-    v.real("fade_time", &P::fade_time, "s", Bounds::positive(limits::kMaxHorizon).or_infinite(), "time constant with which an occupied cell no beam reaches fades toward unknown; it is unknown again once below occupied (inf: never fades)");
+    v.real("fade_time", &P::fade_time, "s", Bounds::positive(limits::kMaxHorizon).or_infinite(), "time constant with which an occupied cell no beam reaches fades toward unknown; it is unknown again once below occupied (inf: never fades; 20 s lets what drift smeared go)");
   }
   // clamp_min <= free < occupied <= clamp_max, hit >= occupied.
   void check_relations(const ParamPath& path) const;

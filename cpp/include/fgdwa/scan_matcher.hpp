@@ -27,7 +27,7 @@
 namespace fgdwa {
 
 struct ScanMatchParams {
-  bool enabled = true;
+  bool enabled = false;
   double window_xy = 0.15;
   double window_theta = 0.0523598775598299;  // 3 degrees
   double step_xy = 0.05;
