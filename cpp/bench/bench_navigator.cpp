@@ -12,9 +12,13 @@
 //   BM_NavigatorStep/jackal    the Jackal's rectangle, speed capped at 1 m/s and rollouts of 1 s as in BARN
 //
 // Arg 0: map known (obstacles the map lacks still come from the scans);
-// arg 1: map built from the scans. A table of medians and 95th percentiles
+// arg 1: map built from the scans; both with each scan matched to the map and
+// cells fading (fade_time 20 s). Arg 2: map built from the scans, each scan
+// put in as odometry places it (the defaults: no matching, no fading): the
+// cost of matching is the difference to arg 1. A table of medians and 95th percentiles
 // follows the benchmarks (the targets: a median <= 0.5 ms for the circle robot
-// and <= 1 ms for the Jackal; before those, 1 ms and 2 ms with the map built from scans),
+// and <= 1 ms for the Jackal; before those, 1 ms and 2 ms with the map built from
+// scans and matched to it, with a 99th percentile <= 3 ms),
 // then each median next to its arithmetic floor (bench_floor.hpp).
 //
 //   build/cmake/cpp/bench/bench_navigator      (about 10 s)
@@ -24,6 +28,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <random>
 #include <string>
@@ -57,6 +62,7 @@ Footprint robot_footprint(const std::string& robot) {
 }
 
 struct Loop {
+  NavigatorParams params;
   RobotLimits limits;
   Footprint footprint;
   PlannerPreset preset = planner_preset("fgdwa");
@@ -79,8 +85,9 @@ struct Loop {
     return p;
   }
 
-  Loop(const std::string& robot, MapMode map_mode, OccupancyGrid grid)
-      : limits(robot_limits(robot)),
+  Loop(const std::string& robot, MapMode map_mode, OccupancyGrid grid, const NavigatorParams& navigator)
+      : params(navigator),
+        limits(robot_limits(robot)),
         footprint(robot_footprint(robot)),
         world(std::move(grid)),
         world_field(std::make_shared<const DistanceField>(world)),
@@ -97,7 +104,7 @@ struct Loop {
     std::vector<std::uint8_t> known = world.cells();
     for (std::size_t i = 0; i < known.size(); ++i) known[i] = known[i] && (i % 3 != 0);
     const OccupancyGrid map(world.rows(), world.cols(), world.resolution(), world.origin(), known);
-    navigator = std::make_unique<Navigator>(limits, footprint, preset.params, map, mode, lidar, preset.weight_policy());
+    navigator = std::make_unique<Navigator>(limits, footprint, preset.params, map, mode, lidar, preset.weight_policy(), params);
     navigator->set_goal(Vec2(9.3, 9.3));
     state = RobotState{Pose2{0.7, 0.7, M_PI / 4}, Twist{}};
     discs = {Disc{Vec2(5.0, 2.0), 0.3, Vec2(-0.4, 0.3)}, Disc{Vec2(2.0, 6.0), 0.4, Vec2(0.5, -0.2)},
@@ -136,7 +143,7 @@ std::map<std::string, std::vector<double>>& samples() {
 
 // Per configuration, the summed stage times (map, global, perception, plan) and the cycles that replanned.
 struct Stages {
-  double tracking = 0, map = 0, global = 0, perception = 0, plan = 0;
+  double localise = 0, tracking = 0, map = 0, global = 0, perception = 0, plan = 0;
   int replans = 0;
   // For the floor: the cycles, and over those that planned, the samples and
   // the admissible ones; a rollout's poses, a pose's operations, the beams.
@@ -150,6 +157,11 @@ std::map<std::string, Stages>& stages() {
 
 void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
   const MapMode mode = bench.range(0) ? MapMode::Scan : MapMode::Known;
+  NavigatorParams params;
+  if (bench.range(0) < 2) {
+    params.scan_match.enabled = true;
+    params.occupancy.fade_time = 20.0;
+  }
   std::mt19937 rng(3);
   OccupancyGrid grid = bench::rectangle_map(rng, 100, 0.1, 0.08);
   // Clear the corners for the start and the goal.
@@ -157,8 +169,8 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
   for (int r = 0; r < 100; ++r)
     for (int c = 0; c < 100; ++c)
       if ((r < 15 && c < 15) || (r >= 85 && c >= 85)) cells[static_cast<std::size_t>(r) * 100 + c] = 0;
-  Loop loop(robot, mode, OccupancyGrid(100, 100, 0.1, Vec2::Zero(), cells));
-  const std::string name = robot + (bench.range(0) ? " scan " : " known");
+  Loop loop(robot, mode, OccupancyGrid(100, 100, 0.1, Vec2::Zero(), cells), params);
+  const std::string name = robot + (bench.range(0) == 0 ? " known" : bench.range(0) == 1 ? " scan " : " scan, odometry only");
   std::vector<double>& times = samples()[name];
   Stages& sum = stages()[name];
   int path_version = 0;
@@ -167,6 +179,7 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
     bench.SetIterationTime(seconds);
     times.push_back(seconds);
     const CycleRecord& r = loop.navigator->record();
+    sum.localise += r.times.localise;
     sum.tracking += r.times.tracking;
     sum.map += r.times.map;
     sum.global += r.times.global;
@@ -185,8 +198,8 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot) {
   sum.beams = loop.lidar.beams;
 }
 
-BENCHMARK_CAPTURE(BM_NavigatorStep, circle, std::string("circle"))->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMicrosecond)->Iterations(3000);
-BENCHMARK_CAPTURE(BM_NavigatorStep, jackal, std::string("jackal"))->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMicrosecond)->Iterations(3000);
+BENCHMARK_CAPTURE(BM_NavigatorStep, circle, std::string("circle"))->Arg(0)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMicrosecond)->Iterations(3000);
+BENCHMARK_CAPTURE(BM_NavigatorStep, jackal, std::string("jackal"))->Arg(0)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMicrosecond)->Iterations(3000);
 
 double percentile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
@@ -202,15 +215,16 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   std::printf("\nNavigator::step, 541 beams with %.0f cm range noise, moving discs tracked (ms):\n", 100 * fgdwa::kNoise);
-  std::printf("%-16s %7s %7s %7s %7s | mean per stage: %6s %6s %6s %6s %6s | %s\n", "robot map", "cycles",
-              "median", "p95", "max", "track", "map", "global", "percep", "plan", "replans");
+  std::printf("%-28s %7s %7s %7s %7s %7s | mean per stage: %6s %6s %6s %6s %6s %6s | %s\n", "robot map", "cycles",
+              "median", "p95", "p99", "max", "locate", "track", "map", "global", "percep", "plan", "replans");
   for (const auto& [name, times] : fgdwa::samples()) {
     if (times.empty()) continue;
     const fgdwa::Stages& s = fgdwa::stages()[name];
     const double n = static_cast<double>(times.size());
-    std::printf("%-16s %7zu %7.3f %7.3f %7.3f | %22.3f %6.3f %6.3f %6.3f %6.3f | %d\n", name.c_str(), times.size(),
-                1e3 * fgdwa::percentile(times, 0.5), 1e3 * fgdwa::percentile(times, 0.95),
-                1e3 * *std::max_element(times.begin(), times.end()), 1e3 * s.tracking / n, 1e3 * s.map / n,
+    std::printf("%-28s %7zu %7.3f %7.3f %7.3f %7.3f | %22.3f %6.3f %6.3f %6.3f %6.3f %6.3f | %d\n", name.c_str(),
+                times.size(), 1e3 * fgdwa::percentile(times, 0.5), 1e3 * fgdwa::percentile(times, 0.95),
+                1e3 * fgdwa::percentile(times, 0.99), 1e3 * *std::max_element(times.begin(), times.end()),
+                1e3 * s.localise / n, 1e3 * s.tracking / n, 1e3 * s.map / n,
                 1e3 * s.global / n, 1e3 * s.perception / n, 1e3 * s.plan / n, s.replans);
   }
   // The floor counts a cycle's planning (every rollout stepped and bounded,

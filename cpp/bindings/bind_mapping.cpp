@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "bind_params.hpp"
@@ -32,17 +33,18 @@ void init_mapping(py::module_& m) {
            py::arg("params") = OccupancyParams())
       .def(
           "integrate",
-          [](ScanMap& map, const Scan& scan, py::object keep_hit) {
-            if (keep_hit.is_none()) return map.integrate(scan);
+          [](ScanMap& map, const Scan& scan, py::object keep_hit, std::optional<FloatArg> time) {
+            const double at = time ? to_float(*time, "time") : std::numeric_limits<double>::quiet_NaN();
+            if (keep_hit.is_none()) return map.integrate(scan, nullptr, at);
             const auto keep = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(keep_hit);
             if (!keep || keep.ndim() != 1)
               throw Error("keep_hit: expected a 1-d array of one flag per beam");
             const std::vector<std::uint8_t> flags(keep.data(), keep.data() + keep.size());
-            return map.integrate(scan, &flags);
+            return map.integrate(scan, &flags, at);
           },
-          py::arg("scan"), py::arg("keep_hit") = py::none(),
+          py::arg("scan"), py::arg("keep_hit") = py::none(), py::arg("time") = py::none(),
           "One scan's evidence (each cell updated once, by the vote of the beams ending and passing in it); keep_hit (one flag per "
-          "beam) says which hits to mark. Returns how many cells turned occupied or stopped being occupied.")
+          "beam) says which hits to mark; time (s, or None) lets the occupied cells no beam reached fade (fade_time). Returns how many cells turned occupied or stopped being occupied.")
       .def(
           "mark", [](ScanMap& map, py::handle points) { return map.mark(to_points(points, "points")); },
           py::arg("points"), "One hit on each cell holding (n, 2) points; returns how many turned occupied.")

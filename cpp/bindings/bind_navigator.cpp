@@ -57,7 +57,11 @@ void init_navigator(py::module_& m) {
 
   py::class_<CycleRecord> record(m, "CycleRecord", "Everything one Navigator cycle decided.");
   record.def_readonly("time", &CycleRecord::time)
-      .def_readonly("state", &CycleRecord::state)
+      .def_readonly("state", &CycleRecord::state, "The state planned from: its pose on the map (map_to_odom composed with the odometry's).")
+      .def_readonly("odometry", &CycleRecord::odometry, "The pose given to step(), as the odometry has it.")
+      .def_readonly("map_to_odom", &CycleRecord::map_to_odom,
+                    "The odometry's frame on the map after this cycle's scan (Pose2; the identity until a match moves it).")
+      .def_readonly("match", &CycleRecord::match, "This cycle's scan matched to the map (ScanMatch).")
       .def_readonly("command", &CycleRecord::command)
       .def_readonly("mode", &CycleRecord::mode)
       .def_readonly("failure", &CycleRecord::failure)
@@ -74,13 +78,14 @@ void init_navigator(py::module_& m) {
       .def_readonly("tracked", &CycleRecord::tracked, "The moving tracks the planner predicted (Discs now, with velocity).")
       .def_property_readonly("times", [](const CycleRecord& r) {
         py::dict out;
+        out["localise"] = r.times.localise;
         out["tracking"] = r.times.tracking;
         out["map"] = r.times.map;
         out["global"] = r.times.global;
         out["perception"] = r.times.perception;
         out["plan"] = r.times.plan;
         return out;
-      }, "Wall-clock seconds per stage: tracking, map, global, perception, plan.");
+      }, "Wall-clock seconds per stage: localise, tracking, map, global, perception, plan.");
   bind_report_fields(record, [](const CycleRecord& r) -> const CycleReport& { return r.control; });
   record.def("__repr__", [](const CycleRecord& r) {
     std::ostringstream s;

@@ -23,6 +23,7 @@ void init_weights(py::module_& m);
 void init_controller(py::module_& m);
 void init_mapping(py::module_& m);
 void init_tracking(py::module_& m);
+void init_scan_matcher(py::module_& m);
 void init_navigator(py::module_& m);
 
 PYBIND11_MODULE(_core, m) {
@@ -45,6 +46,7 @@ PYBIND11_MODULE(_core, m) {
   init_controller(m);
   init_mapping(m);
   init_tracking(m);
+  init_scan_matcher(m);
   init_navigator(m);
   m.def("nearest_names", &fgdwa::nearest_names, py::arg("name"), py::arg("known"), py::arg("count") = 3,
         "The names among `known` closest to `name` (edit distance, a dotted or '/'-joined name matched on its "

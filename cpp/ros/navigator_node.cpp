@@ -390,6 +390,7 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
   cmd.linear.x = record.command.v;
   cmd.angular.z = record.command.omega;
   cmd_pub_.publish(cmd);
+  publish_map_to_odom(record, scan->header.stamp);
   if (from_action_) {
     move_base_msgs::MoveBaseFeedback feedback;
     feedback.base_position.header.frame_id = p.global_frame;
@@ -410,6 +411,19 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
 }
 
 void NavigatorNode::publish_stop() { cmd_pub_.publish(geometry_msgs::Twist()); }
+
+void NavigatorNode::publish_map_to_odom(const fgdwa::CycleRecord& record, const ros::Time& stamp) {
+  if (!config_.node.publish_map_odom_tf || !config_.navigator.scan_match.enabled) return;
+  geometry_msgs::TransformStamped tf;
+  tf.header.stamp = stamp;
+  tf.header.frame_id = config_.node.map_frame;
+  tf.child_frame_id = config_.node.global_frame;
+  const geometry_msgs::Pose pose = to_pose(record.map_to_odom);
+  tf.transform.translation.x = pose.position.x;
+  tf.transform.translation.y = pose.position.y;
+  tf.transform.rotation = pose.orientation;
+  tf_broadcaster_.sendTransform(tf);
+}
 
 void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::Time& now, double step_ms,
                                   double cycle_ms, const fgdwa::Scan& scan, const ros::Time& scan_stamp) {
@@ -455,6 +469,9 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
   add("x", number(record.state.pose.x));
   add("y", number(record.state.pose.y));
   add("theta", number(record.state.pose.theta));
+  add("map_to_odom", number(record.map_to_odom.x) + " " + number(record.map_to_odom.y) + " " +
+                         number(record.map_to_odom.theta));
+  add("scan_match", fgdwa::to_string(record.match.status));
   add("navigator", std::to_string(navigators_));
   add("goal", number(goal_.x()) + " " + number(goal_.y()));
   add("goal_id", std::to_string(goals_));

@@ -25,6 +25,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
 #include "fgdwa/navigator.hpp"
@@ -60,6 +61,8 @@ class NavigatorNode {
   std::optional<fgdwa::Pose2> laser_pose(const sensor_msgs::LaserScan& scan, std::string& reason);
   std::optional<fgdwa::RobotState> robot_state(std::string& reason);
   void publish_stop();
+  // The scan matcher's correction as the TF ~map_frame -> ~global_frame (~publish_map_odom_tf).
+  void publish_map_to_odom(const fgdwa::CycleRecord& record, const ros::Time& stamp);
   // cmd_vel is out already; the plans, markers and the cycle's diagnostics (`scan`: the one stepped on).
   void publish_cycle(const fgdwa::CycleRecord& record, const ros::Time& now, double step_ms, double cycle_ms,
                      const fgdwa::Scan& scan, const ros::Time& scan_stamp);
@@ -71,6 +74,7 @@ class NavigatorNode {
   NodeConfig config_;
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
   actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction> action_;
   ros::Subscriber scan_sub_, odom_sub_, map_sub_, simple_goal_sub_;
   ros::Publisher cmd_pub_, global_plan_pub_, local_plan_pub_, markers_pub_, diagnostics_pub_, events_pub_;

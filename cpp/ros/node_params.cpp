@@ -255,7 +255,8 @@ std::vector<Entry> entries(NodeConfig& c) {
   std::vector<Entry> out = {
       text("preset", n.preset), text("robot", n.robot), text("scan_topic", n.scan_topic),
       text("odom_topic", n.odom_topic), text("cmd_vel_topic", n.cmd_vel_topic), text("map_topic", n.map_topic),
-      text("global_frame", n.global_frame), text("base_frame", n.base_frame), text("mapping", n.mapping),
+      text("global_frame", n.global_frame), text("base_frame", n.base_frame), text("map_frame", n.map_frame),
+      flag("publish_map_odom_tf", n.publish_map_odom_tf), text("mapping", n.mapping),
       number("map_resolution", n.map_resolution), number("map_margin", n.map_margin),
       integer("occupied_threshold", n.occupied_threshold), number("scan_timeout", n.scan_timeout),
       number("odom_timeout", n.odom_timeout), number("transform_timeout", n.transform_timeout),
@@ -291,8 +292,11 @@ void NodeParams::validate() const {
   };
   for (const auto& [name, value] : {std::pair{"scan_topic", scan_topic}, {"odom_topic", odom_topic},
                                     {"cmd_vel_topic", cmd_vel_topic}, {"map_topic", map_topic},
-                                    {"global_frame", global_frame}, {"base_frame", base_frame}})
+                                    {"global_frame", global_frame}, {"base_frame", base_frame},
+                                    {"map_frame", map_frame}})
     if (value.empty()) fail(name, "''", "must not be empty");
+  if (publish_map_odom_tf && map_frame == global_frame)
+    fail("map_frame", json_text(map_frame), "must differ from global_frame while publish_map_odom_tf is on");
   if (mapping != "scan" && mapping != "known") fail("mapping", json_text(mapping), "expected scan or known");
   positive("map_resolution", map_resolution);
   if (!(std::isfinite(map_margin) && map_margin >= 0.0))

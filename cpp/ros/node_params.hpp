@@ -27,6 +27,11 @@ struct NodeParams {
   std::string map_topic = "map";            // nav_msgs/OccupancyGrid, mapping "known" only
   std::string global_frame = "odom";        // the frame the robot plans in; goals are transformed into it
   std::string base_frame = "base_link";     // the robot's body frame (odometry's child frame)
+  std::string map_frame = "map";            // the frame of the navigator's map, above global_frame
+  // The navigator's correction of the odometry (scan matching) as the TF
+  // map_frame -> global_frame, as a localiser publishes map -> odom; off when
+  // a localiser of your own publishes it. The odometry is never changed.
+  bool publish_map_odom_tf = true;
   std::string mapping = "scan";             // "scan": the map is built from the scans; "known": map_topic's grid
   double map_resolution = 0.05;             // m, cells of the map built from scans
   double map_margin = 5.0;                  // m kept around the robot and the goal by the map built from scans

@@ -25,12 +25,6 @@ geometry_msgs::Pose to_pose(const fgdwa::Pose2& pose) {
   return out;
 }
 
-fgdwa::Pose2 compose(const fgdwa::Pose2& base, const fgdwa::Pose2& mount) {
-  const double c = std::cos(base.theta), s = std::sin(base.theta);
-  return {base.x + c * mount.x - s * mount.y, base.y + s * mount.x + c * mount.y,
-          fgdwa::wrap_angle(base.theta + mount.theta)};
-}
-
 fgdwa::Scan to_scan(const sensor_msgs::LaserScan& msg, const fgdwa::Pose2& laser_pose) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   fgdwa::Scan scan;

@@ -23,13 +23,14 @@
 
 namespace fgdwa_ros {
 
+// compose(base, mount): `mount` (in the base frame) placed at `base`.
+using fgdwa::compose;
+
 // Heading about z, rad; written out (not tf2::getYaw) so that fgdwa replay,
 // reading the same quaternions from a bag, gets the same bits.
 double yaw_of(const geometry_msgs::Quaternion& q);
 fgdwa::Pose2 pose_of(const geometry_msgs::Pose& pose);
 geometry_msgs::Pose to_pose(const fgdwa::Pose2& pose);
-// `mount` (in the base frame) placed at `base`.
-fgdwa::Pose2 compose(const fgdwa::Pose2& base, const fgdwa::Pose2& mount);
 
 // A LaserScan as fgdwa's Scan taken at `laser_pose`. Readings follow REP 117:
 // NaN, +inf, or outside [range_min, range_max) are no return (+inf); -inf is

@@ -25,4 +25,14 @@ double wrap_angle(double angle) {
 
 double angle_difference(double a, double b) { return wrap_angle(a - b); }
 
+Pose2 compose(const Pose2& a, const Pose2& b) {
+  const double c = std::cos(a.theta), s = std::sin(a.theta);
+  return {a.x + c * b.x - s * b.y, a.y + s * b.x + c * b.y, wrap_angle(a.theta + b.theta)};
+}
+
+Pose2 inverse(const Pose2& p) {
+  const double c = std::cos(p.theta), s = std::sin(p.theta);
+  return {-c * p.x - s * p.y, s * p.x - c * p.y, wrap_angle(-p.theta)};
+}
+
 }  // namespace fgdwa

@@ -42,7 +42,8 @@ ScanMap::ScanMap(int rows, int cols, double resolution, Vec2 origin, const Occup
       grid_(rows, cols, resolution, origin, empty_cells(rows, cols)),
       states_(grid_.cells().size(), static_cast<std::uint8_t>(CellState::Unknown)),
       log_odds_(grid_.cells().size(), 0.0f),
-      tallies_(grid_.cells().size()) {
+      tallies_(grid_.cells().size()),
+      listed_(grid_.cells().size(), 0) {
   params_.validate();
 }
 
@@ -71,6 +72,10 @@ int ScanMap::update(std::size_t cell, double delta) {
     grid_.set(cell, true);
     changed_.push_back(cell);
     ++occupied_;
+    if (!listed_[cell]) {
+      listed_[cell] = 1;
+      fading_.push_back(cell);
+    }
     return 1;
   }
   if (before == CellState::Occupied) {
@@ -142,11 +147,11 @@ ScanMap::Tally& ScanMap::tally(std::size_t cell) {
   return t;
 }
 
-std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit) {
-  return integrate(ScanFrame(scan), keep_hit);
+std::size_t ScanMap::integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit, double time) {
+  return integrate(ScanFrame(scan), keep_hit, time);
 }
 
-std::size_t ScanMap::integrate(const ScanFrame& frame, const std::vector<std::uint8_t>* keep_hit) {
+std::size_t ScanMap::integrate(const ScanFrame& frame, const std::vector<std::uint8_t>* keep_hit, double time) {
   const Scan& scan = frame.scan();
   if (keep_hit && keep_hit->size() != scan.ranges.size())
     throw Error("ScanMap::integrate: keep_hit has " + std::to_string(keep_hit->size()) + " entries for a scan of " +
@@ -180,7 +185,40 @@ std::size_t ScanMap::integrate(const ScanFrame& frame, const std::vector<std::ui
     const bool hit = t.hits > 0 && t.hits >= params_.hit_share * (t.hits + t.passes);
     changed += update(cell, hit ? params_.hit : params_.miss) != 0;
   }
+  changed += fade(time);
   return commit(changed);
+}
+
+std::size_t ScanMap::fade(double time) {
+  if (std::isnan(time) || std::isinf(params_.fade_time)) return 0;
+  const double elapsed = std::isnan(faded_at_) ? 0.0 : time - faded_at_;
+  faded_at_ = time;
+  if (!(elapsed > 0.0)) return 0;
+  const float keep = static_cast<float>(std::exp(-elapsed / params_.fade_time));
+  std::size_t faded = 0, n = 0;
+  for (const std::size_t cell : fading_) {
+    if (states_[cell] != static_cast<std::uint8_t>(CellState::Occupied)) {
+      listed_[cell] = 0;
+      continue;
+    }
+    fading_[n++] = cell;
+    if (tallies_[cell].scan == scan_id_) continue;  // this scan saw it: its evidence is fresh
+    float& l = log_odds_[cell];
+    l *= keep;
+    if (l >= params_.occupied) continue;
+    // Below the occupied threshold by fading alone: nothing says what is there any more.
+    l = 0.0f;
+    states_[cell] = static_cast<std::uint8_t>(CellState::Unknown);
+    grid_.set(cell, false);
+    changed_.push_back(cell);
+    --occupied_;
+    --known_;
+    listed_[cell] = 0;
+    --n;
+    ++faded;
+  }
+  fading_.resize(n);
+  return faded;
 }
 
 std::size_t ScanMap::mark(const std::vector<Vec2>& points) {

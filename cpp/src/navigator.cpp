@@ -41,6 +41,7 @@ Navigator::Navigator(const RobotLimits& limits, const Footprint& footprint, cons
       lidar_(validated(lidar)),
       dt_(planner.dt),
       controller_(limits, footprint_, planner, nullptr, std::move(policy), window),
+      localiser_(params_.scan_match),
       world_(map, mode, params_, lidar_, footprint_, field_edge_margin(params_, limits_, footprint_, planner)),
       route_(map, footprint_, params_, dt_, terrain),
       recovery_(limits_, footprint_, params_, dt_, controller_.planner().params().safety_margin,
@@ -74,14 +75,30 @@ void Navigator::set_global_path(const GlobalPath& path) {
   controller_path_version_ = route_.version();
 }
 
-const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, double time,
+const CycleRecord& Navigator::step(const RobotState& odometry, const Scan* scan, double time,
                                    const std::vector<Disc>& discs) {
   if (!has_goal_) throw Error("step() before set_goal(): the navigator has no goal");
-  detail::require_finite_state(state);
+  detail::require_finite_state(odometry);
   detail::require_finite("time", time);
   if (scan) frame_.assign(*scan, lidar_.beams);
   const ScanFrame* frame = scan ? &frame_ : nullptr;
   for (const Disc& d : discs) d.validate();
+
+  // Where the robot is on its map: the scan matched to the map as it was
+  // before this scan, the odometry corrected by what the match found.
+  Clock::time_point tic = Clock::now();
+  if (frame) {
+    std::shared_ptr<const DistanceField> field = world_.field();
+    record_.match = localiser_.update(frame_, field.get(), world_.hit_depth());
+  } else {
+    record_.match = ScanMatch{};
+    record_.match.status = MatchStatus::Off;
+  }
+  RobotState state = odometry;
+  state.pose = localiser_.to_map(odometry.pose);
+  record_.odometry = odometry.pose;
+  record_.map_to_odom = localiser_.map_to_odom();
+  record_.times.localise = seconds_since(tic);
   const Vec2 position = state.pose.position();
   const int version_before = route_.version();
   // Read before the record takes this cycle: whether the last cycle's planner rejected every sample.
@@ -92,7 +109,7 @@ const CycleRecord& Navigator::step(const RobotState& state, const Scan* scan, do
 
   // The world: tracks of the movers, the map with this scan in it.
   const WorldUpdate& seen = world_.update(frame, time, discs);
-  Clock::time_point tic = Clock::now();
+  tic = Clock::now();
   if (seen.new_cells) {
     // The controller lets go of the map while it changes, so that a field no
     // one else holds is updated in place.

@@ -1,5 +1,6 @@
 #include "fgdwa/scan_frame.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "fgdwa/error.hpp"
@@ -16,6 +17,18 @@ void ScanFrame::assign(const Scan& scan, int beams) {
   scan_.angle_increment = scan.angle_increment;
   scan_.max_range = scan.max_range;
   scan_.ranges.assign(scan.ranges.begin(), scan.ranges.end());
+  place();
+}
+
+void ScanFrame::move_to(const Pose2& pose) {
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta))
+    throw Error("ScanFrame::move_to: the pose must be finite");
+  scan_.pose = pose;
+  place();
+}
+
+void ScanFrame::place() {
+  const Scan& scan = scan_;
   const std::size_t n = scan.ranges.size();
   directions_.resize(n);
   beam_hits_.assign(n, Vec2::Zero());

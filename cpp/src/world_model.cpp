@@ -23,9 +23,14 @@ double seconds_since(Clock::time_point start) {
 
 WorldModel::WorldModel(const OccupancyGrid& map, MapMode mode, const NavigatorParams& params,
                        const LidarParams& lidar, const Footprint& footprint, double edge_margin)
-    : params_(params), noise_std_(lidar.noise_std), footprint_(footprint), mode_(mode), tracker_(params.tracker) {
+    : params_(params),
+      noise_std_(lidar.noise_std),
+      range_std_(std::max(params.occupancy.range_std, lidar.noise_std)),
+      footprint_(footprint),
+      mode_(mode),
+      tracker_(params.tracker) {
   OccupancyParams occupancy = params_.occupancy;
-  occupancy.range_std = std::max(occupancy.range_std, lidar.noise_std);
+  occupancy.range_std = range_std_;
   occupancy.edge_margin = edge_margin;
   if (mode_ == MapMode::Known) {
     known_map_ = std::make_unique<OccupancyGrid>(map);
@@ -57,7 +62,7 @@ const WorldUpdate& WorldModel::update(const ScanFrame* frame, double time, const
   tic = Clock::now();
   if (scan_map_ && frame) {
     if (field_stale_) field();  // the cells the last scan changed, before this one's
-    update_.new_cells = scan_map_->integrate(*frame, &keep_hit_);
+    update_.new_cells = scan_map_->integrate(*frame, &keep_hit_, time);
     if (update_.new_cells) {
       if (known_map_)
         // The known map with what the scans found that it lacks.

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarParams', 'AStarPlanner', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CriticStats', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RecoveryTrigger', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
+__all__: list[str] = ['AStarParams', 'AStarPlanner', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CriticStats', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MatchStatus', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RecoveryTrigger', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScanMatch', 'ScanMatchParams', 'ScanMatcher', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -1950,6 +1950,7 @@ class OccupancyParams:
       hit_share: a cell some beams of a scan end in and others pass is hit when at least this share end in it
       clear: beams clear the cells they pass (false: hits only, for static worlds)
       edge_margin (m): the free margin the map's distance field keeps past the grid's edge
+      fade_time (s): time constant with which an occupied cell no beam reaches fades toward unknown; it is unknown again once below occupied (inf: never fades; 20 s lets what drift smeared go)
     """
     __hash__: typing.ClassVar[None] = None
     name: typing.ClassVar[str] = 'occupancy'
@@ -1958,6 +1959,7 @@ class OccupancyParams:
     clear: typing.Any
     clear_range: typing.Any
     edge_margin: typing.Any
+    fade_time: typing.Any
     free: typing.Any
     hit: typing.Any
     hit_share: typing.Any
@@ -2019,9 +2021,9 @@ class ScanMap:
         """
         Its distance field, brought up to date (incrementally) on the first call after changes.
         """
-    def integrate(self, scan: Scan, keep_hit: typing.Any = None) -> int:
+    def integrate(self, scan: Scan, keep_hit: typing.Any = None, time: typing.SupportsFloat | typing.SupportsIndex | None = None) -> int:
         """
-        One scan's evidence (each cell updated once, by the vote of the beams ending and passing in it); keep_hit (one flag per beam) says which hits to mark. Returns how many cells turned occupied or stopped being occupied.
+        One scan's evidence (each cell updated once, by the vote of the beams ending and passing in it); keep_hit (one flag per beam) says which hits to mark; time (s, or None) lets the occupied cells no beam reached fade (fade_time). Returns how many cells turned occupied or stopped being occupied.
         """
     def mark(self, points: typing.Any) -> int:
         """
@@ -2392,6 +2394,189 @@ class Tracker:
         """
         The tracks after the last update (a copy).
         """
+class ScanMatchParams:
+    """
+    The scan-to-map matcher: search window and steps, scoring, when a match is refused.
+    
+    Keyword arguments, attributes (SI units, radians):
+      enabled: align each scan to the map before it goes in, and plan at the corrected pose (false: odometry is the pose)
+      window_xy (m): farthest the search moves the scan from where odometry places it, in x and in y
+      window_theta (rad): farthest the search turns the scan, either way
+      step_xy (m): the coarse search's translation step over the whole window
+      step_theta (rad): the coarse search's rotation step; refined by halves with the translation
+      final_step_xy (m): the refinement halves the steps until the translation step is this fine
+      sigma (m): a hit this far from the map's nearest obstacle scores exp(-1/2)
+      point_spacing (m): hits nearer than this to the last one kept (in beam order) are skipped
+      max_points: hits scored at most (evenly picked from those kept)
+      min_points: fewer hits kept than this: no match
+      min_score: the best pose's mean score below this: the map does not know the place yet, no match
+      margin: the best pose must score this much above the pose odometry gives, and this much above every pose farther than ambiguity_radius from it
+      ambiguity_radius (m): a pose this far from the best that scores within margin of it makes the match ambiguous
+    """
+    __hash__: typing.ClassVar[None] = None
+    name: typing.ClassVar[str] = 'scan_match'
+    ambiguity_radius: typing.Any
+    enabled: typing.Any
+    final_step_xy: typing.Any
+    margin: typing.Any
+    max_points: typing.Any
+    min_points: typing.Any
+    min_score: typing.Any
+    point_spacing: typing.Any
+    sigma: typing.Any
+    step_theta: typing.Any
+    step_xy: typing.Any
+    window_theta: typing.Any
+    window_xy: typing.Any
+    @staticmethod
+    def schema() -> list:
+        """
+        Every field, nested ones by their dotted names: name, type, unit, bounds, doc, choices, default.
+        """
+    def __copy__(self) -> ScanMatchParams:
+        ...
+    def __deepcopy__(self, arg0: typing.Any) -> ScanMatchParams:
+        ...
+    def __eq__(self, arg0: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> dict:
+        ...
+    def __init__(self, **kwargs) -> None:
+        """
+        Every field a keyword (defaults: the C++ struct's); a nested set takes its own class or a dict.
+        """
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: dict) -> None:
+        ...
+    def get(self, name: str) -> typing.Any:
+        """
+        One field's value, nested ones by dotted name.
+        """
+    def set(self, name: str, value: typing.Any) -> None:
+        """
+        Sets one field, nested ones by dotted name ("window.n_v").
+        """
+    def to_dict(self) -> dict:
+        """
+        The fields as a dict, nested sets as dicts.
+        """
+    def validate(self) -> None:
+        """
+        Checks every field and the rules between them; raises FgdwaError naming the first bad one.
+        """
+class MatchStatus:
+    """
+    Why a scan's match was or was not used.
+    
+    Members:
+    
+      Accepted
+    
+      Off
+    
+      NoMap
+    
+      TooFewPoints
+    
+      PoorFit
+    
+      NotBetter
+    
+      Ambiguous
+    """
+    Accepted: typing.ClassVar[MatchStatus]
+    Ambiguous: typing.ClassVar[MatchStatus]
+    NoMap: typing.ClassVar[MatchStatus]
+    NotBetter: typing.ClassVar[MatchStatus]
+    Off: typing.ClassVar[MatchStatus]
+    PoorFit: typing.ClassVar[MatchStatus]
+    TooFewPoints: typing.ClassVar[MatchStatus]
+    __members__: typing.ClassVar[dict[str, MatchStatus]]
+    @typing.overload
+    def __eq__(self, other: MatchStatus) -> bool:
+        ...
+    @typing.overload
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __int__(self) -> int:
+        ...
+    @typing.overload
+    def __ne__(self, other: MatchStatus) -> bool:
+        ...
+    @typing.overload
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class ScanMatch:
+    """
+    One scan matched to a map.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def accepted(self) -> bool:
+        ...
+    @property
+    def given_score(self) -> float:
+        """
+        The mean score at the pose given.
+        """
+    @property
+    def points(self) -> int:
+        """
+        Hits scored.
+        """
+    @property
+    def pose(self) -> Pose2:
+        """
+        The scan's best pose found (the one given when none was searched).
+        """
+    @property
+    def runner_up(self) -> float:
+        """
+        The best score farther than ambiguity_radius from the best.
+        """
+    @property
+    def score(self) -> float:
+        """
+        Its mean score, in [0, 1].
+        """
+    @property
+    def status(self) -> MatchStatus:
+        ...
+class ScanMatcher:
+    """
+    Correlative scan-to-map matching in a bounded window around the scan's pose.
+    """
+    def __init__(self, params: ScanMatchParams = ...) -> None:
+        ...
+    def match(self, scan: Scan, field: DistanceField, depth: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> ScanMatch:
+        """
+        The pose near scan.pose at which the scan's hits (each pushed `depth` m along its beam) fit the field's obstacles best, and whether it is clearly better than scan.pose (ScanMatch).
+        """
+    @property
+    def params(self) -> ScanMatchParams:
+        ...
 class NavigatorMode:
     """
     What the navigator is doing this cycle.
@@ -2576,6 +2761,7 @@ class NavigatorParams:
       progress_reset (m): distance from where the last recovery began that counts as progress
       record_top_k: best-scored rollouts kept in each CycleRecord
       occupancy: the map built from scans (its range_std is at least the lidar's noise_std)
+      scan_match: each scan aligned to the map: the correction from the odometry's frame to the map's
       track_moving: segment and track moving obstacles in the scans (false: every hit is static where it is, the ablation)
       mover_margin (m): added to a tracked mover's radius: room for a mover to change its mind
       route_around_movers: the global path keeps off the floor each mover sweeps over mover_route_horizon (false: movers reach only the local planner)
@@ -2605,6 +2791,7 @@ class NavigatorParams:
     replan_period: typing.Any
     rotate_limit: typing.Any
     route_around_movers: typing.Any
+    scan_match: typing.Any
     segment: typing.Any
     sensed_close_radius: typing.Any
     stall_distance: typing.Any
@@ -2725,11 +2912,26 @@ class CycleRecord:
     def key_node(self) -> int:
         ...
     @property
+    def map_to_odom(self) -> Pose2:
+        """
+        The odometry's frame on the map after this cycle's scan (Pose2; the identity until a match moves it).
+        """
+    @property
+    def match(self) -> ScanMatch:
+        """
+        This cycle's scan matched to the map (ScanMatch).
+        """
+    @property
     def mode(self) -> NavigatorMode:
         ...
     @property
     def new_cells(self) -> int:
         ...
+    @property
+    def odometry(self) -> Pose2:
+        """
+        The pose given to step(), as the odometry has it.
+        """
     @property
     def path_points(self) -> typing.Any:
         """
@@ -2756,7 +2958,9 @@ class CycleRecord:
         """
     @property
     def state(self) -> RobotState:
-        ...
+        """
+        The state planned from: its pose on the map (map_to_odom composed with the odometry's).
+        """
     @property
     def status(self) -> Status:
         ...
@@ -2771,7 +2975,7 @@ class CycleRecord:
     @property
     def times(self) -> dict:
         """
-        Wall-clock seconds per stage: tracking, map, global, perception, plan.
+        Wall-clock seconds per stage: localise, tracking, map, global, perception, plan.
         """
     @property
     def tracked(self) -> list[Disc]:

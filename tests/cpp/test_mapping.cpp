@@ -358,5 +358,45 @@ TEST(Controller, SetMapMakesTheNewObstaclesCount) {
   EXPECT_LT(seen.command.v, 1.0);  // the wall 0.4 m ahead makes it slow down
 }
 
+// An occupied cell no beam reaches fades: unknown again after fade_time
+// ln(l / occupied); a cell hit every scan, and every cell without a time or
+// with fade_time inf, stays.
+TEST(ScanMap, CellsNoBeamReachesFadeToUnknown) {
+  const OccupancyGrid truth = wall_grid();
+  OccupancyParams params;
+  params.fade_time = 2.0;
+  ScanMap fading(truth, params);
+  params.fade_time = std::numeric_limits<double>::infinity();
+  ScanMap lasting(truth, params);
+  ScanMap timeless(truth, OccupancyParams{});
+  const Pose2 facing{1.0, 1.0, 0.0}, away{1.0, 1.0, M_PI};  // the wall lies in the blind cone behind `away`
+  for (int k = 0; k < 3; ++k)
+    for (ScanMap* map : {&fading, &lasting, &timeless}) map->integrate(scan_of(truth, facing, 0.0, k), nullptr, 0.1 * k);
+  ASSERT_EQ(fading.state(10, 25), CellState::Occupied);
+  // 3 hits: l = 2.55, below 0.5 after 2 s ln(5.1) = 3.26 s.
+  double t = 0.2;
+  for (int k = 0; t < 3.0; ++k) {
+    t += 0.1;
+    fading.integrate(scan_of(truth, away, 0.0, 10 + k), nullptr, t);
+    lasting.integrate(scan_of(truth, away, 0.0, 10 + k), nullptr, t);
+    timeless.integrate(scan_of(truth, away, 0.0, 10 + k));
+  }
+  EXPECT_EQ(fading.state(10, 25), CellState::Occupied);
+  for (int k = 0; t < 4.0; ++k) {
+    t += 0.1;
+    fading.integrate(scan_of(truth, away, 0.0, 50 + k), nullptr, t);
+  }
+  for (int r = 5; r < 15; ++r) {
+    EXPECT_EQ(fading.state(r, 25), CellState::Unknown) << "row " << r;
+    EXPECT_EQ(lasting.state(r, 25), CellState::Occupied) << "row " << r;
+    EXPECT_EQ(timeless.state(r, 25), CellState::Occupied) << "row " << r;
+  }
+  EXPECT_FALSE(fading.grid().occupied(10, 25));
+  expect_field_equals_fresh_build(fading, *fading.field());
+  // Seen again, it is back at once; a wall seen every scan never fades.
+  for (int k = 0; k < 60; ++k) fading.integrate(scan_of(truth, facing, 0.0, 100 + k), nullptr, t + 0.1 * k);
+  for (int r = 6; r < 14; ++r) EXPECT_EQ(fading.state(r, 25), CellState::Occupied) << "row " << r;
+}
+
 }  // namespace
 }  // namespace fgdwa::test

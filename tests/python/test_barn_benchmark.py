@@ -194,7 +194,7 @@ def test_navigator_records_the_cycle():
     assert [b.total for b in record.best] == sorted((b.total for b in record.best), reverse=True)
     np.testing.assert_allclose(record.best[0].poses, record.chosen_rollout)
     assert record.chosen_rollout.shape == (planner_preset("gdwa").params.n_steps, 3)
-    assert set(record.times) == {"tracking", "map", "global", "perception", "plan"} and all(v >= 0 for v in record.times.values())
+    assert set(record.times) == {"localise", "tracking", "map", "global", "perception", "plan"} and all(v >= 0 for v in record.times.values())
     assert sum(record.reject_counts.values()) == len(navigator.plan_result.samples)
     # Why each rollout scored as it did: per critic, its raw score and its part of the total.
     plan = navigator.plan_result

@@ -30,6 +30,12 @@ double wrap_angle(double angle);
 // Smallest signed difference a - b, in (-pi, pi].
 double angle_difference(double a, double b);
 
+// The pose `b`, given in the frame that `a` places, in a's own frame: a * b
+// as rigid transforms.
+Pose2 compose(const Pose2& a, const Pose2& b);
+// The transform that undoes `p`: compose(inverse(p), p) is the identity.
+Pose2 inverse(const Pose2& p);
+
 // Inline: these run in the clearance queries' inner loops.
 namespace detail {
 // Squared distance from p to the segment a-b (to a when the segment is a

@@ -45,6 +45,7 @@ struct OccupancyParams {
   double hit_share = 0.2;
   bool clear = true;
   double edge_margin = DistanceField::kDefaultEdgeMargin;
+  double fade_time = std::numeric_limits<double>::infinity();
 
   static constexpr const char* kName = "occupancy";
   template <class V>
@@ -63,6 +64,7 @@ struct OccupancyParams {
     v.real("hit_share", &P::hit_share, "", Bounds::positive(1), "a cell some beams of a scan end in and others pass is hit when at least this share end in it");
     v.flag("clear", &P::clear, "beams clear the cells they pass (false: hits only, for static worlds)");
     v.real("edge_margin", &P::edge_margin, "m", Bounds::at_least(0), "the free margin the map's distance field keeps past the grid's edge");
+    v.real("fade_time", &P::fade_time, "s", Bounds::positive(limits::kMaxHorizon).or_infinite(), "time constant with which an occupied cell no beam reaches fades toward unknown; it is unknown again once below occupied (inf: never fades; 20 s lets what drift smeared go)");
   }
   // clamp_min <= free < occupied <= clamp_max, hit >= occupied.
   void check_relations(const ParamPath& path) const;
@@ -87,9 +89,14 @@ class ScanMap {
   // obstacle still clears the cells before it. Hits outside the layout are
   // dropped, and beams are clipped to it. Returns how many cells turned
   // occupied or stopped being occupied.
-  std::size_t integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit = nullptr);
+  // `time` (s; NaN: none) lets the occupied cells no beam of this scan
+  // reached fade since the last scan with a time (fade_time): what a wrong
+  // pose once marked where the robot no longer looks does not stay for good.
+  std::size_t integrate(const Scan& scan, const std::vector<std::uint8_t>* keep_hit = nullptr,
+                        double time = std::numeric_limits<double>::quiet_NaN());
   // The same for a scan already taken apart once this cycle.
-  std::size_t integrate(const ScanFrame& frame, const std::vector<std::uint8_t>* keep_hit = nullptr);
+  std::size_t integrate(const ScanFrame& frame, const std::vector<std::uint8_t>* keep_hit = nullptr,
+                        double time = std::numeric_limits<double>::quiet_NaN());
   // One hit on each cell holding these points; returns how many cells turned occupied.
   std::size_t mark(const std::vector<Vec2>& points);
 
@@ -122,6 +129,9 @@ class ScanMap {
   bool cell_index(const Vec2& p, std::size_t& cell) const;
   // Starts a new update round: each cell is updated at most once in it.
   void next_scan();
+  // Fades the occupied cells this scan did not reach by exp(-elapsed / fade_time);
+  // returns how many turned unknown.
+  std::size_t fade(double time);
   // Publishes the changed cells in grid(); returns `changed`.
   std::size_t commit(std::size_t changed);
 
@@ -140,6 +150,9 @@ class ScanMap {
   std::vector<std::size_t> touched_;
   std::size_t occupied_ = 0, known_ = 0;
   std::vector<std::size_t> changed_;  // cells that flipped in the last integrate() or mark()
+  std::vector<std::size_t> fading_;   // the cells that may be occupied (each listed once, per listed_)
+  std::vector<std::uint8_t> listed_;
+  double faded_at_ = std::numeric_limits<double>::quiet_NaN();  // s, the last scan's time
   std::vector<std::size_t> pending_;  // cells that flipped since field() last ran
   bool pending_all_ = false;          // too many to list: compare every cell
   std::shared_ptr<DistanceField> field_;

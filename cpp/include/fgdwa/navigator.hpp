@@ -4,7 +4,8 @@
 // in one object a robot program steps every control period.
 //
 // Per step the data flows one way through its parts: the scan, taken apart
-// once (ScanFrame) -> the world model (hits on the known map set aside, the
+// once (ScanFrame) -> the localiser (the scan matched to the map; the
+// odometry's pose corrected onto it) -> the world model (hits on the known map set aside, the
 // rest segmented and tracked, the map updated) -> recovery (stalls, backing
 // up, turning, waiting for movers) -> the route keeper ((re)plan the global
 // path when needed over a ladder of inflation radii) -> the controller
@@ -21,6 +22,7 @@
 
 #include "fgdwa/controller.hpp"
 #include "fgdwa/grid.hpp"
+#include "fgdwa/localiser.hpp"
 #include "fgdwa/navigator_params.hpp"
 #include "fgdwa/path.hpp"
 #include "fgdwa/perception.hpp"
@@ -34,17 +36,21 @@ namespace fgdwa {
 
 // Wall-clock time of each stage of the cycle, s.
 struct StageTimes {
+  double localise = 0.0;    // the scan matched to the map
   double tracking = 0.0;    // segmenting the scan, updating the tracks
   double map = 0.0;         // scan into the map, distance field update
   double global = 0.0;      // path-blocked checks and global planning
   double perception = 0.0;  // sensed points, density I, deviation D, weights
   double plan = 0.0;        // the local planner
-  double total() const { return tracking + map + global + perception + plan; }
+  double total() const { return localise + tracking + map + global + perception + plan; }
 };
 
 struct CycleRecord {
   double time = 0.0;  // s, as given to step()
-  RobotState state;
+  RobotState state;    // the state planned from: its pose on the map (map_to_odom composed with the odometry's)
+  Pose2 odometry;      // the pose given to step(), as the odometry has it
+  Pose2 map_to_odom;   // the odometry's frame on the map after this cycle's scan (the identity until a match moves it)
+  ScanMatch match;     // this cycle's scan matched to the map: accepted or why not, the scores
   Twist command;
   NavigatorMode mode = NavigatorMode::Following;
   FailureReason failure = FailureReason::None;
@@ -83,8 +89,9 @@ class Navigator {
   // (blocked path, stalls) still use A* on the navigator's map. After set_goal().
   void set_global_path(const GlobalPath& path);
 
-  // One control cycle at `time` (s) from `state` with this cycle's scan (null
-  // when the sensor gave none); `discs` the moving obstacles the robot knows,
+  // One control cycle at `time` (s) from `state` (its pose the odometry's,
+  // in the frame of the scan's pose) with this cycle's scan (null when the
+  // sensor gave none); `discs` the moving obstacles the robot knows,
   // placed now. Throws fgdwa::Error on misuse: no goal, a state or scan that is
   // not finite, a scan of another size than the lidar's.
   const CycleRecord& step(const RobotState& state, const Scan* scan, double time,
@@ -97,6 +104,7 @@ class Navigator {
   const Tracker& tracker() const { return world_.tracker(); }
   const OccupancyGrid& map() const { return world_.map(); }
   const WorldModel& world_model() const { return world_; }
+  const Localiser& localiser() const { return localiser_; }
   MapMode map_mode() const { return world_.mode(); }
   const NavigatorParams& params() const { return params_; }
   const std::shared_ptr<const GlobalPath>& path() const { return route_.path(); }
@@ -116,6 +124,7 @@ class Navigator {
   LidarParams lidar_;
   double dt_;
   Controller controller_;
+  Localiser localiser_;
   WorldModel world_;
   RouteKeeper route_;
   Recovery recovery_;

@@ -5,6 +5,7 @@
 #include "fgdwa/limits.hpp"
 #include "fgdwa/mapping.hpp"
 #include "fgdwa/params.hpp"
+#include "fgdwa/scan_matcher.hpp"
 #include "fgdwa/tracking.hpp"
 
 namespace fgdwa {
@@ -34,6 +35,9 @@ struct NavigatorParams {
   double progress_reset = 1.0;
   int record_top_k = 5;
   OccupancyParams occupancy;
+  // Odometry drifts; each scan is aligned to the map before it goes in, and
+  // the robot plans at the pose the alignment gives (Localiser).
+  ScanMatchParams scan_match;
   // Moving obstacles from the scans: hits the map does not hold as static are
   // segmented and tracked; the moving tracks are predicted by the planner
   // (space-time clearance), count in the detect window's density, can make a
@@ -73,6 +77,7 @@ struct NavigatorParams {
     v.real("progress_reset", &P::progress_reset, "m", distance, "distance from where the last recovery began that counts as progress");
     v.integer("record_top_k", &P::record_top_k, "", Bounds::closed(0, limits::kMaxWindowSamples), "best-scored rollouts kept in each CycleRecord");
     v.group("occupancy", &P::occupancy, "the map built from scans (its range_std is at least the lidar's noise_std)");
+    v.group("scan_match", &P::scan_match, "each scan aligned to the map: the correction from the odometry's frame to the map's");
     v.flag("track_moving", &P::track_moving, "segment and track moving obstacles in the scans (false: every hit is static where it is, the ablation)");
     v.real("mover_margin", &P::mover_margin, "m", distance, "added to a tracked mover's radius: room for a mover to change its mind");
     v.flag("route_around_movers", &P::route_around_movers, "the global path keeps off the floor each mover sweeps over mover_route_horizon (false: movers reach only the local planner)");

@@ -33,6 +33,9 @@ class ScanFrame {
   // Takes this scan in place of the last, reusing the buffers. `beams` >= 0:
   // the scanner's beam count, which the scan must match.
   void assign(const Scan& scan, int beams = -1);
+  // The same readings taken at `pose` instead (a finite pose): what the
+  // scan says once the robot knows better where it was.
+  void move_to(const Pose2& pose);
 
   const Scan& scan() const { return scan_; }
   std::size_t size() const { return scan_.ranges.size(); }
@@ -48,6 +51,9 @@ class ScanFrame {
   const std::vector<Vec2>& hit_points() const { return hit_points_; }
 
  private:
+  // Each beam's direction and hit at scan_.pose.
+  void place();
+
   Scan scan_;
   std::vector<Vec2> directions_, beam_hits_, hit_points_;
 };

@@ -52,6 +52,8 @@ class WorldModel {
   // Per cell, 1 where no scan has looked yet; empty unless the map is built from scans.
   std::vector<std::uint8_t> unknown_cells() const;
   MapMode mode() const { return mode_; }
+  // m: how far beyond its reading the map marks a hit (2 std of range noise).
+  double hit_depth() const { return 2.0 * range_std_; }
   const Tracker& tracker() const { return tracker_; }
   const WorldUpdate& last() const { return update_; }
 
@@ -66,6 +68,7 @@ class WorldModel {
 
   NavigatorParams params_;
   double noise_std_;
+  double range_std_;  // the map's: at least the lidar's noise
   Footprint footprint_;
   MapMode mode_;
   Tracker tracker_;
