@@ -16,6 +16,12 @@ int main(int argc, char** argv) {
     ROS_FATAL("fgdwa_node: %s", e.what());
     return 2;
   }
+  // With use_sim_time, time is 0 until the first /clock: every stamp and timeout
+  // taken before it would be wrong, so the node starts once time runs.
+  if (!ros::Time::waitForValid(ros::WallDuration(60.0))) {
+    ROS_FATAL("fgdwa_node: use_sim_time is set but no /clock came in 60 s");
+    return 3;
+  }
   fgdwa_ros::NavigatorNode node(nh, private_nh, config);
   ros::spin();
   return 0;
