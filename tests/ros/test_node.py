@@ -272,6 +272,8 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     views = Views(prefix)
     client = actionlib.SimpleActionClient("move_base", MoveBaseAction)
     check(client.wait_for_server(rospy.Duration(30)), "the move_base action server of fgdwa_node did not come up")
+    # ~events is latched, but it keeps only the last event: the config must be in before a goal's events follow it.
+    wait_for(lambda: any(e.get("event") == "config" for e in events), 15, "the node's config event")
     wait_for(lambda: referee.get("scans", 0) > 0, 30, "the simulated Jackal's first scan")
 
     def recorder_connected():
