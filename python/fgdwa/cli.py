@@ -86,8 +86,9 @@ def cmd_run(args: argparse.Namespace) -> int:
         # The GIF and the recording replay the cycles; a wider fan of scored rollouts than the default 5
         # shows the choice.
         from fgdwa._core import NavigatorParams
+        from fgdwa.bench.recordings import RECORDED_ROLLOUTS
 
-        options.update(record_cycles=True, navigator=NavigatorParams(record_top_k=40))
+        options.update(record_cycles=True, navigator=NavigatorParams(record_top_k=RECORDED_ROLLOUTS))
     result = run_scenario(scenario, planner, args.seed, **options)
     wall = time.perf_counter() - tic
     print(f"scenario {scenario.name}: {scenario.description}")

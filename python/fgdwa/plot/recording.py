@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from fgdwa._core import FgdwaError, NavigatorMode
+from fgdwa.sim.referee import placed_outline
 
 INSTALL_HINT = 'pip install "fgdwa[inspect]"'
 # Entities, one place for the writer and the tests that read a recording back.
@@ -41,12 +42,12 @@ def _cells_image(grid) -> np.ndarray:
 
 
 def _outline(footprint, pose, points: int = 32) -> np.ndarray:
-    x, y, theta = pose
+    """The closed outline of a footprint placed at pose (x, y, theta)."""
+    x, y, _ = pose
     if footprint.is_circle:
         a = np.linspace(0.0, 2.0 * np.pi, points + 1)
         return np.column_stack([x + footprint.radius * np.cos(a), y + footprint.radius * np.sin(a)])
-    c, s = np.cos(theta), np.sin(theta)
-    vertices = np.asarray(footprint.vertices, dtype=float) @ np.array([[c, s], [-s, c]]) + (x, y)
+    vertices = placed_outline(footprint.vertices, pose)
     return np.vstack([vertices, vertices[:1]])
 
 

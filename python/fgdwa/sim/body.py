@@ -128,7 +128,7 @@ class Body:
                 raise FgdwaError("Body: a motor_rate needs the robot's limits (its accelerations)")
             self._substeps = max(1, int(round(self.dt * settings.motor_rate)))
             self._accel = (limits.acc_v, limits.acc_omega)
-            self._brake = (limits.brake_v or limits.acc_v, limits.brake_omega or limits.acc_omega)
+            self._brake = (limits.braking_v(), limits.braking_omega())
 
     def wheels(self, computed: Twist) -> Twist:
         """The command the wheels get this cycle, given the one the navigator computed."""
@@ -202,7 +202,6 @@ def body_settings(options) -> BodySettings:
     """The BodySettings of an EpisodeOptions: its body profile, with the body
     fields it gives (not None) in place of the profile's."""
     base = body_profile(options.body)
-    given = {name: getattr(options, name) for name in ("latency", "actuation_noise", "actuation_lag",
-                                                        "odometry_drift", "motor_rate")
-             if getattr(options, name) is not None}
+    given = {f.name: getattr(options, f.name) for f in dataclasses.fields(BodySettings)
+             if getattr(options, f.name) is not None}
     return dataclasses.replace(base, **given)
