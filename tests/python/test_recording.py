@@ -117,3 +117,15 @@ assert main(["dynamic", "--level", "easy", "--seeds", "0", "--out", {str(tmp_pat
     assert (tmp_path / "demo_fgdwa.png").is_file()
     # Refused before running: nothing was run or written.
     assert not (tmp_path / "r").exists() and not (tmp_path / "d").exists()
+
+
+def test_the_viewer_command_refuses_a_port_out_of_range(tmp_path):
+    pytest.importorskip("rerun")
+    from fgdwa.plot.recording import viewer_command
+
+    rrd = tmp_path / "x.rrd"
+    rrd.write_bytes(b"")
+    assert "--web-viewer-port" in viewer_command(rrd, web=True, web_port=9090)
+    for name, ports in (("web_port", {"web_port": 0}), ("grpc_port", {"grpc_port": 70000})):
+        with pytest.raises(fgdwa.FgdwaError, match=name):
+            viewer_command(rrd, web=True, **ports)
