@@ -28,6 +28,9 @@ void bind_report_fields(Class& cls, Get report) {
                              "Similarity weight used; NaN without that critic.")
       .def_property_readonly("sensed_points", [report](const T& t) { return report(t).sensed_points; },
                              "Lidar hits that neither the map nor the known discs explain.")
+      .def_property_readonly("live_points", [report](const T& t) { return report(t).live_points; },
+                             "Lidar hits near the map's obstacles but off them along their beam by more "
+                             "than the range noise explains: points the planner keeps clear of this cycle.")
       .def_property_readonly("choice", [report](const T& t) { return report(t).choice; },
                              "The chosen sample as a ScoredRollout (sample -1 when none), its per-critic scores included.")
       .def_property_readonly("chosen", [report](const T& t) { return report(t).choice.sample; },

@@ -40,6 +40,46 @@ void Controller::keep_best(int count) {
   keep_best_ = count;
 }
 
+// A hit near the map's obstacles but off them along its beam by more than the
+// range noise explains: the map sits at a wrong place (odometry drifted),
+// the scan does not, so the hit is an obstacle of its own. Along the beam,
+// because that is where the noise lies; a correct map's cells cover the
+// surface, so a correct hit is inside them up to the noise.
+struct Controller::LiveScanTest {
+  LiveScanTest(const Controller& c, const RobotState& state)
+      : field(c.map_.get()),
+        position(state.pose.position()),
+        pose(state.pose),
+        footprint(c.planner_.footprint()),
+        margin(c.planner_.params().safety_margin),
+        // Only hits a rollout can reach matter to the planner.
+        reach(std::max(c.planner_.limits().v_max, std::abs(state.twist.v)) * c.planner_.params().sim_time +
+              c.planner_.footprint().radius() + c.planner_.params().safety_margin),
+        // A tenth of a cell on each side for a hit on a cell's edge, which
+        // rounding may put on either side of it.
+        slack(field ? 0.1 * field->grid().resolution() : 0.0),
+        depth(kLiveNoiseStds * c.range_noise_ + slack) {}
+
+  bool counts(const Vec2& hit, const Vec2& direction) const {
+    if (!field || (hit - position).norm() > reach) return false;
+    // The stretch of the beam the noise may have moved the hit along: a
+    // correct map has an obstacle square on it, a beam that grazes a corner
+    // and a hit noise carried past one included.
+    const Vec2 far = hit + depth * direction;
+    if (field->grid().occupied_at(far) || field->segment_distance(hit - depth * direction, far) <= slack) return false;
+    // Not one within the safety margin of the robot where it stands: that is
+    // noise off what is near it (nothing stands inside the robot), and it
+    // would shrink the contact margin against everything else.
+    return footprint.signed_distance(pose, hit) > margin;
+  }
+
+  const DistanceField* field;
+  Vec2 position;
+  Pose2 pose;
+  const Footprint& footprint;
+  double margin, reach, slack, depth;
+};
+
 const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,
                                     const std::vector<Disc>& discs) {
   if (!scan) return step(state, goal, static_cast<const ScanFrame*>(nullptr), discs);
@@ -55,26 +95,41 @@ const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, c
   detail::require_point("goal", goal);
   report_.density = report_.deviation = report_.beta = report_.delta = std::numeric_limits<double>::quiet_NaN();
   report_.sensed_points = 0;
-  world_.set_discs(discs);
+  report_.live_points = 0;
+  live_.clear();
   if (frame) {
     // Hits on the map's obstacles or on known discs are explained; the rest are
     // obstacles the planner would not otherwise see.
     const double resolution = map_ ? map_->grid().resolution() : 0.1;
     const double tolerance = 0.5 * resolution + 3.0 * range_noise_;
+    const LiveScanTest live{*this, state};
     unexplained_.clear();
-    for (const Vec2& hit : frame->hit_points()) {
+    for (std::size_t i = 0; i < frame->size(); ++i) {
+      if (!frame->has_hit(i)) continue;
+      const Vec2& hit = frame->beam_hits()[i];
+      const auto on_disc = [&] {
+        return std::any_of(discs.begin(), discs.end(),
+                           [&](const Disc& d) { return (hit - d.center).norm() <= d.radius + tolerance; });
+      };
       // Most hits lie on the map's obstacles: one table look-up settles them.
-      if (map_ && (map_->upper_bound(hit) <= tolerance || map_->distance(hit) <= tolerance)) continue;
-      const bool on_disc = std::any_of(discs.begin(), discs.end(), [&](const Disc& d) {
-        return (hit - d.center).norm() <= d.radius + tolerance;
-      });
-      if (!on_disc) unexplained_.push_back(hit);
+      if (map_ && (map_->upper_bound(hit) <= tolerance || map_->distance(hit) <= tolerance)) {
+        if (live.counts(hit, frame->directions()[i]) && !on_disc()) live_.push_back(Disc{hit, 0.0, Vec2::Zero(), 0.0});
+        continue;
+      }
+      if (!on_disc()) unexplained_.push_back(hit);
     }
     world_.set_sensed(points_field(unexplained_, resolution));
     report_.sensed_points = unexplained_.size();
+    report_.live_points = live_.size();
     report_.density = detail::obstacle_density_of_checked(frame->scan(), window_).density;
   } else {
     world_.set_sensed(nullptr);
+  }
+  if (live_.empty()) {
+    world_.set_discs(discs);
+  } else {
+    live_.insert(live_.end(), discs.begin(), discs.end());
+    world_.set_discs(live_);
   }
   if (planner_.global_path()) report_.deviation = planner_.global_path()->deviation(state.pose.position());
   if (policy_) {

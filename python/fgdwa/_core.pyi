@@ -1887,6 +1887,11 @@ class CycleReport:
     def key_node(self) -> int:
         ...
     @property
+    def live_points(self) -> int:
+        """
+        Lidar hits near the map's obstacles but off them along their beam by more than the range noise explains: points the planner keeps clear of this cycle.
+        """
+    @property
     def reject_counts(self) -> dict:
         ...
     @property
@@ -2911,6 +2916,11 @@ class CycleRecord:
     @property
     def key_node(self) -> int:
         ...
+    @property
+    def live_points(self) -> int:
+        """
+        Lidar hits near the map's obstacles but off them along their beam by more than the range noise explains: points the planner keeps clear of this cycle.
+        """
     @property
     def map_to_odom(self) -> Pose2:
         """

@@ -593,3 +593,58 @@ TEST(Navigator, CommandsStayInsideTheLimitsWhateverTheStateReports) {
               0);
   }
 }
+
+// Odometry drift puts the known map at a wrong place while the scan sees the
+// world where it is. Here the map shows the wall across the room one cell
+// (0.1 m) farther than it stands, within the half cell plus three range-noise
+// stds that explain a hit radially, and the goal is where the body clears the
+// mapped wall but not the real one: only this cycle's scan shows the
+// difference, and no rollout the planner may choose reaches the real wall.
+TEST(Controller, TheLiveScanCountsWhereTheKnownMapIsShifted) {
+  const OccupancyGrid truth = room(30, 60, {{0, 30, 30, 2}});    // the wall at x in [3.0, 3.2] m
+  const OccupancyGrid shifted = room(30, 60, {{0, 31, 30, 2}});  // the map's, at [3.1, 3.3] m
+  LidarParams exact;
+  const LaserScanner scanner(exact, std::make_shared<DistanceField>(truth));
+  const Footprint body = Footprint::circle(0.2);
+  PlannerParams params = gdwa();
+  params.goal_tolerance = 0.02;
+  Controller controller(RobotLimits{}, body, params, std::make_shared<const DistanceField>(shifted));
+  controller.set_global_path(GlobalPath({Vec2(1.0, 1.5), Vec2(2.86, 1.5)}));
+  controller.set_range_noise(0.02);  // hits within 0.05 + 3 x 0.02 m of the map's obstacles explain radially
+  const FieldClearance real(std::make_shared<DistanceField>(truth));
+  RobotState state{Pose2{2.0, 1.5, 0.0}, Twist{0.0, 0.0}};
+  std::mt19937_64 rng(0);
+  Scan scan;
+  for (int i = 0; i < 80; ++i) {
+    scanner.scan(state.pose, {}, 0.0, rng, scan);
+    // 0.04 m from the mapped wall, 0.06 m into the real one.
+    const CycleReport& report = controller.step(state, Vec2(2.86, 1.5), &scan);
+    if (i == 0) {
+      // The wall's hits within the rollouts' reach, and only they.
+      EXPECT_GT(report.live_points, 100u);
+      for (const Disc& d : controller.world().discs()) EXPECT_NEAR(d.center.x(), 3.0, 1e-9);
+    }
+    state.pose = unicycle_step(state.pose, report.command, gdwa().dt);
+    state.twist = report.command;
+    ASSERT_GT(real.clearance(body, state.pose, 0.0), 0.0) << "cycle " << i << " at x = " << state.pose.x;
+  }
+  EXPECT_GT(state.pose.x, 2.7);  // it did drive up to the wall
+}
+
+// A scan that agrees with a correct map adds no live point, noise and all:
+// the along-the-beam test leaves a hit to its map's obstacles unless four
+// noise stds along its beam, either way, hold none (a grazed corner included).
+TEST(Navigator, ACorrectMapLeavesNoLivePoints) {
+  const OccupancyGrid map = room(30, 60, {{0, 30, 30, 2}, {10, 12, 4, 4}});
+  LidarParams lidar;
+  lidar.noise_std = 0.02;
+  const LaserScanner scanner(lidar, std::make_shared<DistanceField>(map));
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, lidar);
+  nav.set_goal(Vec2(2.5, 2.5));
+  Drive d{at(0.5, 0.5)};
+  std::mt19937_64 rng(1);
+  Scan scan;
+  std::size_t live = 0;
+  for (int i = 0; i < 60; ++i) live += drive(nav, d, &scanner, rng, scan, 0.15).control.live_points;
+  EXPECT_LE(live, 2u);
+}

@@ -50,6 +50,7 @@ struct CycleReport {
   double beta = std::numeric_limits<double>::quiet_NaN();       // clearance weight used; NaN without that critic
   double delta = std::numeric_limits<double>::quiet_NaN();      // similarity weight used; NaN without that critic
   std::size_t sensed_points = 0;                                // lidar hits the map and known discs do not explain
+  std::size_t live_points = 0;  // hits near the map's obstacles but short of them: the map sits wrong there
   ScoredRollout choice;             // the chosen sample (sample -1, no poses, when none)
   std::vector<ScoredRollout> best;  // the keep_best() best admissible rollouts, best first
   std::array<int, kRejectReasonCount> reject_counts{};  // samples per reject reason
@@ -121,6 +122,13 @@ class Controller {
   CycleReport report_;
   int keep_best_ = 0;
   std::vector<Vec2> unexplained_;  // this cycle's lidar hits that the map does not explain
+  // This cycle's hits short of the map's obstacles (LiveScanTest), as points
+  // (zero-radius discs), then the known discs: what the planner's world holds.
+  std::vector<Disc> live_;
+  struct LiveScanTest;
+  // How many range-noise stds short of the map a hit must lie to count:
+  // 4 leaves about one false hit in 30 000 beams.
+  static constexpr double kLiveNoiseStds = 4.0;
   std::vector<int> order_;         // scratch: admissible samples, best first
   ScanFrame frame_;                // a scan given whole, taken apart
 };

@@ -71,10 +71,13 @@ class BodySettings:
 # The bodies the benchmarks run: "default", what a wheeled robot with wheel
 # odometry and a gyro does (docs/simulation.md, "The body", says where the
 # figures come from), and "ideal", the command applied at once and the pose
-# known exactly.
+# known exactly; "harsh", a worn robot for stress tests: a 0.1 s lag on top of
+# the ramp and twice the default's drift in position, 2.5 times in heading.
 BODY_PROFILES = {
     "ideal": BodySettings(),
     "default": BodySettings(motor_rate=100.0, actuation_noise=(0.02, 0.05), odometry_drift=(0.01, 0.002)),
+    "harsh": BodySettings(motor_rate=100.0, actuation_lag=0.1, actuation_noise=(0.02, 0.05),
+                          odometry_drift=(0.02, 0.005)),
 }
 DEFAULT_BODY = "default"
 
