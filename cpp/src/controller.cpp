@@ -51,13 +51,12 @@ struct Controller::LiveScanTest {
         position(state.pose.position()),
         pose(state.pose),
         footprint(c.planner_.footprint()),
-        margin(c.planner_.params().safety_margin),
         // Only hits a rollout can reach matter to the planner.
         reach(std::max(c.planner_.limits().v_max, std::abs(state.twist.v)) * c.planner_.params().sim_time +
               c.planner_.footprint().radius() + c.planner_.params().safety_margin),
-        // A tenth of a cell on each side for a hit on a cell's edge, which
-        // rounding may put on either side of it.
-        slack(field ? 0.1 * field->grid().resolution() : 0.0),
+        // A hundredth of a cell for a hit on a cell's edge, which rounding
+        // may put on either side of it.
+        slack(field ? 0.01 * field->grid().resolution() : 0.0),
         depth(kLiveNoiseStds * c.range_noise_ + slack) {}
 
   bool counts(const Vec2& hit, const Vec2& direction) const {
@@ -67,17 +66,15 @@ struct Controller::LiveScanTest {
     // and a hit noise carried past one included.
     const Vec2 far = hit + depth * direction;
     if (field->grid().occupied_at(far) || field->segment_distance(hit - depth * direction, far) <= slack) return false;
-    // Not one within the safety margin of the robot where it stands: that is
-    // noise off what is near it (nothing stands inside the robot), and it
-    // would shrink the contact margin against everything else.
-    return footprint.signed_distance(pose, hit) > margin;
+    // Nothing stands inside the robot: a hit there is the robot's own.
+    return footprint.signed_distance(pose, hit) > 0.0;
   }
 
   const DistanceField* field;
   Vec2 position;
   Pose2 pose;
   const Footprint& footprint;
-  double margin, reach, slack, depth;
+  double reach, slack, depth;
 };
 
 const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,

@@ -245,9 +245,9 @@ def test_plan_global_errors():
 
 def test_c_shaped_trap_dwa_is_stuck_gdwa_gets_through():
     scenario = c_trap_scenario()
-    # The ideal body: with drifting odometry a known map sits at the wrong place, and until the live
-    # scan counts against a known map too, DWA may drive into a wall of the trap (seed 0) before it gives up.
-    dwa = run_episode(scenario.world, scenario.start, scenario.goal, lidar=fgdwa.LidarParams(), body="ideal",
+    # The default body: the known map sits where drifting odometry puts it, and the live scan keeps
+    # DWA off the trap's walls until it gives up.
+    dwa = run_episode(scenario.world, scenario.start, scenario.goal, lidar=fgdwa.LidarParams(),
                       params=fgdwa.PlannerParams(heading_target="goal"), max_steps=400)
     gdwa = run_episode(scenario.world, scenario.start, scenario.goal, lidar=fgdwa.LidarParams(),
                        params=fgdwa.PlannerParams(heading_target="key_nodes"), max_steps=400)
