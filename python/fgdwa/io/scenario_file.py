@@ -19,6 +19,8 @@ import os
 from pathlib import Path
 from typing import Any, Union
 
+import numpy as np
+
 from fgdwa._core import (
     DetectWindowParams,
     FgdwaError,
@@ -33,6 +35,7 @@ from fgdwa.file_limits import clip, is_file, read_text
 from fgdwa.io.scenario_checks import FeasibilityChecks
 from fgdwa.io.scenario_maps import MapReader
 from fgdwa.io.scenario_values import join_key, parse_yaml, short_repr
+from fgdwa.sim.keyframes import KeyframedMover
 from fgdwa.sim.scenario import Scenario, Variability, params_with
 from fgdwa.sim.world import MOVER_MODES, MovingObstacle, World
 
@@ -179,36 +182,19 @@ class _Reader(MapReader, FeasibilityChecks):
         for i, item in enumerate(self.list_of(value, key)):
             ikey = join_key(key, i)
             self.mapping(item, ikey, ("radius", "waypoints", "speed", "mode", "start", "velocity", "start_delay",
-                                      "phase", "known"), required=("radius",))
+                                      "phase", "known", "keyframes", "loop", "length"), required=("radius",))
             radius = self.length(item["radius"], join_key(ikey, "radius"), positive=True)
-            start_delay = self.duration(item.get("start_delay", 0.0), join_key(ikey, "start_delay"))
             phase = self.number(item.get("phase", 0.0), join_key(ikey, "phase"), limit="MAX_DURATION")
-            if item.get("waypoints") is not None:
-                for other in ("start", "velocity"):
-                    if item.get(other) is not None:
-                        self.fail(join_key(ikey, other), item[other], "give waypoints + speed or start + velocity, "
-                                                                   "not both")
-                points = self.points(item["waypoints"], join_key(ikey, "waypoints"), 2)
-                if item.get("speed") is None:
-                    self.fail(join_key(ikey, "speed"), None, "required with waypoints (m/s)")
-                speed = self.number(item["speed"], join_key(ikey, "speed"), low=0.0, low_open=True,
-                                    limit="MAX_SPEED")
-                mode = self.string(item.get("mode", "loop"), join_key(ikey, "mode"))
-                if mode not in MOVER_MODES:
-                    self.fail(join_key(ikey, "mode"), mode, f"expected one of {', '.join(MOVER_MODES)}")
-                mover = dict(radius=radius, waypoints=points, speed=speed, mode=mode)
+            if item.get("keyframes") is not None:
+                movers.append(self.keyframed(item, ikey, radius, phase))
             else:
-                for other in ("speed", "mode"):
+                for other in ("loop", "length"):
                     if item.get(other) is not None:
-                        self.fail(join_key(ikey, other), item[other], "applies with waypoints only")
-                if item.get("start") is None:
-                    self.fail(join_key(ikey, "start"), None, "required without waypoints (or give waypoints + speed)")
-                start = self.point(item["start"], join_key(ikey, "start"))
-                velocity = self.point(item.get("velocity", [0.0, 0.0]), join_key(ikey, "velocity"),
-                                      limit="MAX_SPEED")
-                mover = dict(radius=radius, start=start, velocity=velocity)
-            movers.append(self.core(ikey, item, lambda: MovingObstacle(start_delay=start_delay, phase=phase,
-                                                                         **mover)))
+                        self.fail(join_key(ikey, other), item[other], "applies with keyframes only")
+                start_delay = self.duration(item.get("start_delay", 0.0), join_key(ikey, "start_delay"))
+                mover = self.routed(item, ikey, radius)
+                movers.append(self.core(ikey, item, lambda: MovingObstacle(start_delay=start_delay, phase=phase,
+                                                                             **mover)))
             if item.get("known") is not None:
                 flag = self.boolean(item["known"], join_key(ikey, "known"))
                 if known is not None and flag != known:
@@ -216,6 +202,55 @@ class _Reader(MapReader, FeasibilityChecks):
                                                           f"({known_from} is {str(known).lower()})")
                 known, known_from = flag, join_key(ikey, "known")
         return movers, bool(known)
+
+    def routed(self, item: dict, key: str, radius: float) -> dict:
+        """A MovingObstacle's keywords: waypoints + speed + mode, or start + velocity."""
+        if item.get("waypoints") is not None:
+            for other in ("start", "velocity"):
+                if item.get(other) is not None:
+                    self.fail(join_key(key, other), item[other], "give waypoints + speed or start + velocity, "
+                                                                "not both")
+            points = self.points(item["waypoints"], join_key(key, "waypoints"), 2)
+            if item.get("speed") is None:
+                self.fail(join_key(key, "speed"), None, "required with waypoints (m/s)")
+            speed = self.number(item["speed"], join_key(key, "speed"), low=0.0, low_open=True, limit="MAX_SPEED")
+            mode = self.string(item.get("mode", "loop"), join_key(key, "mode"))
+            if mode not in MOVER_MODES:
+                self.fail(join_key(key, "mode"), mode, f"expected one of {', '.join(MOVER_MODES)}")
+            return dict(radius=radius, waypoints=points, speed=speed, mode=mode)
+        for other in ("speed", "mode"):
+            if item.get(other) is not None:
+                self.fail(join_key(key, other), item[other], "applies with waypoints only")
+        if item.get("start") is None:
+            self.fail(join_key(key, "start"), None, "required without waypoints (or give waypoints + speed, "
+                                                    "or keyframes)")
+        start = self.point(item["start"], join_key(key, "start"))
+        velocity = self.point(item.get("velocity", [0.0, 0.0]), join_key(key, "velocity"), limit="MAX_SPEED")
+        return dict(radius=radius, start=start, velocity=velocity)
+
+    def keyframed(self, item: dict, key: str, radius: float, phase: float) -> KeyframedMover:
+        """A mover given as timed keyframes [t, x, y], moved as Gazebo animates one."""
+        for other in ("waypoints", "speed", "mode", "start", "velocity", "start_delay"):
+            if item.get(other) is not None:
+                self.fail(join_key(key, other), item[other], "give keyframes or waypoints + speed or start + "
+                                                             "velocity, not two of them")
+        fkey = join_key(key, "keyframes")
+        frames = item["keyframes"]
+        if not isinstance(frames, (list, tuple)) or len(frames) < 2:
+            self.fail(fkey, frames, "expected a list of at least 2 [t, x, y] keyframes (s, m, m)")
+        self.count(frames, fkey)
+        rows = []
+        for i, frame in enumerate(frames):
+            ikey = join_key(fkey, i)
+            if not isinstance(frame, (list, tuple)) or len(frame) != 3:
+                self.fail(ikey, frame, "expected [t, x, y] (s, m, m)")
+            rows.append((self.duration(frame[0], join_key(ikey, 0)), *self.point(frame[1:], ikey)))
+        loop = self.boolean(item.get("loop", True), join_key(key, "loop"))
+        length = None
+        if item.get("length") is not None:
+            length = self.duration(item["length"], join_key(key, "length"), positive=True)
+        return self.core(key, item, lambda: KeyframedMover(radius, np.array(rows), loop=loop, length=length,
+                                                           phase=phase))
 
     def robot(self, value: Any) -> tuple:
         """(limits, footprint, outline): outline, the body the referee judges, is the footprint unless given."""

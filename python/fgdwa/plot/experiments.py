@@ -52,7 +52,7 @@ def paths_figure(result: ExperimentResult, path: Path, trial: int = 0, scenario=
     _, world, _ = trial_variation(scenario, first.seed)
     fig, ax = plt.subplots(figsize=(9, 6.5))
     world_entries = draw_world(ax, world, 0.0)
-    routes = [mover.route for mover in world.movers if mover.waypoints is not None]
+    routes = [mover.route for mover in world.movers if mover.route is not None]
     for k, route in enumerate(routes):
         ax.plot(*route.T, ":", color="tab:purple", linewidth=0.8, label="moving obstacles' routes" if k == 0 else None)
     reference = next((r for r in result.records if r.global_path is not None and r.trial == trial), None)
