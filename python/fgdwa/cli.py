@@ -222,6 +222,7 @@ def _existing(path: Path):
 
 def build_parser() -> argparse.ArgumentParser:
     from fgdwa.bench.barn import register_barn_commands
+    from fgdwa.bench.dynabarn import register_dynabarn_commands
     from fgdwa.bench.dynamic import register_dynamic_commands
     from fgdwa.bench.options import add_body_argument, add_executor_arguments, add_output_arguments, positive
     from fgdwa.bench.recordings import add_record_failures_argument
@@ -295,6 +296,7 @@ def build_parser() -> argparse.ArgumentParser:
     par.set_defaults(func=lambda args, argv: cmd_params())
     register_barn_commands(sub)
     register_dynamic_commands(sub)
+    register_dynabarn_commands(sub)
     return parser
 
 

@@ -85,8 +85,9 @@ def paths_followed(result) -> list:
 
 def summarize(runs: Sequence[Run], outcomes: Sequence[str] = OUTCOMES) -> dict:
     """Per planner, in order of first appearance: n, the rate of each outcome,
-    mean_time (s, successful runs; NaN when none), mean_score (all runs; when
-    the rows have a score) and the mean planning cycle (ms)."""
+    mean_time (s, successful runs; NaN when none), mean_score and
+    mean_time_score (all runs; when the rows have a score, a time_score) and the
+    mean planning cycle (ms)."""
     table = {}
     for planner in dict.fromkeys(run.row["planner"] for run in runs):
         rows = [run.row for run in runs if run.row["planner"] == planner]
@@ -97,8 +98,9 @@ def summarize(runs: Sequence[Run], outcomes: Sequence[str] = OUTCOMES) -> dict:
             **{outcome: sum(r["outcome"] == outcome for r in rows) / n for outcome in outcomes},
             "mean_time": float(np.mean(times)) if times else float("nan"),
         }
-        if all("score" in r for r in rows):
-            entry["mean_score"] = float(np.mean([r["score"] for r in rows]))
+        for key in ("score", "time_score"):
+            if all(key in r for r in rows):
+                entry[f"mean_{key}"] = float(np.mean([r[key] for r in rows]))
         for key in ("cycle_ms_mean", "sim_ms_mean"):
             if all(key in r for r in rows):
                 entry[key] = float(np.nanmean([r[key] for r in rows]))
@@ -109,15 +111,19 @@ def summarize(runs: Sequence[Run], outcomes: Sequence[str] = OUTCOMES) -> dict:
 def format_table(summary: dict, title: str, outcomes: Sequence[str] = OUTCOMES) -> str:
     """The terminal table of a :func:`summarize` summary: one line per planner."""
     scored = all("mean_score" in s for s in summary.values())
+    timed = all("mean_time_score" in s for s in summary.values())
     header = f"{'planner':<14} {'n':>5}" + "".join(f" {o:>9}" for o in outcomes) + f" {'mean time':>10}"
     simulated = all("sim_ms_mean" in s for s in summary.values())
-    header += f" {'mean score':>11}" * scored + f" {'cycle ms':>9}" + f" {'sim ms':>7}" * simulated
+    header += f" {'mean score':>11}" * scored + f" {'time score':>11}" * timed + f" {'cycle ms':>9}" \
+        + f" {'sim ms':>7}" * simulated
     lines = [title, header]
     for planner, s in summary.items():
         mean_time = "-" if math.isnan(s["mean_time"]) else f"{s['mean_time']:.1f} s"
         line = f"{planner:<14} {s['n']:>5}" + "".join(f" {s[o]:>9.3f}" for o in outcomes) + f" {mean_time:>10}"
         if scored:
             line += f" {s['mean_score']:>11.3f}"
+        if timed:
+            line += f" {s['mean_time_score']:>11.3f}"
         line += f" {s['cycle_ms_mean']:>9.2f}"
         if simulated:
             line += f" {s['sim_ms_mean']:>7.2f}"
