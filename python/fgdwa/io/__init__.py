@@ -3,7 +3,7 @@
 built in code (``builtin``; the YAML ones ship in ``fgdwa/scenarios``), the BARN
 challenge's worlds (``barn_data`` loads barn.npz, ``barn_convert`` makes it),
 DynaBARN-style fields of moving discs written as scenario documents
-(``dynamic_fields``) and ROS 1 bags (``rosbag_reader``). Every reader holds
+(``dynamic_fields``), the DynaBARN worlds' data files (``dynabarn_data``) and ROS 1 bags (``rosbag_reader``). Every reader holds
 its input to the limits of :mod:`fgdwa.file_limits`; data sets themselves are
 never part of the package (docs/barn.md).
 """
@@ -19,6 +19,7 @@ from fgdwa.io.barn_data import (
     load_barn,
     parse_world_selection,
 )
+from fgdwa.io.dynabarn_data import DynabarnDataset, DynabarnWorld, find_dynabarn_file, load_dynabarn
 from fgdwa.io.dynamic_fields import LEVELS, field_yaml, generate_field, write_field
 from fgdwa.io.rosbag_reader import read_bag, topics
 from fgdwa.io.scenario_file import load_scenario, scenario_from_dict, shipped_scenario_path, shipped_scenarios
@@ -27,6 +28,8 @@ __all__ = [
     "BARN_FIELD_SIZE",
     "BarnDataset",
     "BarnWorld",
+    "DynabarnDataset",
+    "DynabarnWorld",
     "LEVELS",
     "barn_score",
     "convert_barn_worlds",
@@ -34,8 +37,10 @@ __all__ = [
     "field_yaml",
     "fill_holes",
     "find_barn_file",
+    "find_dynabarn_file",
     "generate_field",
     "load_barn",
+    "load_dynabarn",
     "load_scenario",
     "parse_world_selection",
     "read_bag",

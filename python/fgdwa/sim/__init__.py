@@ -1,5 +1,6 @@
 """The simulator: the world's side of every control cycle. A world (``world``:
-the map, what it misses, moving discs, terrain), the robot's body between
+the map, what it misses, moving discs, terrain; ``keyframes``: discs moved as
+Gazebo animates them), the robot's body between
 command and ground (``body``: latency, actuation noise and lag, odometry), the
 episode loop that scans, steps the C++ navigator and moves everything
 (``episode``), the referee that judges collisions, falls and the metrics
@@ -22,6 +23,7 @@ from fgdwa.sim.episode import (
     run_episode,
     run_preset,
 )
+from fgdwa.sim.keyframes import KeyframedMover
 from fgdwa.sim.referee import (
     DANGER_MARGIN,
     TURN_RESOLUTION,
@@ -59,6 +61,7 @@ __all__ = [
     "EpisodeSummary",
     "MOVER_MODES",
     "Motion",
+    "KeyframedMover",
     "MovingObstacle",
     "NavigationContext",
     "OUTCOMES",
