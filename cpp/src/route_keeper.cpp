@@ -54,10 +54,32 @@ bool RouteKeeper::update(const Vec2& position, bool follow, WorldModel& world, c
   return true;
 }
 
-bool RouteKeeper::plan(const Vec2& from, WorldModel& world, const std::vector<Disc>& movers) {
+namespace {
+
+// `from` if it lies on the grid; otherwise the grid's nearest point `inset` in
+// from its edge (its centre on a grid narrower than twice that).
+Vec2 onto_grid(const OccupancyGrid& grid, const Vec2& from, double inset) {
+  int row, col;
+  if (grid.cell_of(from, row, col)) return from;
+  const Vec2 size(grid.cols() * grid.resolution(), grid.rows() * grid.resolution());
+  Vec2 entry;
+  for (int i = 0; i < 2; ++i) {
+    const double lo = grid.origin()[i] + inset, hi = grid.origin()[i] + size[i] - inset;
+    entry[i] = lo <= hi ? std::clamp(from[i], lo, hi) : grid.origin()[i] + 0.5 * size[i];
+  }
+  return entry;
+}
+
+}  // namespace
+
+bool RouteKeeper::plan(const Vec2& position, WorldModel& world, const std::vector<Disc>& movers) {
   cycles_since_replan_ = 0;
   replan_now_ = false;
   const OccupancyGrid& base = world.map();
+  // A robot off the map (out of an open side, round a mover) is guided back:
+  // the path starts at the map's nearest point past the widest inflation, and
+  // the robot drives straight there first.
+  const Vec2 from = onto_grid(base, position, radii_.front() + base.resolution());
   const bool any_closed = std::any_of(closed_.begin(), closed_.end(), [](std::uint8_t c) { return c != 0; });
   const std::vector<detail::SweptDisc> sweeps = mover_sweeps(movers, params_);
   std::optional<OccupancyGrid> with_closed;
@@ -87,6 +109,7 @@ bool RouteKeeper::plan(const Vec2& from, WorldModel& world, const std::vector<Di
       continue;  // start or goal in a marked cell: no way from here on this map at this radius
     }
     if (found.status == GlobalStatus::Found) {
+      if (from != position) found.path.insert(found.path.begin(), position);
       adopt(GlobalPath(std::move(found.path)));
       return true;
     }

@@ -648,3 +648,25 @@ TEST(Navigator, ACorrectMapLeavesNoLivePoints) {
   for (int i = 0; i < 60; ++i) live += drive(nav, d, &scanner, rng, scan, 0.15).control.live_points;
   EXPECT_LE(live, 2u);
 }
+
+// A robot off its map (out of an open side, round a mover) is guided back: the
+// path starts where it stands and enters the map at its nearest point.
+TEST(Navigator, ARobotOffTheMapIsGuidedBackOntoItAndToTheGoal) {
+  const OccupancyGrid map = room(30, 60, {{10, 20, 10, 4}});  // 3 m x 6 m, a block in the middle
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{});
+  nav.set_goal(Vec2(5.0, 1.5));
+  Drive d{at(-2.0, 4.5, 0.0)};  // 2 m left of the map and 1.5 m above it
+  std::mt19937_64 rng(0);
+  Scan scan;
+  const CycleRecord& first = drive(nav, d, nullptr, rng, scan, 0.15);
+  ASSERT_TRUE(nav.path());
+  const std::vector<Vec2>& points = nav.path()->points();
+  EXPECT_NEAR((points.front() - Vec2(-2.0, 4.5)).norm(), 0.0, 1e-9);
+  int row, col;
+  EXPECT_TRUE(map.cell_of(points[1], row, col)) << "enters the map at (" << points[1].x() << ", " << points[1].y() << ")";
+  EXPECT_NE(first.mode, NavigatorMode::Failed);
+  bool arrived = false;
+  for (int i = 0; i < 400 && !arrived; ++i)
+    arrived = drive(nav, d, nullptr, rng, scan, 0.15).mode == NavigatorMode::GoalReached;
+  EXPECT_TRUE(arrived) << "ended at (" << d.state.pose.x << ", " << d.state.pose.y << ")";
+}

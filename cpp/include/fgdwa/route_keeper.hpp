@@ -45,8 +45,9 @@ class RouteKeeper {
   int version() const { return version_; }
 
  private:
-  // A* on the map with the given-up cells and the movers' sweeps closed, over the radius ladder; true if found.
-  bool plan(const Vec2& from, WorldModel& world, const std::vector<Disc>& movers);
+  // A* on the map with the given-up cells and the movers' sweeps closed, over
+  // the radius ladder; true if found. Off the map, from its nearest point.
+  bool plan(const Vec2& position, WorldModel& world, const std::vector<Disc>& movers);
   bool ahead_blocked(const Vec2& position, WorldModel& world, const std::vector<Disc>& movers);
 
   Footprint footprint_;
