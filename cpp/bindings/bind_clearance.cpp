@@ -59,7 +59,8 @@ void init_clearance(py::module_& m) {
              return std::make_shared<FieldClearance>(std::move(field), std::move(discs));
            }),
            py::arg("field") = nullptr, py::arg("discs") = std::vector<Disc>{})
-      .def_property("discs", &FieldClearance::discs, &FieldClearance::set_discs)
+      // A copy: a view into the vector would dangle once the discs are replaced.
+      .def_property("discs", [](const FieldClearance& f) { return f.discs(); }, &FieldClearance::set_discs)
       .def_property_readonly("field", [](const FieldClearance& f) { return std::const_pointer_cast<DistanceField>(f.field()); })
       .def_property(
           "sensed", [](const FieldClearance& f) { return std::const_pointer_cast<DistanceField>(f.sensed()); },

@@ -23,7 +23,8 @@ void init_collision(py::module_& m) {
              return world;
            }),
            py::arg("grid") = nullptr, py::arg("discs") = std::vector<Disc>{})
-      .def_property("discs", &CollisionWorld::discs, &CollisionWorld::set_discs)
+      // A copy: a view into the vector would dangle once the discs are replaced.
+      .def_property("discs", [](const CollisionWorld& w) { return w.discs(); }, &CollisionWorld::set_discs)
       .def_property_readonly(
           "boxes",
           [](const CollisionWorld& w) {

@@ -50,3 +50,16 @@ def test_moving_disc_distance():
     assert world.in_collision(footprint, (0.0, 0.0, 0.0), 3.1)
     fast = fgdwa.FieldClearance(None, [disc])
     assert fast.clearance(footprint, (0.0, 0.0, 0.0), 2.0) == pytest.approx(0.5, abs=1e-12)
+
+
+def test_discs_read_back_are_copies_that_outlive_a_replacement():
+    # A disc read from a world must stay valid after the world's discs are replaced
+    # (or a controller's next step replaces them): views into the vector would dangle.
+    import fgdwa
+
+    for world in (fgdwa.FieldClearance(None, [fgdwa.Disc((1.0, 1.0), 0.3)] * 2000),
+                  fgdwa.CollisionWorld(None, [fgdwa.Disc((1.0, 1.0), 0.3)] * 2000)):
+        kept = world.discs[1000]
+        world.discs = []
+        world.discs = [fgdwa.Disc((5.0, 5.0), 0.1)] * 3000
+        assert tuple(kept.center) == (1.0, 1.0) and kept.radius == 0.3
