@@ -84,6 +84,11 @@ class PythonCritic : public Critic {
     }
     const py::object scores = instance_.attr("score_batch")(poses, commands, clearance);
     // NaN is a veto, so the scores are not checked for finiteness here (the planner does).
+    // Real numbers only: a cast would drop an imaginary part or turn objects into noise.
+    const py::array given = py::array::ensure(scores);
+    if (given && std::string("biuf").find(given.dtype().kind()) == std::string::npos)
+      throw Error("critic '" + name_ + "': score_batch returned scores of dtype " +
+                  std::string(py::str(given.dtype())) + ": expected real numbers");
     const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(scores);
     if (!values || values.ndim() != 1)
       throw Error("critic '" + name_ + "': score_batch must return a 1-d array of numbers");
@@ -159,8 +164,8 @@ void init_critics(py::module_& m) {
       "register_python_critic",
       [](const std::string& name, py::object cls) {
         if (!PyCallable_Check(cls.ptr())) throw Error("register_critic: critic '" + name + "' is not callable");
-        if (!py::hasattr(cls, "score_batch"))
-          throw Error("register_critic: critic '" + name + "' has no score_batch(poses, commands, min_clearance)");
+        if (!py::hasattr(cls, "score_batch") || !PyCallable_Check(py::getattr(cls, "score_batch").ptr()))
+          throw Error("register_critic: critic '" + name + "' has no callable score_batch(poses, commands, min_clearance)");
         // Held for the life of the process: the registry outlives the interpreter's objects.
         PyObject* held = cls.inc_ref().ptr();
         register_critic(name, [name, held](std::map<std::string, double>& params,

@@ -82,6 +82,13 @@ void PlannerParams::check_relations(const ParamPath& path) const {
                    detail::format_number(dt) + " (s)");
   if (n_steps() < 1)
     fail_param(path.field("sim_time"), detail::format_number(sim_time), "must be at least one dt (s)");
+  const double poses = static_cast<double>(window.n_v) * window.n_omega * n_steps();
+  if (poses > static_cast<double>(limits::kMaxRolloutPoses))
+    fail_param(path.field("sim_time"), detail::format_number(sim_time),
+               "with dt = " + detail::format_number(dt) + " s and " + std::to_string(window.n_v) + " x " +
+                   std::to_string(window.n_omega) + " samples, a cycle rolls out " + detail::format_number(poses) +
+                   " poses, more than " + std::to_string(limits::kMaxRolloutPoses) +
+                   ": fewer samples, a longer dt or a shorter sim_time");
   if (critics.empty()) throw Error(path.field("critics") + ": at least one critic is needed");
   for (std::size_t i = 0; i < critics.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
@@ -713,6 +720,16 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
   for (const std::size_t i : admissible_index_) {
     double total = 0.0;
     for (std::size_t j = 0; j < m; ++j) total += signed_weights[j] * result_.normalized(i, j);
+    if (!std::isfinite(total)) {
+      // Finite scores whose weighted sum is not: a choice made on inf is no choice.
+      std::size_t worst = 0;
+      for (std::size_t j = 1; j < m; ++j)
+        if (!(std::abs(result_.normalized(i, j)) <= std::abs(result_.normalized(i, worst)))) worst = j;
+      throw Error("critic '" + result_.critic_names[worst] + "': its score " +
+                  detail::format_number(result_.raw(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(worst))) +
+                  " (weighted " + detail::format_number(signed_weights[worst]) +
+                  ") makes a sample's total overflow: scale the scores down or normalise them");
+    }
     result_.total(static_cast<Eigen::Index>(i)) = total;
     if (total > best) {  // strict: ties keep the first sample, deterministically
       best = total;

@@ -286,3 +286,29 @@ def test_numbers_in_python_containers():
         fgdwa.PlannerParams(critics=[("clearance", 1.0, {"cap": False})])
     with pytest.raises(fgdwa.FgdwaError, match="too large for a float"):
         fgdwa.PlannerParams(critics=[("heading", 10**400)])
+
+
+def test_a_cycle_of_more_rollout_poses_than_the_cap_is_refused_before_any_allocation():
+    # 1000 x 1000 samples x 100 000 steps would end in bad_alloc inside plan().
+    with raises(r"planner\.sim_time = 10: with dt = 1e-04 s and 1000 x 1000 samples, a cycle rolls out 1e\+11 "
+                r"poses, more than 10000000"):
+        fgdwa.PlannerParams(window={"n_v": 1000, "n_omega": 1000}, dt=1e-4, sim_time=10)
+    fgdwa.PlannerParams(window={"n_v": 100, "n_omega": 100}, dt=0.01, sim_time=10)  # 1e7 poses: at the cap
+
+
+def test_an_episode_with_no_global_method_names_the_methods():
+    from fgdwa.io.builtin import demo_scenario
+    from fgdwa.sim.episode import run_preset
+
+    scenario = demo_scenario()
+    with raises(r"method = None: expected one of \['astar', 'ompl:"):
+        run_preset(scenario.world, scenario.start, scenario.goal, global_method=None, max_steps=3)
+
+
+def test_max_steps_true_is_not_one_step():
+    from fgdwa.io.builtin import demo_scenario
+    from fgdwa.sim.episode import run_episode
+
+    scenario = demo_scenario()
+    with raises(r"max_steps = True: must be an integer >= 1"):
+        run_episode(scenario.world, scenario.start, scenario.goal, max_steps=True)

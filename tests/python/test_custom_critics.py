@@ -47,3 +47,39 @@ def test_a_python_critic_scores_vetoes_and_steers():
     with pytest.raises(FgdwaError, match="limt"):
         fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.25),
                            fgdwa.PlannerParams(critics=[("test_prefer_right", 1.0, {"limt": 1.0})]))
+
+
+class Constant:
+    """Scores every rollout `value` (any object numpy takes)."""
+
+    value = 0.0
+
+    def __init__(self):
+        pass
+
+    def score_batch(self, poses, commands, min_clearance):
+        return np.full(len(poses), self.value)
+
+
+def _plan_with(name, value, normalization="sum", weight=1.0):
+    cls = type(name, (Constant,), {"value": value})
+    fgdwa.register_critic(name, cls)
+    params = fgdwa.PlannerParams(critics=[("velocity", 1.0), (name, weight)], normalization=normalization)
+    planner = fgdwa.LocalPlanner(fgdwa.RobotLimits(), fgdwa.Footprint.circle(0.25), params)
+    return planner.plan(fgdwa.RobotState((0.0, 0.0, 0.0), (0.5, 0.0)), (5.0, 0.0), fgdwa.FieldClearance())
+
+
+def test_scores_that_overflow_the_total_or_are_not_real_are_refused():
+    with pytest.raises(FgdwaError, match=r"critic 'test_huge'.*overflow"):
+        _plan_with("test_huge", 1e308, normalization="none", weight=10.0)  # 1e309: inf
+    with pytest.raises(FgdwaError, match=r"critic 'test_complex'.*dtype complex128.*real numbers"):
+        _plan_with("test_complex", 1 + 2j)
+    assert _plan_with("test_ints", 3).status == fgdwa.Status.Ok  # integers are numbers
+
+
+def test_a_score_batch_that_is_not_callable_is_refused_at_registration():
+    class NotCallable:
+        score_batch = 3
+
+    with pytest.raises(FgdwaError, match="callable score_batch"):
+        fgdwa.register_critic("test_not_callable", NotCallable)

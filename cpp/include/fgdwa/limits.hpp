@@ -33,6 +33,9 @@ inline constexpr long kMaxRolloutSteps = 100000;
 // Samples of the dynamic window per axis, and in all.
 inline constexpr long kMaxWindowSamplesPerAxis = 10000;
 inline constexpr long kMaxWindowSamples = 1000000;
+// Poses the planner rolls out in one cycle: window samples x rollout steps
+// (about 240 MB of rollouts at the cap).
+inline constexpr long kMaxRolloutPoses = 10000000;
 // m per cell of any grid.
 inline constexpr double kMinResolution = 1e-4;
 inline constexpr double kMaxResolution = 1e3;

@@ -44,7 +44,7 @@ from fgdwa._core import (
     planner_preset,
     unicycle_step,
 )
-from fgdwa.global_planning import plan_global
+from fgdwa.global_planning import method_params, plan_global
 from fgdwa.mapping import check_mapping
 from fgdwa.sim.body import DEFAULT_BODY, Body, body_settings, check_seed
 from fgdwa.sim.referee import (DANGER_MARGIN, Contact, collides_during_step, collision_contact,
@@ -297,7 +297,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     navigator_params = navigator if navigator is not None else NavigatorParams()
     start_pose = _as_pose(start, "start")
     goal_point = _as_point(goal, "goal")
-    if not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
+    if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
         raise FgdwaError(f"max_steps = {max_steps!r}: must be an integer >= 1")
     tolerance = params.goal_tolerance if goal_tolerance is None else float(goal_tolerance)
     if not np.isfinite(tolerance) or tolerance < 0:
@@ -533,6 +533,7 @@ def _given_path(world: World, start, goal, footprint: Footprint, robot: Navigato
                 options: Optional[dict]) -> Optional[GlobalPath]:
     """The path the navigator is handed instead of planning its own: ``given``,
     or one planned here when the method or options are not the navigator's A*."""
+    method_params(method)  # an unknown method is refused by name, given path or not
     if given is not None:
         return given if isinstance(given, GlobalPath) else GlobalPath(np.asarray(given, dtype=float))
     if not robot.planner.needs_path or (method == "astar" and not options):
