@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import importlib.metadata
+import os
 import shlex
 import sys
 import time
@@ -66,15 +67,47 @@ def cmd_inspect(args: argparse.Namespace) -> int:
     return open_recording(args.recording, web=args.web, web_port=args.web_port)
 
 
+def file_stem(name: str) -> str:
+    """A scenario's name as a file name inside the output directory: letters,
+    digits, '.', '-' and '_' only, no leading dot, at most 100 characters."""
+    stem = "".join(c if c.isascii() and (c.isalnum() or c in "._-") else "_" for c in name).lstrip(".")
+    return stem[:100] or "scenario"
+
+
+def output_file(path: str, suffix: str, option: str) -> Path:
+    """``path`` checked before a run that ends by writing it: the suffix its
+    format needs, and a directory that can be made and written."""
+    out = Path(path)
+    if out.suffix.lower() != suffix:
+        raise FgdwaError(f"{option} {path}: the file is written as {suffix[1:].upper()}: name it *{suffix}")
+    try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise FgdwaError(f"{option} {path}: cannot make its directory ({error.strerror})") from None
+    if not os.access(out.parent, os.W_OK) or (out.exists() and not os.access(out, os.W_OK)):
+        raise FgdwaError(f"{option} {path}: not writable")
+    return out
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from fgdwa.bench.experiments import resolve_scenario
     from fgdwa.plot.episode import plot_episode
-    from fgdwa.sim import run_scenario, trial_variation
+    from fgdwa.sim import check_seed, run_scenario, trial_variation
 
     if args.record:
         from fgdwa.plot.recording import require_rerun
 
         require_rerun()  # before the run, not after it
+    # Every output is checked before the run, not after it.
+    check_seed(args.seed)
+    if args.gif:
+        output_file(args.gif, ".gif", "--gif")
+    if args.record:
+        output_file(args.record, ".rrd", "--record")
+    try:
+        Path(args.out).mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise FgdwaError(f"--out {args.out}: cannot make the directory ({error.strerror})") from None
     scenario = resolve_scenario(args.scenario)
     planner = args.planner or scenario.planner
     options = {"max_steps": args.max_steps} if args.max_steps is not None else {}
@@ -98,7 +131,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     print(f"  episode wall     {wall:.2f} s")
     out = Path(args.out)
     _, world, _ = trial_variation(scenario, args.seed)
-    png = out / f"{scenario.name}_{planner}.png"
+    png = out / f"{file_stem(scenario.name)}_{planner}.png"
     summary = result.summary
     plot_episode(result, world, scenario.goal, png, title=f"{scenario.name}, {planner}, seed {args.seed}: "
                  f"{summary.outcome}, {summary.steps} steps, {summary.mileage:.2f} m",

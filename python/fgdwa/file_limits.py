@@ -60,7 +60,6 @@ MAX_ACCELERATION = 1e4  # m/s^2 and rad/s^2
 MAX_MAGNITUDE = 1e6  # |value| of any other number (a critic's parameter, a phase in degrees, ...)
 MAX_BEAMS = 100_000  # lidar beams per scan
 MAX_STEPS = 100_000  # control cycles of one episode (max_steps)
-MAX_ROLLOUT_POSES = 10**7  # per control cycle: velocity samples x poses per rollout
 MAX_COUNT = 100_000  # items of any list a file gives (moving obstacles, waypoints, rectangles, ...)
 
 

@@ -62,6 +62,7 @@ MIN_DT, MAX_DT = 1e-4, 10.0
 MAX_HORIZON = 3600.0
 MAX_ROLLOUT_STEPS = 100_000
 MAX_SAMPLES_PER_AXIS, MAX_SAMPLES = 10_000, 1_000_000
+MAX_ROLLOUT_POSES = 10_000_000  # kMaxRolloutPoses: window samples x rollout steps a cycle
 MIN_RES, MAX_RES = 1e-4, 1e3
 MAX_LENGTH = 1e6
 MAX_FOOTPRINT = 100.0
@@ -1248,7 +1249,7 @@ def occupancy_valid(k):
     fin = all(math.isfinite(k[n]) for n in ("hit", "miss", "clamp_min", "clamp_max", "occupied", "free", "range_std"))
     log_odds_ok = all(abs(k[n]) <= 1e3 for n in ("hit", "miss", "clamp_min", "clamp_max"))  # kept as float32
     return (fin and log_odds_ok and k["hit"] > 0 and k["miss"] < 0 and k["clamp_min"] <= k["free"] < k["occupied"] <= k["clamp_max"]
-            and k["hit"] >= k["occupied"] and k["range_std"] >= 0 and 0 < k["hit_share"] <= 1
+            and k["hit"] >= k["occupied"] and 0 <= k["range_std"] <= MAX_LENGTH and 0 < k["hit_share"] <= 1
             and (k["clear_range"] == math.inf or CLEAR_RANGE["min"] <= k["clear_range"] <= CLEAR_RANGE["max"]))
 
 
@@ -1509,7 +1510,8 @@ def params_valid(k):
         return False
     n_v, n_omega = k["window.n_v"], k["window.n_omega"]
     return (1 <= n_v <= MAX_SAMPLES_PER_AXIS and 1 <= n_omega <= MAX_SAMPLES_PER_AXIS
-            and n_v * n_omega <= MAX_SAMPLES and within(k["goal_tolerance"], 0.0, MAX_LENGTH)
+            and n_v * n_omega <= MAX_SAMPLES and n_v * n_omega * math.floor(sim / dt + 0.5) <= MAX_ROLLOUT_POSES
+            and within(k["goal_tolerance"], 0.0, MAX_LENGTH)
             and within(k["safety_margin"], 0.0, MAX_LENGTH) and within(k["moving_horizon"], 0.0, MAX_HORIZON)
             and within(k["mover_caution_radius"], 0.0, MAX_LENGTH) and within(k["mover_speed_weight"], 0.0, 1.0)
             and within(k["key_nodes.min_turn"], 0.0, math.pi) and k["key_nodes.min_turn"] < math.pi

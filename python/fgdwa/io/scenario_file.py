@@ -318,8 +318,8 @@ class _Reader(MapReader, FeasibilityChecks):
         base = planner_preset(preset).params
         okey = join_key(key, "overrides")
         overrides = self.param_fields(PlannerParams, value.get("overrides") or {}, okey)
-        params = self.core(okey, value.get("overrides"), lambda: params_with(base, **overrides))
-        self.rollouts(params, okey, value.get("overrides"))
+        # The core refuses a cycle of more rollout poses than it allows, naming the numbers.
+        self.core(okey, value.get("overrides"), lambda: params_with(base, **overrides))
         return preset, overrides
 
     def global_planner(self, value: Any) -> tuple:

@@ -259,14 +259,3 @@ class ValueReader:
             self.core(ikey, value[name], lambda: probe.set(field, item))
             out[field] = probe.get(field) if entry["type"] != "critics" else item
         return out
-
-    def rollouts(self, params, key: str, value: Any) -> None:
-        """Refuses planner parameters whose rollouts would hold more than
-        MAX_ROLLOUT_POSES poses a cycle."""
-        n_v, n_omega = params.window.n_v, params.window.n_omega
-        steps = params.sim_time / params.dt
-        poses = n_v * n_omega * (steps + 1)
-        if not poses <= limits.MAX_ROLLOUT_POSES:
-            self.fail(key, value, f"n_v x n_omega x (sim_time / dt + 1) = {n_v} x {n_omega} x "
-                                  f"({params.sim_time:g} / {params.dt:g} + 1) = {poses:.3g} poses a control "
-                                  f"cycle, over {limits.MAX_ROLLOUT_POSES} (fgdwa.file_limits.MAX_ROLLOUT_POSES)")

@@ -15,9 +15,11 @@ import dataclasses
 import math
 from collections import deque
 from dataclasses import dataclass
+
 import numpy as np
 
 from fgdwa._core import FgdwaError, Twist, unicycle_step, wrap_angle
+from fgdwa.file_limits import MAX_STEPS
 
 ACTUATION_STREAM = 1  # the second word of the actuators' generator seed: (seed, ACTUATION_STREAM)
 ODOMETRY_STREAM = 2
@@ -33,10 +35,15 @@ def _non_negative_pair(value, name: str, units: str) -> np.ndarray:
     return pair
 
 
+SCAN_SEED_STRIDE = 1_000_003  # the lidar's seed in cycle k of a run with `seed`: seed * stride + k
+# The largest episode seed: the lidar's seed in its last cycle must fit the scanner's 64 bits.
+MAX_SEED = (2**64 - 1 - MAX_STEPS) // SCAN_SEED_STRIDE
+
+
 def check_seed(seed) -> int:
-    """The episode's seed as a Python int; it must be an integer >= 0."""
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-        raise FgdwaError(f"seed = {seed!r}: must be an integer >= 0")
+    """The episode's seed as a Python int: an integer in [0, MAX_SEED]."""
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= seed <= MAX_SEED:
+        raise FgdwaError(f"seed = {seed!r}: must be an integer in [0, {MAX_SEED}]")
     return int(seed)
 
 

@@ -46,13 +46,12 @@ from fgdwa._core import (
 )
 from fgdwa.global_planning import method_params, plan_global
 from fgdwa.mapping import check_mapping
-from fgdwa.sim.body import DEFAULT_BODY, Body, body_settings, check_seed
+from fgdwa.sim.body import DEFAULT_BODY, SCAN_SEED_STRIDE, Body, body_settings, check_seed
 from fgdwa.sim.referee import (DANGER_MARGIN, Contact, collides_during_step, collision_contact,
                                danger_point_clearance, danger_points, falls, path_length, smoothness)
 from fgdwa.sim.world import World
 
 OUTCOMES = ("success", "collision", "fall", "failed", "timeout")
-SCAN_SEED_STRIDE = 1_000_003  # the lidar's seed in cycle k of a run with `seed`: seed * stride + k
 
 
 @dataclass

@@ -25,6 +25,7 @@ from fgdwa._core import (
     RobotLimits,
     planner_preset,
 )
+from fgdwa.sim.body import check_seed
 from fgdwa.sim.episode import EpisodeResult, run_episode
 from fgdwa.sim.world import World
 
@@ -115,7 +116,7 @@ def scenario_params(scenario: Scenario, planner=None) -> tuple:
 
 def trial_variation(scenario: Scenario, seed: int) -> tuple:
     """(start pose, world, lidar) of one trial: the seed's draws applied to the scenario."""
-    rng = np.random.default_rng(int(seed))
+    rng = np.random.default_rng(check_seed(seed))
     v = scenario.variability
     start = np.asarray(scenario.start, dtype=float) + np.array(
         [rng.normal(0, v.start_xy_std), rng.normal(0, v.start_xy_std), rng.normal(0, v.start_theta_std)])
