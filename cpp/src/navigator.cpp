@@ -80,6 +80,8 @@ const CycleRecord& Navigator::step(const RobotState& odometry, const Scan* scan,
   if (!has_goal_) throw Error("step() before set_goal(): the navigator has no goal");
   detail::require_finite_state(odometry);
   detail::require_finite("time", time);
+  if (time < last_time_)
+    throw Error(detail::describe("time", time, "must not be before the last step's " + detail::format_number(last_time_) + " s"));
   if (scan) frame_.assign(*scan, lidar_.beams);
   const ScanFrame* frame = scan ? &frame_ : nullptr;
   for (const Disc& d : discs) d.validate();
@@ -103,7 +105,7 @@ const CycleRecord& Navigator::step(const RobotState& odometry, const Scan* scan,
   const int version_before = route_.version();
   // Read before the record takes this cycle: whether the last cycle's planner rejected every sample.
   const bool rejected_all = record_.planned && record_.control.status == Status::NoAdmissibleVelocity;
-  record_.time = time;
+  record_.time = last_time_ = time;
   record_.state = state;
   record_.planned = false;
 

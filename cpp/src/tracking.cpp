@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 
 #include "assignment.hpp"
@@ -260,6 +261,21 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time, const Sc
     relabel(track, memory);
   };
 
+  // Past max_clusters, the nearest to the scanner (association is cubic in
+  // the count); the others are left to the scan's points this update.
+  std::vector<std::size_t>& taken = taken_;
+  taken.resize(clusters.size());
+  std::iota(taken.begin(), taken.end(), std::size_t{0});
+  const auto limit = static_cast<std::size_t>(params_.max_clusters);
+  if (taken.size() > limit) {
+    const Vec2 from = scan ? Vec2(scan->pose.x, scan->pose.y) : Vec2::Zero();
+    std::nth_element(taken.begin(), taken.begin() + static_cast<std::ptrdiff_t>(limit), taken.end(),
+                     [&](std::size_t a, std::size_t b) {
+                       return (clusters[a].center - from).squaredNorm() < (clusters[b].center - from).squaredNorm();
+                     });
+    taken.resize(limit);
+    std::sort(taken.begin(), taken.end());
+  }
   // Confirmed and lost tracks choose first, so a tentative track born of a
   // stray cluster cannot take a known object's cluster.
   cluster_tracks_.assign(clusters.size(), -1);
@@ -268,7 +284,7 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time, const Sc
     std::vector<std::size_t> rows, cols;
     for (std::size_t t = 0; t < tracks_.size(); ++t)
       if ((tracks_[t].status == TrackStatus::Tentative) == tentative) rows.push_back(t);
-    for (std::size_t c = 0; c < clusters.size(); ++c)
+    for (const std::size_t c : taken)
       if (cluster_tracks_[c] < 0) cols.push_back(c);
     if (rows.empty() || cols.empty()) continue;
     Eigen::MatrixXd cost(rows.size(), cols.size());
@@ -297,8 +313,9 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time, const Sc
     }
   }
 
-  for (std::size_t c = 0; c < clusters.size(); ++c) {
+  for (const std::size_t c : taken) {
     if (cluster_tracks_[c] >= 0) continue;
+    if (tracks_.size() >= 2 * limit) break;  // a scene of clutter: no more tentative tracks this update
     Track t;
     t.id = next_id_++;
     t.position = clusters[c].center;

@@ -2242,6 +2242,7 @@ class TrackerParams:
       max_speed (m/s): an association implying more speed is rejected
       uncertainty_sigmas: std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead
       max_uncertainty (m): the most the position's uncertainty adds to a disc (a coasting track's grows)
+      max_clusters: clusters an update tracks, the nearest to the scanner first (association costs the cube of the count); the rest stay the scan's points, and new tracks stop at twice this
     """
     __hash__: typing.ClassVar[None] = None
     name: typing.ClassVar[str] = 'tracker'
@@ -2251,6 +2252,7 @@ class TrackerParams:
     gate: typing.Any
     gate_sigmas: typing.Any
     lost_time: typing.Any
+    max_clusters: typing.Any
     max_speed: typing.Any
     max_uncertainty: typing.Any
     measurement_std: typing.Any

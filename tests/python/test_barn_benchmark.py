@@ -259,3 +259,14 @@ def test_failed_runs_are_named_and_recorded(barn_file, tmp_path, capsys):
     assert failed == {"world": 0, "planner": "fgdwa", "trial": 0, "outcome": "collision", "reason": row["reason"],
                       "recording": str(path)}
     assert len(read_recording(path, "/world/robot/true")) == int(round(float(row["time"]) / 0.1))
+
+
+def test_a_navigator_step_back_in_time_is_refused_whatever_it_tracks():
+    truth = _wall_world()
+    scanner = fgdwa.LaserScanner(fgdwa.LidarParams(), fgdwa.DistanceField(truth))
+    navigator = _navigator(truth, track_moving=False)
+    state = fgdwa.RobotState((0.5, 1.0, 0.0), (0.0, 0.0))
+    navigator.step(state, scanner.scan((0.5, 1.0, 0.0), [], 0.0), 10.0)
+    navigator.step(state, scanner.scan((0.5, 1.0, 0.0), [], 0.0), 10.0)  # the same time again: a repeat
+    with pytest.raises(fgdwa.FgdwaError, match=r"time = -1e\+300: must not be before the last step's 10 s"):
+        navigator.step(state, scanner.scan((0.5, 1.0, 0.0), [], 0.0), -1e300)

@@ -62,3 +62,20 @@ def test_bad_input_raises_naming_the_problem():
         tracker.update([], math.nan)
     with pytest.raises(fgdwa.FgdwaError, match="center"):
         fgdwa.Cluster((math.nan, 0.0))
+
+
+def test_a_scan_of_many_clusters_tracks_the_nearest_and_bounds_the_work():
+    # 1000 clusters: the association would cost the cube of the count; the
+    # nearest max_clusters are tracked, the rest left untracked this update.
+    params = fgdwa.TrackerParams(max_clusters=50)
+    tracker = fgdwa.Tracker(params)
+    angles = np.linspace(0, 2 * np.pi, 1000, endpoint=False)
+    radii = 1.0 + np.arange(1000) * 0.01
+    clusters = [fgdwa.Cluster((r * np.cos(a), r * np.sin(a)), 0.05) for r, a in zip(radii, angles)]
+    for k in range(5):
+        tracker.update(clusters, 0.1 * k)
+    ids = np.asarray(tracker.cluster_tracks)
+    assert (ids[:50] >= 0).all() and (ids[50:] < 0).all()
+    assert len(tracker.tracks) <= 100
+    with pytest.raises(fgdwa.FgdwaError, match="max_clusters"):
+        fgdwa.TrackerParams(max_clusters=0)

@@ -16,6 +16,7 @@
 // period with the robot's state and its scan; a new set_goal() starts over
 // (the map built so far is kept).
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -129,6 +130,7 @@ class Navigator {
   RouteKeeper route_;
   Recovery recovery_;
   bool has_goal_ = false;
+  double last_time_ = -std::numeric_limits<double>::infinity();  // s, the last step's: time runs forward
   Vec2 goal_ = Vec2::Zero();
   int controller_path_version_ = 0;  // the route's path version the controller follows
   ScanFrame frame_;

@@ -112,6 +112,7 @@ struct TrackerParams {
   double max_speed = 3.0;
   double uncertainty_sigmas = 2.0;
   double max_uncertainty = 0.3;
+  int max_clusters = 200;
 
   static constexpr const char* kName = "tracker";
   template <class V>
@@ -133,6 +134,7 @@ struct TrackerParams {
     v.real("max_speed", &P::max_speed, "m/s", Bounds::positive(kMaxSpeed), "an association implying more speed is rejected");
     v.real("uncertainty_sigmas", &P::uncertainty_sigmas, "", Bounds::at_least(0, 1e3), "std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead");
     v.real("max_uncertainty", &P::max_uncertainty, "m", Bounds::at_least(0), "the most the position's uncertainty adds to a disc (a coasting track's grows)");
+    v.integer("max_clusters", &P::max_clusters, "", Bounds::closed(1, 10000), "clusters an update tracks, the nearest to the scanner first (association costs the cube of the count); the rest stay the scan's points, and new tracks stop at twice this");
   }
   void validate() const { validate_params(*this); }
 };
@@ -233,6 +235,7 @@ class Tracker {
   std::deque<std::pair<double, Scan>> scans_;  // (s, scan) within moving_window
   bool has_scans_ = false;                      // scans were given: the moving label needs free-space evidence
   std::vector<int> cluster_tracks_;
+  std::vector<std::size_t> taken_;  // scratch: the clusters an update tracks
   double time_;
   int next_id_ = 0;
 };
