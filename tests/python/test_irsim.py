@@ -374,3 +374,16 @@ def test_the_command_line_runs_a_world(capsys):
     assert code == 1  # 20 steps do not reach the goals
     assert "robot_0" in out and "running" in out and "fgdwa" in out
     assert main(["irsim", "no/such/world.yaml"]) == 2
+
+
+def test_a_resolution_too_fine_for_the_world_is_refused_before_any_allocation():
+    from types import SimpleNamespace
+
+    from fgdwa import FgdwaError
+    from fgdwa.adapters.irsim import MAX_SCAN_CELLS, scan_layout
+
+    robot = SimpleNamespace(state=np.array([[1.0], [1.0], [0.0]]))
+    with pytest.raises(FgdwaError, match=rf"resolution = 0\.0001: .* more than {MAX_SCAN_CELLS}: give"):
+        scan_layout(robot, [(9.0, 9.0)], 0.0001)
+    grid = scan_layout(robot, [(9.0, 9.0)], None)
+    assert grid.rows * grid.cols <= MAX_SCAN_CELLS

@@ -326,7 +326,7 @@ def _world_rect(robot) -> Optional[tuple]:
 def scan_layout(robot, goals: Sequence, resolution: Optional[float]) -> OccupancyGrid:
     """An empty map to build from scans: the world, the robot and its goals, with a
     margin; cells of ``resolution``, by default DEFAULT_RESOLUTION unless that
-    takes more than MAX_SCAN_CELLS."""
+    takes more than MAX_SCAN_CELLS; a given resolution that takes more is refused."""
     points = [np.asarray(robot.state, dtype=float).reshape(-1)[:2]] + [np.asarray(g, dtype=float)[:2]
                                                                         for g in goals]
     low, high = np.min(points, axis=0), np.max(points, axis=0)
@@ -334,8 +334,14 @@ def scan_layout(robot, goals: Sequence, resolution: Optional[float]) -> Occupanc
     if rect is not None:
         low, high = np.minimum(low, rect[:2]), np.maximum(high, rect[2:])
     low, high = low - MAP_MARGIN, high + MAP_MARGIN
+    coarsest = math.sqrt(float(np.prod(high - low)) / MAX_SCAN_CELLS)
     if resolution is None:
-        resolution = max(DEFAULT_RESOLUTION, math.sqrt(float(np.prod(high - low)) / MAX_SCAN_CELLS))
+        resolution = max(DEFAULT_RESOLUTION, coarsest)
+    cells = float(np.prod(np.ceil((high - low) / resolution)))
+    if cells > MAX_SCAN_CELLS:
+        raise FgdwaError(f"resolution = {resolution:g}: the map of the world ({high[0] - low[0]:g} m x "
+                         f"{high[1] - low[1]:g} m with its margin) would take {cells:.3g} cells, more than "
+                         f"{MAX_SCAN_CELLS}: give {coarsest:.3g} m or more (or leave resolution out)")
     cols, rows = (int(v) for v in np.ceil((high - low) / resolution))
     return OccupancyGrid(np.zeros((rows, cols), dtype=np.uint8), resolution, (float(low[0]), float(low[1])))
 
