@@ -136,3 +136,35 @@ def test_replay_says_what_the_bag_lacks(tmp_path, capsys):
     assert main(["replay", str(bag), "--out", str(tmp_path / "replay")]) == 2
     err = capsys.readouterr().err
     assert "no fgdwa_node cycle diagnostics or navigator events" in err and "/fgdwa_node/events" in err
+
+
+def test_a_bz2_chunk_is_decompressed_no_further_than_its_declared_size():
+    import bz2
+    import struct
+
+    from fgdwa.io.rosbag_reader import _chunk_data
+
+    fields = {"compression": b"bz2", "size": struct.pack("<I", 100)}
+    assert _chunk_data(fields, bz2.compress(b"y" * 100), "b.bag") == b"y" * 100
+    bomb = bz2.compress(b"x" * 50_000_000)  # about 40 bytes that expand to 50 MB
+    with pytest.raises(FgdwaError, match="expands past its declared 100 bytes"):
+        _chunk_data(fields, bomb, "b.bag")
+    with pytest.raises(FgdwaError, match="does not decompress"):
+        _chunk_data(fields, b"BZh9not bz2 at all", "b.bag")
+    with pytest.raises(FgdwaError, match="4-byte 'size'"):
+        _chunk_data({"compression": b"bz2"}, bomb, "b.bag")
+
+
+def test_replay_of_a_bag_with_a_malformed_event_says_which_message(tmp_path, capsys):
+    probe = subprocess.run([ROS_PYTHON, "-c", "import rosbag"], capture_output=True, text=True) \
+        if Path(ROS_PYTHON).exists() else None
+    if probe is None or probe.returncode != 0:
+        pytest.skip("ROS's rosbag module is not importable by /usr/bin/python3 (make test installs it)")
+    path = tmp_path / "bad_event.bag"
+    writer = WRITER.replace('{"event": "goal", "goal": [10, 0]}', '{not json')
+    done = subprocess.run([ROS_PYTHON, "-c", writer, str(path), "none"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert main(["replay", str(path), "--out", str(tmp_path / "replay")]) == 2
+    err = capsys.readouterr().err
+    assert "a malformed std_msgs/String message on /fgdwa_node/events at 106.000 s (JSONDecodeError" in err, err
+    assert "Traceback" not in err

@@ -128,27 +128,39 @@ class Recording:
     topics: Dict[str, str] = field(default_factory=dict)  # topic -> type
 
 
+def _take(rec: Recording, msg, scan_topic: Optional[str], odom_topic: Optional[str]) -> None:
+    """One bag message into the recording."""
+    rec.topics.setdefault(msg.topic, msg.type)
+    if msg.type == "sensor_msgs/LaserScan" and scan_topic in (None, msg.topic):
+        scan = decode_laser_scan(msg.data)
+        rec.scans[scan.stamp] = scan
+    elif msg.type == "nav_msgs/Odometry" and odom_topic in (None, msg.topic):
+        odom = decode_odometry(msg.data)
+        rec.odometry[odom.stamp] = odom
+    elif msg.type == "geometry_msgs/Twist" and msg.topic.endswith("cmd_vel"):
+        rec.commands += 1
+    elif msg.type == "std_msgs/String" and msg.topic.endswith("/events"):
+        event = json.loads(decode_string(msg.data))
+        if not isinstance(event, dict):
+            raise TypeError(f"an event is a JSON object, not {type(event).__name__}")
+        if event.get("event") == "navigator":
+            rec.navigators[int(event["id"])] = event
+    elif msg.type == "diagnostic_msgs/DiagnosticArray":
+        for name, _message, values in decode_diagnostics(msg.data):
+            if name == CYCLE_STATUS:
+                rec.cycles.append(values)
+
+
 def read_recording(path, scan_topic: Optional[str] = None, odom_topic: Optional[str] = None) -> Recording:
     rec = Recording()
-    for msg in read_bag(path):
-        rec.topics.setdefault(msg.topic, msg.type)
-        if msg.type == "sensor_msgs/LaserScan" and scan_topic in (None, msg.topic):
-            scan = decode_laser_scan(msg.data)
-            rec.scans[scan.stamp] = scan
-        elif msg.type == "nav_msgs/Odometry" and odom_topic in (None, msg.topic):
-            odom = decode_odometry(msg.data)
-            rec.odometry[odom.stamp] = odom
-        elif msg.type == "geometry_msgs/Twist" and msg.topic.endswith("cmd_vel"):
-            rec.commands += 1
-        elif msg.type == "std_msgs/String" and msg.topic.endswith("/events"):
-            event = json.loads(decode_string(msg.data))
-            if event.get("event") == "navigator":
-                rec.navigators[int(event["id"])] = event
-        elif msg.type == "diagnostic_msgs/DiagnosticArray":
-            for name, _message, values in decode_diagnostics(msg.data):
-                if name == CYCLE_STATUS:
-                    rec.cycles.append(values)
     where = str(path)
+    for msg in read_bag(path):
+        try:
+            _take(rec, msg, scan_topic, odom_topic)
+        except (KeyError, TypeError, ValueError, OverflowError, UnicodeDecodeError) as error:
+            # A bag is outside data: what it holds wrong is said, not raised as a traceback.
+            raise FgdwaError(f"bag {where!r}: a malformed {msg.type} message on {msg.topic} at {msg.time:.3f} s "
+                             f"({type(error).__name__}: {error})") from None
     if not rec.cycles or not rec.navigators:
         raise FgdwaError(f"bag {where!r}: no fgdwa_node cycle diagnostics or navigator events (it has "
                          f"{', '.join(sorted(rec.topics)) or 'nothing'}); record /diagnostics and "
@@ -313,7 +325,12 @@ def parse_overrides(items: Sequence[str]) -> Dict[str, object]:
 def replay_command(args) -> int:
     """``fgdwa replay``: replay, print the table, write the outputs."""
     rec = read_recording(args.bag, scan_topic=args.scan_topic, odom_topic=args.odom_topic)
-    cycles = replay(rec, parse_overrides(args.set or []))
+    try:
+        cycles = replay(rec, parse_overrides(args.set or []))
+    except (KeyError, TypeError, ValueError, OverflowError) as error:
+        # The node's events and cycle diagnostics came from the bag: a field missing or of the wrong kind is the bag's.
+        raise FgdwaError(f"bag {str(args.bag)!r}: malformed fgdwa_node events or cycle diagnostics "
+                         f"({type(error).__name__}: {error})") from None
     print(f"bag {args.bag}: {len(rec.scans)} scans, {len(rec.odometry)} odometry messages, {rec.commands} cmd_vel, "
           f"{len(rec.cycles)} fgdwa_node cycles, {len(rec.navigators)} navigator(s)")
     print(format_table(cycles))

@@ -85,12 +85,28 @@ def _uint32(fields: Dict[str, bytes], name: str, where: str) -> int:
     return struct.unpack("<I", fields[name])[0]
 
 
+def _text(value: bytes, what: str, where: str) -> str:
+    try:
+        return value.decode("utf-8")
+    except UnicodeDecodeError:
+        raise FgdwaError(f"{where}: the {what} {value[:40]!r} is not UTF-8 text") from None
+
+
 def _chunk_data(fields: Dict[str, bytes], data: bytes, where: str) -> bytes:
     compression = fields.get("compression", b"none").decode("ascii", "replace")
     if compression == "none":
         return data
     if compression == "bz2":
-        return bz2.decompress(data)
+        # No further than the chunk says it holds: a small chunk may expand to gigabytes.
+        size = _uint32(fields, "size", where)
+        decompressor = bz2.BZ2Decompressor()
+        try:
+            out = decompressor.decompress(data, max_length=size)
+        except (OSError, EOFError) as error:
+            raise FgdwaError(f"{where}: a bz2 chunk that does not decompress ({error})") from None
+        if len(out) != size or not (decompressor.eof or decompressor.needs_input):
+            raise FgdwaError(f"{where}: a bz2 chunk that expands past its declared {size} bytes")
+        return out
     raise FgdwaError(f"{where}: chunks compressed with {compression!r}; fgdwa reads uncompressed and bz2 bags. "
                      f"Write an uncompressed copy with: rosbag decompress {where}")
 
@@ -110,8 +126,9 @@ def read_bag(path) -> Iterator[BagMessage]:
     def connection(fields, data):
         conn = _uint32(fields, "conn", where)
         info = _fields(data, where)
-        connections[conn] = Connection(conn, fields.get("topic", info.get("topic", b"")).decode(),
-                                       info.get("type", b"").decode(), info.get("md5sum", b"").decode())
+        connections[conn] = Connection(conn, _text(fields.get("topic", info.get("topic", b"")), "topic", where),
+                                       _text(info.get("type", b""), "type", where),
+                                       _text(info.get("md5sum", b""), "md5sum", where))
 
     for fields, data in _records(buffer, len(MAGIC), where):
         op = fields["op"][0]
