@@ -29,7 +29,7 @@ from fgdwa._core import (FgdwaError, LidarParams, NavigatorParams, OccupancyGrid
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments, check_sensing, planner_list)
 from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
-                                    failure_entries, print_failures, record_failures, run_outcomes)
+                                    failure_entries, print_failures, run_benchmark)
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.runs import (OUTCOMES, Run, episode_columns, format_table, paths_followed, write_run_outputs,
                               written_files)
@@ -238,15 +238,8 @@ def barn_command(args) -> int:
     planners = check_planners(args.planners)
     setup = BarnSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency, body=args.body,
                       footprint_padding=args.footprint_padding)
-    executor = dict(executor=args.executor, scheduler=args.scheduler, workers=args.workers,
-                    progress=not args.no_progress)
-    tic = time.perf_counter()
     tasks = barn_tasks(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup)
-    runs = run_tasks(tasks, run_barn_task, **executor)
-    wall = time.perf_counter() - tic
-    recordings = None
-    if args.record_failures:
-        recordings = record_failures(tasks, run_outcomes(runs), run_barn_task, args.record_failures, barn_run_name, **executor)
+    runs, wall, recordings = run_benchmark(tasks, run_barn_task, args, barn_run_name)
     failed = failure_entries(runs, FAILURE_KEYS, recordings)
     meta = {"data": str(dataset.source), "worlds": world_ids, "trials": args.trials, "seed": args.seed,
             "setup": dataclasses.asdict(setup), "wall_time": wall, "failed": failed}

@@ -34,8 +34,7 @@ from fgdwa.bench.barn import BarnSetup, check_planners
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments)
 from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
-                                    failure_entries, print_failures, record_failures, run_outcomes)
-from fgdwa.bench.runner import run_tasks
+                                    failure_entries, print_failures, run_benchmark)
 from fgdwa.bench.runs import OUTCOMES, Run, episode_columns, format_table, paths_followed, write_run_outputs, \
     written_files
 from fgdwa.io.barn_data import barn_score
@@ -174,16 +173,8 @@ def dynabarn_command(args) -> int:
     planners = check_planners(args.planners)
     setup = dataclasses.replace(DYNABARN_SETUP, noise_std=args.noise, dropout=args.dropout, latency=args.latency,
                                 body=args.body, footprint_padding=args.footprint_padding)
-    executor = dict(executor=args.executor, scheduler=args.scheduler, workers=args.workers,
-                    progress=not args.no_progress)
-    tic = time.perf_counter()
     tasks = dynabarn_tasks(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup)
-    runs = run_tasks(tasks, run_dynabarn_task, **executor)
-    wall = time.perf_counter() - tic
-    recordings = None
-    if args.record_failures:
-        recordings = record_failures(tasks, run_outcomes(runs), run_dynabarn_task, args.record_failures,
-                                     dynabarn_run_name, **executor)
+    runs, wall, recordings = run_benchmark(tasks, run_dynabarn_task, args, dynabarn_run_name)
     failed = failure_entries(runs, FAILURE_KEYS, recordings)
     meta = {"data": dataset.source, "worlds": world_ids, "mapping": args.mapping, "trials": args.trials,
             "seed": args.seed, "setup": dataclasses.asdict(setup), "wall_time": wall, "failed": failed}

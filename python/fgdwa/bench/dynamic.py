@@ -26,7 +26,7 @@ from fgdwa._core import NavigatorParams
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments, check_sensing, planner_list)
 from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
-                                    print_failures, record_failures, run_outcomes)
+                                    print_failures, run_benchmark)
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.runs import Run, episode_columns, format_table, paths_followed, write_run_outputs, written_files
 from fgdwa.io.barn_data import parse_world_selection
@@ -210,16 +210,10 @@ def dynamic_command(args) -> int:
     seeds = parse_seeds(args.seeds)
     planners = check_variants(args.planners)
     setup = DynamicSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency, body=args.body)
-    executor = dict(executor=args.executor, scheduler=args.scheduler, workers=args.workers,
-                    progress=not args.no_progress)
-    tic = time.perf_counter()
     tasks = dynamic_tasks(level, seeds, planners, setup)
-    runs = run_tasks(tasks, run_dynamic_task, **executor)
-    wall = time.perf_counter() - tic
+    runs, wall, recordings = run_benchmark(tasks, run_dynamic_task, args, dynamic_run_name)
     failed = write_failed_fields(runs, args.out, setup)
-    if args.record_failures:
-        recordings = record_failures(tasks, run_outcomes(runs), run_dynamic_task, args.record_failures, dynamic_run_name,
-                                     **executor)
+    if recordings is not None:
         for entry, path in zip(failed, [p for p in recordings if p is not None]):
             entry["recording"] = str(path)
     head = {"level": level, "seeds": seeds, "setup": dataclasses.asdict(setup), "wall_time": wall,

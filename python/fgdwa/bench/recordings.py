@@ -8,6 +8,7 @@ time ends as the first did; that is checked, and a run that does not is an error
 from __future__ import annotations
 
 import dataclasses
+import time
 from pathlib import Path
 from typing import Callable, Optional, Sequence
 
@@ -40,6 +41,23 @@ def record_failures(tasks: Sequence, outcomes: Sequence[str], runner: Callable, 
 
 def run_outcomes(runs: Sequence[Run]) -> list:
     return [run.row["outcome"] for run in runs]
+
+
+def run_benchmark(tasks: Sequence, runner: Callable, args, name: Callable) -> tuple:
+    """A benchmark command's runs: ``tasks`` through ``runner`` with the
+    command's executor options (``args``: --executor, --scheduler, --workers,
+    --no-progress), then, with --record-failures, each failed one again as a
+    recording named ``name(task)``. Returns (runs, wall time in s of the runs,
+    each task's recording path or None; None without --record-failures)."""
+    executor = dict(executor=args.executor, scheduler=args.scheduler, workers=args.workers,
+                    progress=not args.no_progress)
+    tic = time.perf_counter()
+    runs = run_tasks(tasks, runner, **executor)
+    wall = time.perf_counter() - tic
+    recordings = None
+    if args.record_failures:
+        recordings = record_failures(tasks, run_outcomes(runs), runner, args.record_failures, name, **executor)
+    return runs, wall, recordings
 
 
 def failure_entries(runs: Sequence[Run], keys: Sequence[str], recordings: Optional[Sequence] = None) -> list:

@@ -212,22 +212,31 @@ class BarnDataset:
         return f"BarnDataset({self.source!r}: {describe_world_ids(self._ids)})"
 
 
+def find_data_file(path: Optional[Union[str, os.PathLike]], variable: str, what: str, missing: str,
+                   name_in_directory: Optional[str] = None) -> Path:
+    """A data set's file: ``path``, else the environment variable ``variable``;
+    a directory stands for its ``name_in_directory``. ``what`` names the data
+    in errors, ``missing`` says how to give it when neither is set."""
+    source = "argument"
+    if path is None:
+        path = os.environ.get(variable)
+        source = variable
+        if not path:
+            raise FgdwaError(f"no {what} data given: {missing}")
+    p = Path(path)
+    if name_in_directory is not None and p.is_dir():
+        p = p / name_in_directory
+    if not p.is_file():
+        raise FgdwaError(f"{what} data {p} ({source}): no such file")
+    return p
+
+
 def find_barn_file(path: Optional[Union[str, os.PathLike]] = None) -> Path:
     """Where barn.npz is: ``path`` (a file, or a directory holding barn.npz), else the
     ``FGDWA_BARN_DATA`` environment variable (same rules)."""
-    source = "argument"
-    if path is None:
-        path = os.environ.get("FGDWA_BARN_DATA")
-        source = "FGDWA_BARN_DATA"
-        if not path:
-            raise FgdwaError("no BARN data given: pass the path of barn.npz (or of its directory), "
-                             "or set FGDWA_BARN_DATA; make the file with `fgdwa barn import WORLD_DIR --out FILE`")
-    p = Path(path)
-    if p.is_dir():
-        p = p / "barn.npz"
-    if not p.is_file():
-        raise FgdwaError(f"BARN data {p} ({source}): no such file")
-    return p
+    return find_data_file(path, "FGDWA_BARN_DATA", "BARN",
+                          "pass the path of barn.npz (or of its directory), or set FGDWA_BARN_DATA; make the file "
+                          "with `fgdwa barn import WORLD_DIR --out FILE`", name_in_directory="barn.npz")
 
 
 def load_barn(path: Union[str, os.PathLike]) -> BarnDataset:

@@ -12,7 +12,6 @@ Every value is checked on loading; an error names the world and the key.
 from __future__ import annotations
 
 import json
-import math
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -22,13 +21,11 @@ import numpy as np
 
 from fgdwa._core import FgdwaError
 from fgdwa.file_limits import read_text
-from fgdwa.io.barn_data import describe_world_ids, parse_world_selection
+from fgdwa.io.barn_data import describe_world_ids, find_data_file, parse_world_selection
+from fgdwa.io.scenario_values import ValueReader, join_key
 from fgdwa.sim.keyframes import KeyframedMover
 
 DIFFICULTIES = ("easy", "medium", "hard")
-MAX_MOVERS = 1000  # per world
-MAX_KEYFRAMES = 100_000  # per mover
-MAX_COORDINATE = 1e4  # m
 MAX_FILE_BYTES = 64 * 2**20
 
 
@@ -95,101 +92,55 @@ class DynabarnDataset:
 
 def find_dynabarn_file(path: Optional[Union[str, os.PathLike]] = None) -> Path:
     """``path``, else the ``FGDWA_DYNABARN_DATA`` environment variable: a JSON data file."""
-    source = "argument"
-    if path is None:
-        path = os.environ.get("FGDWA_DYNABARN_DATA")
-        source = "FGDWA_DYNABARN_DATA"
-        if not path:
-            raise FgdwaError("no DynaBARN data given: pass --data FILE (a JSON file in the format of "
-                             "dynabarn_dev.json), or set FGDWA_DYNABARN_DATA")
-    p = Path(path)
-    if not p.is_file():
-        raise FgdwaError(f"DynaBARN data {p} ({source}): no such file")
-    return p
+    return find_data_file(path, "FGDWA_DYNABARN_DATA", "DynaBARN",
+                          "pass --data FILE (a JSON file in the format of dynabarn_dev.json), or set "
+                          "FGDWA_DYNABARN_DATA")
 
 
-class _Reader:
-    """Checks one world's values, naming the world and key in each error."""
-
-    def __init__(self, where: str):
-        self.where = where
-
-    def fail(self, key: str, value, why: str):
-        text = repr(value)
-        if len(text) > 80:
-            text = text[:77] + "..."
-        raise FgdwaError(f"{self.where}: {key} = {text}: {why}")
-
-    def number(self, value, key: str, low: Optional[float] = None, positive: bool = False,
-               limit: float = MAX_COORDINATE) -> float:
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            self.fail(key, value, "expected a number")
-        value = float(value) if abs(value) < 1e300 else math.inf
-        if not math.isfinite(value) or abs(value) > limit:
-            self.fail(key, value, f"must be finite, within +-{limit:g}")
-        if low is not None and (value <= low if positive else value < low):
-            self.fail(key, value, f"must be {'>' if positive else '>='} {low:g}")
-        return value
-
-    def numbers(self, value, key: str, count: int) -> tuple:
-        if not isinstance(value, list) or len(value) != count:
-            self.fail(key, value, f"expected a list of {count} numbers")
-        return tuple(self.number(v, f"{key}[{i}]") for i, v in enumerate(value))
-
-    def items(self, value, key: str, limit: int) -> list:
-        if not isinstance(value, list):
-            self.fail(key, value, "expected a list")
-        if len(value) > limit:
-            self.fail(key, f"<{len(value)} items>", f"at most {limit}")
-        return value
-
-
-def _world(data, index: int) -> DynabarnWorld:
+def _world(data, index: int, source: str) -> DynabarnWorld:
+    wid = data.get("world") if isinstance(data, dict) else None
+    read = ValueReader(f"DynaBARN data {source}, worlds[{index}]" + (f" (world {wid!r})" if wid is not None else ""),
+                       Path(source).parent)
+    # Keys it does not read are let be: other files in this format may carry more.
     if not isinstance(data, dict):
-        raise FgdwaError(f"DynaBARN worlds[{index}]: expected a mapping, got {type(data).__name__}")
-    read = _Reader(f"DynaBARN worlds[{index}]" + (f" (world {data.get('world')!r})" if "world" in data else ""))
-    needed = ("world", "start", "goal", "time_limit", "success_radius", "walls", "movers")
-    for key in needed:
-        if key not in data:
-            read.fail(key, None, "required")
-    wid = data["world"]
-    if isinstance(wid, bool) or not isinstance(wid, int) or wid < 0:
-        read.fail("world", wid, "expected an integer >= 0")
-    barn_idx = data.get("barn_world_idx", 300 + wid)
-    if isinstance(barn_idx, bool) or not isinstance(barn_idx, int):
-        read.fail("barn_world_idx", barn_idx, "expected an integer")
-    difficulty = data.get("difficulty", "")
+        read.fail("world", data, "expected a mapping")
+    for name in ("world", "start", "goal", "time_limit", "success_radius", "walls", "movers"):
+        if name not in data:
+            read.fail(name, None, "required")
+    wid = read.integer(data["world"], "world", low=0)
+    barn_idx = read.integer(data.get("barn_world_idx", 300 + wid), "barn_world_idx")
+    difficulty = read.string(data.get("difficulty", ""), "difficulty")
     if difficulty not in DIFFICULTIES + ("",):
         read.fail("difficulty", difficulty, f"expected one of {', '.join(DIFFICULTIES)}")
-    start = read.numbers(data["start"], "start", 3)
-    goal = read.numbers(data["goal"], "goal", 2)
-    time_limit = read.number(data["time_limit"], "time_limit", 0.0, positive=True, limit=1e5)
-    radius = read.number(data["success_radius"], "success_radius", 0.0, positive=True)
+    start = data["start"]
+    if not isinstance(start, list) or len(start) != 3:
+        read.fail("start", start, "expected [x, y, yaw] (m, m, rad)")
+    start = (*read.point(start[:2], "start"), read.number(start[2], "start[2]"))
+    goal = read.point(data["goal"], "goal")
+    time_limit = read.duration(data["time_limit"], "time_limit", positive=True)
+    radius = read.length(data["success_radius"], "success_radius", positive=True)
     walls = []
-    for i, wall in enumerate(read.items(data["walls"], "walls", 10_000)):
-        rect = read.numbers(wall.get("rect") if isinstance(wall, dict) else wall, f"walls[{i}].rect", 4)
+    for i, wall in enumerate(read.list_of(data["walls"], "walls")):
+        key = join_key(join_key("walls", i), "rect")
+        rect = wall.get("rect") if isinstance(wall, dict) else wall
+        if not isinstance(rect, list) or len(rect) != 4:
+            read.fail(key, rect, "expected [x0, y0, x1, y1] (m)")
+        rect = (*read.point(rect[:2], key), *read.point(rect[2:], key))
         if not (rect[0] < rect[2] and rect[1] < rect[3]):
-            read.fail(f"walls[{i}].rect", list(rect), "expected [x0, y0, x1, y1] with x0 < x1 and y0 < y1")
+            read.fail(key, list(rect), "expected [x0, y0, x1, y1] with x0 < x1 and y0 < y1")
         walls.append(rect)
     movers = []
-    for i, mover in enumerate(read.items(data["movers"], "movers", MAX_MOVERS)):
-        key = f"movers[{i}]"
+    for i, mover in enumerate(read.list_of(data["movers"], "movers")):
+        key = join_key("movers", i)
         if not isinstance(mover, dict):
             read.fail(key, mover, "expected a mapping with radius, loop, length_s and keyframes")
-        frames = read.items(mover.get("keyframes"), f"{key}.keyframes", MAX_KEYFRAMES)
-        for j, frame in enumerate(frames):
-            read.numbers(frame, f"{key}.keyframes[{j}]", 3)
-        loop = mover.get("loop", True)
-        if not isinstance(loop, bool):
-            read.fail(f"{key}.loop", loop, "expected true or false")
+        frames = read.keyframes(mover.get("keyframes"), join_key(key, "keyframes"))
+        loop = read.boolean(mover.get("loop", True), join_key(key, "loop"))
         length = mover.get("length_s")
         if length is not None:
-            length = read.number(length, f"{key}.length_s", 0.0, positive=True, limit=1e5)
-        radius_m = read.number(mover.get("radius"), f"{key}.radius", 0.0, positive=True)
-        try:
-            movers.append(KeyframedMover(radius_m, np.array(frames, dtype=float), loop=loop, length=length))
-        except FgdwaError as error:
-            raise FgdwaError(f"{read.where}: {key}: {error}") from None
+            length = read.duration(length, join_key(key, "length_s"), positive=True)
+        radius_m = read.length(mover.get("radius"), join_key(key, "radius"), positive=True)
+        movers.append(read.core(key, mover, lambda: KeyframedMover(radius_m, frames, loop=loop, length=length)))
     return DynabarnWorld(world=wid, barn_world_idx=barn_idx, difficulty=difficulty, start=start, goal=goal,
                          time_limit=time_limit, success_radius=radius, walls=tuple(walls), movers=tuple(movers))
 
@@ -206,5 +157,5 @@ def load_dynabarn(path: Union[str, os.PathLike]) -> DynabarnDataset:
     if not isinstance(data, dict) or not isinstance(data.get("worlds"), list) or not data["worlds"]:
         raise FgdwaError(f"DynaBARN data {path}: expected {{\"about\": ..., \"worlds\": [...]}} with one world "
                          "or more")
-    worlds = [_world(w, i) for i, w in enumerate(data["worlds"])]
+    worlds = [_world(w, i, str(path)) for i, w in enumerate(data["worlds"])]
     return DynabarnDataset(worlds, source=str(path), about=str(data.get("about", "")))

@@ -19,8 +19,6 @@ import os
 from pathlib import Path
 from typing import Any, Union
 
-import numpy as np
-
 from fgdwa._core import (
     DetectWindowParams,
     FgdwaError,
@@ -234,23 +232,12 @@ class _Reader(MapReader, FeasibilityChecks):
             if item.get(other) is not None:
                 self.fail(join_key(key, other), item[other], "give keyframes or waypoints + speed or start + "
                                                              "velocity, not two of them")
-        fkey = join_key(key, "keyframes")
-        frames = item["keyframes"]
-        if not isinstance(frames, (list, tuple)) or len(frames) < 2:
-            self.fail(fkey, frames, "expected a list of at least 2 [t, x, y] keyframes (s, m, m)")
-        self.count(frames, fkey)
-        rows = []
-        for i, frame in enumerate(frames):
-            ikey = join_key(fkey, i)
-            if not isinstance(frame, (list, tuple)) or len(frame) != 3:
-                self.fail(ikey, frame, "expected [t, x, y] (s, m, m)")
-            rows.append((self.duration(frame[0], join_key(ikey, 0)), *self.point(frame[1:], ikey)))
+        frames = self.keyframes(item["keyframes"], join_key(key, "keyframes"))
         loop = self.boolean(item.get("loop", True), join_key(key, "loop"))
         length = None
         if item.get("length") is not None:
             length = self.duration(item["length"], join_key(key, "length"), positive=True)
-        return self.core(key, item, lambda: KeyframedMover(radius, np.array(rows), loop=loop, length=length,
-                                                           phase=phase))
+        return self.core(key, item, lambda: KeyframedMover(radius, frames, loop=loop, length=length, phase=phase))
 
     def robot(self, value: Any) -> tuple:
         """(limits, footprint, outline): outline, the body the referee judges, is the footprint unless given."""

@@ -170,6 +170,19 @@ class ValueReader:
         self.count(value, key)
         return np.array([self.point(v, join_key(key, i)) for i, v in enumerate(value)], dtype=float)
 
+    def keyframes(self, value: Any, key: str) -> np.ndarray:
+        """(k, 3) timed keyframes [t s, x m, y m], k >= 2, each checked by name."""
+        if not isinstance(value, (list, tuple)) or len(value) < 2:
+            self.fail(key, value, "expected a list of at least 2 [t, x, y] keyframes (s, m, m)")
+        self.count(value, key)
+        rows = []
+        for i, frame in enumerate(value):
+            ikey = join_key(key, i)
+            if not isinstance(frame, (list, tuple)) or len(frame) != 3:
+                self.fail(ikey, frame, "expected [t, x, y] (s, m, m)")
+            rows.append((self.duration(frame[0], join_key(ikey, 0)), *self.point(frame[1:], ikey)))
+        return np.array(rows, dtype=float)
+
     def count(self, items: list, key: str) -> list:
         """``items``, refused when longer than MAX_COUNT."""
         if len(items) > limits.MAX_COUNT:
