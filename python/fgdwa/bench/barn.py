@@ -163,30 +163,39 @@ def check_planners(planners: Sequence[str]) -> list:
     return planner_list(planners, preset_names())
 
 
-def run_barn_task(task: BarnTask) -> Run:
-    """Run one task (in whatever process calls it)."""
-    setup = task.setup
-    preset = planner_preset(task.planner)
-    params = params_with(preset.params, dt=setup.dt, sim_time=setup.sim_time, goal_tolerance=task.goal_radius)
+def run_jackal(world: World, start, goal, goal_radius: float, time_limit: float, planner: str, mapping: str,
+               seed: int, setup: BarnSetup, record: str = "", title: str = "") -> tuple:
+    """One episode of the BARN Challenge's Jackal in ``world``: the setup's
+    limits, lidar, body and navigator, the preset's critics, the time limit as
+    steps. With ``record``, every cycle is kept and the run written there as a
+    Rerun recording (``title``). Returns (result, outcome, wall time in s):
+    the challenge knows three outcomes, so running out of steps is a timeout."""
+    preset = planner_preset(planner)
+    params = params_with(preset.params, dt=setup.dt, sim_time=setup.sim_time, goal_tolerance=goal_radius)
     robot = robot_preset("jackal")
-    world = World(grid=OccupancyGrid(task.cells, task.resolution, task.origin))
-    max_steps = int(math.floor(task.time_limit / setup.dt + 1e-9))
     navigator = setup.navigator()
-    if task.record:
+    if record:
         navigator.record_top_k = RECORDED_ROLLOUTS
     tic = time.perf_counter()
-    result = run_episode(world, task.start, task.goal, limits=setup.limits(), footprint=robot.footprint,
-                         outline=robot.outline, body=setup.body,
-                         params=params, max_steps=max_steps, goal_tolerance=task.goal_radius, lidar=setup.lidar(),
-                         weight_policy=preset.weight_policy(), seed=task.seed, mapping=task.mapping,
-                         navigator=navigator, latency=setup.latency, record_cycles=bool(task.record))
+    result = run_episode(world, start, goal, limits=setup.limits(), footprint=robot.footprint,
+                         outline=robot.outline, body=setup.body, params=params,
+                         max_steps=int(math.floor(time_limit / setup.dt + 1e-9)), goal_tolerance=goal_radius,
+                         lidar=setup.lidar(), weight_policy=preset.weight_policy(), seed=seed, mapping=mapping,
+                         navigator=navigator, latency=setup.latency, record_cycles=bool(record))
     wall = time.perf_counter() - tic
-    if task.record:
+    if record:
         from fgdwa.plot.recording import write_recording
 
-        write_recording(result, world, task.goal, robot.footprint, task.record, title=barn_run_name(task))
-    # The challenge knows three outcomes; running out of steps is its timeout.
+        write_recording(result, world, goal, robot.footprint, record, title=title)
     outcome = result.summary.outcome if result.summary.outcome in OUTCOMES else "timeout"
+    return result, outcome, wall
+
+
+def run_barn_task(task: BarnTask) -> Run:
+    """Run one task (in whatever process calls it)."""
+    world = World(grid=OccupancyGrid(task.cells, task.resolution, task.origin))
+    result, outcome, wall = run_jackal(world, task.start, task.goal, task.goal_radius, task.time_limit, task.planner,
+                                       task.mapping, task.seed, task.setup, task.record, barn_run_name(task))
     success = outcome == "success"
     row = {
         "world": task.world_id, "planner": task.planner, "mapping": task.mapping, "trial": task.trial,

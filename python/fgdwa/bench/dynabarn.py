@@ -23,26 +23,23 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import time
 from dataclasses import dataclass, field
 from typing import Optional, Sequence
 
 import numpy as np
 
 from fgdwa._core import FgdwaError, OccupancyGrid, robot_preset
-from fgdwa.bench.barn import BarnSetup, check_planners
+from fgdwa.bench.barn import BarnSetup, check_planners, run_jackal
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments)
-from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
-                                    failure_entries, print_failures, run_benchmark)
-from fgdwa.bench.runs import OUTCOMES, Run, episode_columns, format_table, paths_followed, write_run_outputs, \
-    written_files
+from fgdwa.bench.recordings import (add_record_failures_argument, check_recording_possible, failure_entries,
+                                    print_failures, run_benchmark)
+from fgdwa.bench.runs import (Run, episode_columns, format_table, paths_followed, summarize, write_run_outputs,
+                              written_files)
 from fgdwa.io.barn_data import barn_score
 from fgdwa.io.dynabarn_data import DynabarnDataset, DynabarnWorld, find_dynabarn_file, load_dynabarn
 from fgdwa.io.dynamic_fields import ROLLOUT_TIME
 from fgdwa.mapping import MAPPING_MODES, check_mapping
-from fgdwa.sim.episode import run_episode
-from fgdwa.sim.scenario import params_with
 from fgdwa.sim.world import World
 
 RESOLUTION = 0.1  # m per cell of the arena's grid
@@ -121,32 +118,13 @@ def dynabarn_run_name(task: DynabarnTask) -> str:
 
 def run_dynabarn_task(task: DynabarnTask) -> Run:
     """Run one task (in whatever process calls it)."""
-    w, setup = task.world, task.setup
-    from fgdwa._core import planner_preset
-
-    preset = planner_preset(task.planner)
-    params = params_with(preset.params, dt=setup.dt, sim_time=setup.sim_time, goal_tolerance=w.success_radius)
-    robot = robot_preset("jackal")
+    w = task.world
     clock = start_clock(w, task.seed)
     movers = tuple(dataclasses.replace(m, phase=m.phase + clock) for m in w.movers)
     grid = arena_grid(w)
     world = World(grid=grid, movers=movers, discs_known=False)
-    navigator = setup.navigator()
-    if task.record:
-        navigator.record_top_k = RECORDED_ROLLOUTS
-    tic = time.perf_counter()
-    result = run_episode(world, w.start, w.goal, limits=setup.limits(), footprint=robot.footprint,
-                         outline=robot.outline, body=setup.body, params=params,
-                         max_steps=int(math.floor(w.time_limit / setup.dt + 1e-9)), goal_tolerance=w.success_radius,
-                         lidar=setup.lidar(), weight_policy=preset.weight_policy(), seed=task.seed,
-                         mapping=task.mapping, navigator=navigator, latency=setup.latency,
-                         record_cycles=bool(task.record))
-    wall = time.perf_counter() - tic
-    if task.record:
-        from fgdwa.plot.recording import write_recording
-
-        write_recording(result, world, w.goal, robot.footprint, task.record, title=dynabarn_run_name(task))
-    outcome = result.summary.outcome if result.summary.outcome in OUTCOMES else "timeout"
+    result, outcome, wall = run_jackal(world, w.start, w.goal, w.success_radius, w.time_limit, task.planner,
+                                       task.mapping, task.seed, task.setup, task.record, dynabarn_run_name(task))
     success = outcome == "success"
     t = result.summary.sim_time
     straight = math.hypot(w.goal[0] - w.start[0], w.goal[1] - w.start[1])
@@ -156,11 +134,10 @@ def run_dynabarn_task(task: DynabarnTask) -> Run:
            "score": run_py_score(success, t, w.goal[0] - w.start[0]),
            "time_score": barn_score(success, t, straight / 2.0) if straight > 0 else float(success),
            **episode_columns(result, wall)}
-    end = result.summary.sim_time
     return Run(row=row, cells=np.asarray(grid.cells).astype(np.uint8), extent=tuple(grid.extent),
                poses=result.motion.poses, paths=paths_followed(result),
                label=f"DynaBARN world {w.world} ({w.difficulty})", routes=[m.route for m in movers],
-               discs=[(d.center[0], d.center[1], d.radius) for d in world.discs_at(end)],
+               discs=[(d.center[0], d.center[1], d.radius) for d in world.discs_at(t)],
                scan_map=result.context.scan_map)
 
 
@@ -183,8 +160,6 @@ def dynabarn_command(args) -> int:
     for level in ("easy", "medium", "hard"):
         subset = [run for run in runs if run.row["difficulty"] == level]
         if subset and len(subset) < len(runs):
-            from fgdwa.bench.runs import summarize
-
             print(format_table(summarize(subset), f"  {level}: {len({r.row['world'] for r in subset})} worlds"))
     print_failures(failed, FAILURE_KEYS)
     print(written_files(runs, wall, args.out, figure=not args.no_figures))
