@@ -48,7 +48,6 @@ void Controller::keep_best(int count) {
 struct Controller::LiveScanTest {
   LiveScanTest(const Controller& c, const RobotState& state)
       : field(c.map_.get()),
-        position(state.pose.position()),
         pose(state.pose),
         footprint(c.planner_.footprint()),
         // Only hits a rollout can reach matter to the planner.
@@ -60,7 +59,7 @@ struct Controller::LiveScanTest {
         depth(kLiveNoiseStds * c.range_noise_ + slack) {}
 
   bool counts(const Vec2& hit, const Vec2& direction) const {
-    if (!field || (hit - position).norm() > reach) return false;
+    if (!field || (hit - pose.position()).norm() > reach) return false;
     // The stretch of the beam the noise may have moved the hit along: a
     // correct map has an obstacle square on it, a beam that grazes a corner
     // and a hit noise carried past one included.
@@ -71,7 +70,6 @@ struct Controller::LiveScanTest {
   }
 
   const DistanceField* field;
-  Vec2 position;
   Pose2 pose;
   const Footprint& footprint;
   double reach, slack, depth;

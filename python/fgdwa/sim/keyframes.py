@@ -134,19 +134,17 @@ class KeyframedMover:
             k = after
             if k == len(times) - 1:
                 return points[-1].copy(), np.zeros(2)  # it holds the last keyframe from here
-            return points[k].copy(), self._slope(k, 0.0)
+            return self._segment(k, 0.0)  # the keyframe itself, leaving along its tangent
         if after == 0:
             return points[0].copy(), np.zeros(2)  # before the first keyframe: waits at it
         k = after - 1
-        s = (time - times[k]) / (times[k + 1] - times[k])
-        point, _ = hermite(points[k], points[k + 1], self._tangents[k], self._tangents[k + 1], s)
-        return point, self._slope(k, s)
+        return self._segment(k, (time - times[k]) / (times[k + 1] - times[k]))
 
-    def _slope(self, k: int, s: float) -> np.ndarray:
-        """The velocity (m/s) in segment k at parameter s."""
+    def _segment(self, k: int, s: float) -> tuple:
+        """(position, velocity in m/s) in segment k at parameter s."""
         points = self.keyframes[:, 1:]
-        _, slope = hermite(points[k], points[k + 1], self._tangents[k], self._tangents[k + 1], s)
-        return slope / (self.keyframes[k + 1, 0] - self.keyframes[k, 0])
+        point, slope = hermite(points[k], points[k + 1], self._tangents[k], self._tangents[k + 1], s)
+        return point, slope / (self.keyframes[k + 1, 0] - self.keyframes[k, 0])
 
     def disc_at(self, t: float) -> Disc:
         position, velocity = self.state_at(t)
