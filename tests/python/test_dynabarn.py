@@ -84,6 +84,11 @@ def test_run_py_scores_every_success_an_eighth_here_and_the_time_score_rewards_s
     # With the straight 20 m, OT = 10 s: 0.5 at or under 20 s, 10 / T up to 80 s.
     assert run_py_score(True, 15.0, 20.0) == pytest.approx(0.5)
     assert run_py_score(True, 40.0, 20.0) == pytest.approx(0.25)
+    with pytest.raises(FgdwaError, match="time = nan"):
+        run_py_score(True, float("nan"), 20.0)
+    with pytest.raises(FgdwaError, match="path_length = inf"):
+        run_py_score(False, 10.0, float("inf"))
+    assert math.isnan(run_py_score(True, 10.0, 0.0))
 
 
 def test_the_arena_grid_holds_the_walls_and_room_around_everything(tmp_path):
@@ -103,6 +108,18 @@ def test_the_start_clock_comes_from_the_seed():
     assert clocks == [start_clock(world, seed) for seed in range(20)]
     longest = max(m.period for m in world.movers)
     assert all(0 <= c < longest for c in clocks) and len(set(clocks)) == 20
+    with pytest.raises(FgdwaError, match="seed = -1"):
+        start_clock(world, -1)
+
+
+def test_a_missing_data_file_says_how_to_give_one(tmp_path, monkeypatch):
+    from fgdwa.io.dynabarn_data import find_dynabarn_file
+
+    with pytest.raises(FgdwaError, match=r"DynaBARN data .*nope\.json \(argument\): no such file"):
+        find_dynabarn_file(tmp_path / "nope.json")
+    monkeypatch.delenv("FGDWA_DYNABARN_DATA", raising=False)
+    with pytest.raises(FgdwaError, match="no DynaBARN data given: pass --data FILE"):
+        find_dynabarn_file(None)
 
 
 def test_tasks_check_their_arguments(tmp_path):

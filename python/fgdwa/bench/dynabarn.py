@@ -40,6 +40,7 @@ from fgdwa.io.barn_data import barn_score
 from fgdwa.io.dynabarn_data import DynabarnDataset, DynabarnWorld, find_dynabarn_file, load_dynabarn
 from fgdwa.io.dynamic_fields import ROLLOUT_TIME
 from fgdwa.mapping import MAPPING_MODES, check_mapping
+from fgdwa.sim.body import check_seed
 from fgdwa.sim.world import World
 
 RESOLUTION = 0.1  # m per cell of the arena's grid
@@ -57,8 +58,14 @@ FAILURE_KEYS = ("world", "planner", "trial")
 def run_py_score(success: bool, time_s: float, path_length: float) -> float:
     """run.py's score, ``success * OT / clip(T, 2 OT, 8 OT)`` with ``OT = path_length / 2``,
     clipped as numpy clips (``min(max(T, 2 OT), 8 OT)``), a negative length included."""
+    if not (isinstance(path_length, (int, float)) and math.isfinite(path_length)):
+        raise FgdwaError(f"run_py_score: path_length = {path_length!r}: must be a finite number (m)")
     if not success:
         return 0.0
+    if not (isinstance(time_s, (int, float)) and time_s >= 0 and math.isfinite(time_s)):
+        raise FgdwaError(f"run_py_score: time = {time_s!r}: a successful run needs a finite time >= 0 (s)")
+    if path_length == 0:
+        return math.nan  # the formula is 0 / 0: run.py itself would fail on such a world
     optimal = path_length / 2.0
     return optimal / min(max(time_s, 2.0 * optimal), 8.0 * optimal)
 
@@ -82,7 +89,8 @@ def arena_grid(world: DynabarnWorld, resolution: float = RESOLUTION, margin: flo
 def start_clock(world: DynabarnWorld, seed: int) -> float:
     """The world's animation clock (s) when the run starts, drawn from the trial's seed."""
     longest = max((m.period for m in world.movers), default=0.0)
-    return float(np.random.default_rng([int(seed), 0xD7BA]).uniform(0.0, longest)) if longest > 0 else 0.0
+    rng = np.random.default_rng([check_seed(seed), 0xD7BA])
+    return float(rng.uniform(0.0, longest)) if longest > 0 else 0.0
 
 
 @dataclass(frozen=True)
