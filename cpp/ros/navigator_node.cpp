@@ -37,6 +37,16 @@ std::string json_number(double value) {
 
 std::string seconds(const ros::Time& t) { return number(t.toSec()); }
 
+// A JSON string of `text`.
+std::string json_text(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
 // Median and 95th percentile of `values`, "median X ms, p95 Y ms over N cycles".
 std::string cycle_summary(std::vector<double> values) {
   if (values.empty()) return "no cycles";
@@ -176,10 +186,12 @@ void NavigatorNode::start(const fgdwa::Vec2& goal) {
   ++goals_;
   goal_received_ = ros::Time::now();
   active_ = true;
+  waiting_ = false;
   cycle_ms_.clear();
   if (navigator_) {
     try {
       navigator_->set_goal(goal);
+      ++goal_sets_;
     } catch (const fgdwa::Error&) {
       navigator_.reset();  // off its map: the first cycle builds a navigator on a map holding it
     }
@@ -192,6 +204,7 @@ void NavigatorNode::start(const fgdwa::Vec2& goal) {
 void NavigatorNode::finish(Outcome outcome, const std::string& reason) {
   publish_stop();
   active_ = false;
+  waiting_ = false;
   move_base_msgs::MoveBaseResult result;
   const char* word = outcome == Outcome::Succeeded ? "succeeded" : outcome == Outcome::Aborted ? "aborted"
                                                                                                  : "preempted";
@@ -200,14 +213,9 @@ void NavigatorNode::finish(Outcome outcome, const std::string& reason) {
     if (outcome == Outcome::Aborted) action_.setAborted(result, reason);
     if (outcome == Outcome::Preempted) action_.setPreempted(result, reason);
   }
-  std::string escaped;
-  for (char c : reason) {
-    if (c == '"' || c == '\\') escaped += '\\';
-    escaped += c;
-  }
   const ros::Time now = ros::Time::now();
   publish_event("{\"event\": \"end\", \"time\": " + number((now - start_time_).toSec()) + ", \"stamp\": " +
-                seconds(now) + ", \"outcome\": \"" + word + "\", \"reason\": \"" + escaped + "\"}");
+                seconds(now) + ", \"outcome\": \"" + word + "\", \"reason\": " + json_text(reason) + "}");
   const std::string cycles = cycle_summary(cycle_ms_);
   if (outcome == Outcome::Aborted)
     ROS_WARN("fgdwa_node: goal aborted: %s (cycle time %s)", reason.c_str(), cycles.c_str());
@@ -218,14 +226,79 @@ void NavigatorNode::finish(Outcome outcome, const std::string& reason) {
 void NavigatorNode::on_timer(const ros::TimerEvent&) {
   if (!active_) return;
   const ros::Time now = ros::Time::now();
-  std::optional<std::string> abort;
+  std::optional<Trouble> trouble;
   try {
-    abort = cycle(now);
+    trouble = cycle(now);
   } catch (const fgdwa::Error& e) {
-    // Misuse the navigator refused (a scan of another size, a state that is not finite): stop, say why.
-    abort = std::string(e.what());
+    // Input the navigator refused (a scan of another size, a state that is not finite): it may pass.
+    trouble = Trouble{e.what()};
   }
-  if (abort) finish(Outcome::Aborted, *abort);
+  if (!active_) return;  // the goal was reached this cycle
+  if (!trouble) {
+    if (waiting_) {
+      waiting_ = false;
+      const double waited = (now - waiting_since_).toSec();
+      publish_event("{\"event\": \"resume\", \"time\": " + number((now - start_time_).toSec()) +
+                    ", \"waited\": " + number(waited) + ", \"reason\": " + json_text(wait_reason_) + "}");
+      ROS_INFO("fgdwa_node: going on after %.2f s of waiting (%s)", waited, wait_reason_.c_str());
+    }
+    return;
+  }
+  if (trouble->final) {
+    finish(Outcome::Aborted, trouble->reason);
+  } else {
+    wait(now, trouble->reason);
+  }
+}
+
+void NavigatorNode::wait(const ros::Time& now, const std::string& reason) {
+  publish_stop();
+  if (!waiting_) {
+    waiting_ = true;
+    waiting_since_ = now;
+  }
+  const double waited = (now - waiting_since_).toSec();
+  const double patience = config_.node.patience;
+  if (waited > patience) {
+    char buffer[120];
+    std::snprintf(buffer, sizeof buffer, " for %.1f s (patience %.1f s)", waited, patience);
+    finish(Outcome::Aborted, reason + buffer);
+    return;
+  }
+  // The reason's words without its numbers (an age that grows every cycle) tell a new trouble from the same one.
+  auto words = [](const std::string& text) { return text.substr(0, text.find_first_of("0123456789")); };
+  if (waited == 0.0 || words(reason) != words(wait_reason_)) {
+    publish_event("{\"event\": \"wait\", \"time\": " + number((now - start_time_).toSec()) + ", \"stamp\": " +
+                  seconds(now) + ", \"reason\": " +
+                  json_text(reason) + ", \"patience\": " + number(patience) + "}");
+    ROS_WARN("fgdwa_node: robot stopped, waiting: %s (the goal aborts after %.0f s of this)", reason.c_str(), patience);
+  }
+  wait_reason_ = reason;
+  if (from_action_ && odom_) {
+    move_base_msgs::MoveBaseFeedback feedback;
+    feedback.base_position.header = odom_->header;
+    feedback.base_position.pose = odom_->pose.pose;
+    action_.publishFeedback(feedback);
+  }
+  diagnostic_msgs::DiagnosticArray array;
+  array.header.stamp = now;
+  array.header.frame_id = config_.node.global_frame;
+  diagnostic_msgs::DiagnosticStatus status;
+  status.name = "fgdwa_node: goal";
+  status.hardware_id = ros::this_node::getName();
+  status.level = diagnostic_msgs::DiagnosticStatus::WARN;
+  status.message = "waiting: " + reason;
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"reason", reason},
+                                   {"waited", number(waited)}, {"patience", number(patience)},
+                                   {"goal", number(goal_.x()) + " " + number(goal_.y())},
+                                   {"goal_id", std::to_string(goals_)}}) {
+    diagnostic_msgs::KeyValue kv;
+    kv.key = key;
+    kv.value = value;
+    status.values.push_back(kv);
+  }
+  array.status.push_back(status);
+  diagnostics_pub_.publish(array);
 }
 
 std::optional<fgdwa::RobotState> NavigatorNode::robot_state(std::string& reason) {
@@ -270,7 +343,7 @@ std::optional<fgdwa::Pose2> NavigatorNode::laser_pose(const sensor_msgs::LaserSc
   return compose(base_pose, mount_);
 }
 
-std::optional<std::string> NavigatorNode::ensure_navigator(const fgdwa::Pose2& robot,
+std::optional<NavigatorNode::Trouble> NavigatorNode::ensure_navigator(const fgdwa::Pose2& robot,
                                                            const sensor_msgs::LaserScan& scan) {
   const NodeParams& p = config_.node;
   if (navigator_ && !map_changed_ && scan.header.frame_id == laser_frame_) return std::nullopt;
@@ -278,33 +351,34 @@ std::optional<std::string> NavigatorNode::ensure_navigator(const fgdwa::Pose2& r
   std::string error;
   if (!tf_buffer_.canTransform(p.base_frame, scan.header.frame_id, ros::Time(0),
                                ros::Duration(config_.node.transform_timeout), &error))
-    return "scan in frame '" + scan.header.frame_id + "': no transform to '" + p.base_frame + "' (" + error + ")";
+    return Trouble{"scan in frame '" + scan.header.frame_id + "': no transform to '" + p.base_frame + "' (" + error + ")"};
   const auto mount = tf_buffer_.lookupTransform(p.base_frame, scan.header.frame_id, ros::Time(0)).transform;
   const auto& q = mount.rotation;
   if (1.0 - 2.0 * (q.x * q.x + q.y * q.y) < 0.0)
-    return "scan in frame '" + scan.header.frame_id + "': the laser is mounted upside down; fgdwa_node needs it "
-           "upright (z up)";
+    return Trouble{"scan in frame '" + scan.header.frame_id + "': the laser is mounted upside down; fgdwa_node "
+                   "needs it upright (z up)", true};
   mount_ = {mount.translation.x, mount.translation.y, yaw_of(q)};
   laser_frame_ = scan.header.frame_id;
 
   const int beams = static_cast<int>(scan.ranges.size());
-  if (beams < 2) return "scan on '" + p.scan_topic + "' has " + std::to_string(beams) + " ranges: fgdwa needs 2 or more";
+  if (beams < 2)
+    return Trouble{"scan on '" + p.scan_topic + "' has " + std::to_string(beams) + " ranges: fgdwa needs 2 or more"};
   fgdwa::LidarParams lidar;
   lidar.beams = beams;
   lidar.fov = std::abs(scan.angle_increment) * (beams - 1);
   lidar.max_range = scan.range_max;
   lidar.noise_std = config_.lidar_noise_std;
   if (!(scan.angle_increment > 0.0f) || !(lidar.max_range > 0.0) || !std::isfinite(lidar.max_range))
-    return "scan on '" + p.scan_topic + "': angle_increment " + number(scan.angle_increment) + ", range_max " +
-           number(scan.range_max) + ": fgdwa needs both > 0 (beams counter-clockwise)";
+    return Trouble{"scan on '" + p.scan_topic + "': angle_increment " + number(scan.angle_increment) + ", range_max " +
+                   number(scan.range_max) + ": fgdwa needs both > 0 (beams counter-clockwise)"};
 
   std::unique_ptr<fgdwa::OccupancyGrid> layout;
   fgdwa::MapMode mode = fgdwa::MapMode::Scan;
   if (p.mapping == "known") {
-    if (!map_) return std::optional<std::string>();  // caller waits for the map
+    if (!map_) return std::nullopt;  // caller waits for the map
     if (map_->header.frame_id != p.global_frame && !map_->header.frame_id.empty())
-      return "map in frame '" + map_->header.frame_id + "': mapping known needs it in global_frame '" +
-             p.global_frame + "'";
+      return Trouble{"map in frame '" + map_->header.frame_id + "': mapping known needs it in global_frame '" +
+                     p.global_frame + "'"};
     layout = std::make_unique<fgdwa::OccupancyGrid>(to_grid(*map_, p.occupied_threshold));
     mode = fgdwa::MapMode::Known;
   } else {
@@ -326,7 +400,13 @@ std::optional<std::string> NavigatorNode::ensure_navigator(const fgdwa::Pose2& r
   path_version_ = -1;
   map_version_ = -1;
   ++navigators_;
-  navigator_->set_goal(goal_);
+  try {
+    navigator_->set_goal(goal_);
+    ++goal_sets_;
+  } catch (const fgdwa::Error& e) {
+    navigator_.reset();
+    return Trouble{std::string("goal on the known map: ") + e.what(), true};  // the map given holds no such goal
+  }
   std::ostringstream event;
   event << "{\"event\": \"navigator\", \"id\": " << navigators_ << ", \"time\": " << number((ros::Time::now() - start_time_).toSec())
         << ", \"mapping\": \"" << p.mapping << "\", \"layout\": {\"origin\": [" << number(layout->origin().x()) << ", "
@@ -342,7 +422,7 @@ std::optional<std::string> NavigatorNode::ensure_navigator(const fgdwa::Pose2& r
   return std::nullopt;
 }
 
-std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
+std::optional<NavigatorNode::Trouble> NavigatorNode::cycle(const ros::Time& now) {
   const auto tic = std::chrono::steady_clock::now();
   const NodeParams& p = config_.node;
   const double since_goal = (now - goal_received_).toSec();
@@ -356,21 +436,21 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
                   topic.c_str(), age, what, timeout);
     return std::string(buffer);
   };
-  if (auto reason = silent("odom", p.odom_topic, odom_received_, p.odom_timeout, odom_ != nullptr)) return reason;
-  if (auto reason = silent("scan", p.scan_topic, scan_received_, p.scan_timeout, scan_ != nullptr)) return reason;
+  if (auto reason = silent("odom", p.odom_topic, odom_received_, p.odom_timeout, odom_ != nullptr)) return Trouble{*reason};
+  if (auto reason = silent("scan", p.scan_topic, scan_received_, p.scan_timeout, scan_ != nullptr)) return Trouble{*reason};
   if (!odom_ || !scan_) {
     publish_stop();
     return std::nullopt;  // the first messages are still to come
   }
   const sensor_msgs::LaserScan::ConstPtr scan = scan_;
-  if (scan->ranges.empty()) return "scan on '" + p.scan_topic + "' has no ranges";
+  if (scan->ranges.empty()) return Trouble{"scan on '" + p.scan_topic + "' has no ranges"};
   std::string reason;
   const auto state = robot_state(reason);
-  if (!state) return reason;
+  if (!state) return Trouble{reason};
   if (auto problem = ensure_navigator(state->pose, *scan)) return problem;
   if (!navigator_) {
     if (since_goal > p.odom_timeout + p.scan_timeout && !map_)
-      return "no map on '" + p.map_topic + "' (mapping known)";
+      return Trouble{"no map on '" + p.map_topic + "' (mapping known)"};
     publish_stop();
     return std::nullopt;
   }
@@ -378,7 +458,7 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
   // late) steps on the last one again: the planner always sees the newest scan,
   // and the fuzzy weights cannot do without one.
   const auto pose = laser_pose(*scan, reason);
-  if (!pose) return reason;
+  if (!pose) return Trouble{reason};
   const fgdwa::Scan converted = to_scan(*scan, *pose);
   const double time = (now - start_time_).toSec();
   const auto step_tic = std::chrono::steady_clock::now();
@@ -405,7 +485,11 @@ std::optional<std::string> NavigatorNode::cycle(const ros::Time& now) {
   if (record.mode == fgdwa::NavigatorMode::GoalReached) {
     finish(Outcome::Succeeded, "goal reached");
   } else if (record.mode == fgdwa::NavigatorMode::Failed) {
-    return std::string("navigator failed: ") + fgdwa::to_string(record.failure);
+    // Tried again from the next cycle on, from here: a path may appear, a
+    // recovery may get further (the navigator bounds how often it plans).
+    navigator_->set_goal(goal_);
+    ++goal_sets_;
+    return Trouble{std::string("navigator failed: ") + fgdwa::to_string(record.failure)};
   }
   return std::nullopt;
 }
@@ -475,6 +559,7 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
   add("navigator", std::to_string(navigators_));
   add("goal", number(goal_.x()) + " " + number(goal_.y()));
   add("goal_id", std::to_string(goals_));
+  add("goal_set", std::to_string(goal_sets_));
   add("odom_stamp", seconds(odom_->header.stamp));
   // Which inputs the cycle stepped on, so that fgdwa replay can step on the same ones.
   add("scan_stamp", seconds(scan_stamp));

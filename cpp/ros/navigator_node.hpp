@@ -8,9 +8,13 @@
 // and the goal for the map's extent); later goals keep it and the map it has
 // built, unless the goal lies off that map. Every control period (~planner/dt)
 // while a goal is active: the newest scan and odometry -> Navigator::step ->
-// cmd_vel, feedback, plans, markers, diagnostics. A goal ends succeeded
-// (GoalReached), aborted with the reason (Failed, a silent or broken sensor,
-// a missing transform, bad input), or preempted; the robot is sent a stop
+// cmd_vel, feedback, plans, markers, diagnostics. What keeps the robot from
+// driving (a silent or broken sensor, a missing transform, a navigator that
+// failed) makes it stand and wait, saying why, and it goes on when the
+// trouble ends; a failed navigator is given its goal again (the navigator
+// plans for it at most every ~navigator/retry_period). A goal ends succeeded
+// (GoalReached), aborted with the reason (a trouble that outlasted ~patience,
+// a goal that can never be driven to), or preempted; the robot is sent a stop
 // each time.
 #include <memory>
 #include <optional>
@@ -53,10 +57,18 @@ class NavigatorNode {
   void start(const fgdwa::Vec2& goal);
   // Ends the active goal: a stop on cmd_vel, the action's final state, a log line with the cycle times.
   void finish(Outcome outcome, const std::string& reason);
-  // The cycle's control work: the reason to abort the goal, or none to go on.
-  std::optional<std::string> cycle(const ros::Time& now);
-  // Builds the Navigator if there is none or the goal lies off its map; the reason when it cannot.
-  std::optional<std::string> ensure_navigator(const fgdwa::Pose2& robot, const sensor_msgs::LaserScan& scan);
+  // What keeps the robot from driving this cycle; `final` when waiting cannot help.
+  struct Trouble {
+    std::string reason;
+    bool final = false;
+  };
+  // The cycle's control work: what keeps the robot from driving, or none.
+  std::optional<Trouble> cycle(const ros::Time& now);
+  // The robot stands for `reason`: said on ~events and the log when it begins
+  // or changes, every cycle in the diagnostics; the goal aborts past ~patience.
+  void wait(const ros::Time& now, const std::string& reason);
+  // Builds the Navigator if there is none or the goal lies off its map; the trouble when it cannot.
+  std::optional<Trouble> ensure_navigator(const fgdwa::Pose2& robot, const sensor_msgs::LaserScan& scan);
   // Where the laser was when `scan` was taken, in the global frame.
   std::optional<fgdwa::Pose2> laser_pose(const sensor_msgs::LaserScan& scan, std::string& reason);
   std::optional<fgdwa::RobotState> robot_state(std::string& reason);
@@ -91,10 +103,14 @@ class NavigatorNode {
   std::unique_ptr<fgdwa::Navigator> navigator_;
   int navigators_ = 0;  // built so far; the cycle's diagnostics name theirs, and so does its event
   int goals_ = 0;       // goals started so far (each one set anew, even to the same point)
+  int goal_sets_ = 0;   // set_goal() calls on navigators so far: goals and the retries after a failure
   long cycles_ = 0;     // cycles stepped so far, numbered in the diagnostics so that a gap in a recording shows
   fgdwa::Pose2 mount_;  // the laser in the base frame, looked up with the navigator
   std::string laser_frame_;
   bool active_ = false;
+  bool waiting_ = false;       // the robot stands for wait_reason_, since waiting_since_
+  ros::Time waiting_since_;
+  std::string wait_reason_;
   bool from_action_ = false;
   fgdwa::Vec2 goal_ = fgdwa::Vec2::Zero();
   ros::Time goal_received_;

@@ -260,6 +260,7 @@ std::vector<Entry> entries(NodeConfig& c) {
       number("map_resolution", n.map_resolution), number("map_margin", n.map_margin),
       integer("occupied_threshold", n.occupied_threshold), number("scan_timeout", n.scan_timeout),
       number("odom_timeout", n.odom_timeout), number("transform_timeout", n.transform_timeout),
+      number("patience", n.patience),
       text("rollout_colour_by", n.rollout_colour_by),
       footprint(c.footprint), footprint_radius(c.footprint), flag("fuzzy", c.fuzzy),
       number("lidar/noise_std", c.lidar_noise_std),
@@ -306,6 +307,7 @@ void NodeParams::validate() const {
   positive("scan_timeout", scan_timeout);
   positive("odom_timeout", odom_timeout);
   positive("transform_timeout", transform_timeout);
+  positive("patience", patience);
 }
 
 namespace {

@@ -36,9 +36,13 @@ struct NodeParams {
   double map_resolution = 0.05;             // m, cells of the map built from scans
   double map_margin = 5.0;                  // m kept around the robot and the goal by the map built from scans
   int occupied_threshold = 65;              // known map: a cell of at least this occupancy (0-100) is an obstacle
-  double scan_timeout = 0.5;                // s without a new scan before the robot stops and the goal aborts
+  double scan_timeout = 0.5;                // s without a new scan before the robot stops and waits for it
   double odom_timeout = 0.5;                // s without new odometry, the same
-  double transform_timeout = 0.1;           // s waited for a transform (goal, laser) before giving up on it
+  double transform_timeout = 0.1;           // s waited for a transform (goal, laser) in one cycle
+  // s a goal is kept while the robot cannot drive to it (a silent sensor, a
+  // missing transform, no path, recoveries exhausted): it stands, says why,
+  // and goes on when the trouble ends; longer than the BARN challenge's 100 s.
+  double patience = 120.0;
   std::string rollout_colour_by = "total";  // ~rollouts' colour: "total" or one of ~planner/critics' names
   void validate() const;
 };

@@ -31,9 +31,11 @@ RouteKeeper::RouteKeeper(const OccupancyGrid& map, const Footprint& footprint, c
       // a robot in a tight spot sits inside that band, so last the inscribed radius.
       radii_{footprint.radius() + params.path_margin, footprint.radius(), footprint.inscribed_radius()},
       closed_(static_cast<std::size_t>(map.rows()) * map.cols(), 0),
-      replan_cycles_(std::max(1, static_cast<int>(std::lround(params.replan_period / dt)))) {}
+      replan_cycles_(std::max(1, static_cast<int>(std::lround(params.replan_period / dt)))),
+      retry_cycles_(std::max(1, static_cast<int>(std::lround(params.retry_period / dt)))) {}
 
 void RouteKeeper::set_goal(const Vec2& goal) {
+  if (unreachable_ && *unreachable_ != goal) unreachable_.reset();
   goal_ = goal;
   path_.reset();
   std::fill(closed_.begin(), closed_.end(), 0);
@@ -47,10 +49,17 @@ void RouteKeeper::adopt(GlobalPath path) {
 
 bool RouteKeeper::update(const Vec2& position, bool follow, WorldModel& world, const std::vector<Disc>& movers) {
   ++cycles_since_replan_;
+  if (cycles_since_no_path_ < retry_cycles_) ++cycles_since_no_path_;
   if (!follow) return true;
+  if (!path_ && unreachable_ && cycles_since_no_path_ < retry_cycles_) return false;
   const bool due = cycles_since_replan_ >= replan_cycles_;
-  if (!path_ || replan_now_ || (due && ahead_blocked(position, world, movers)))
-    if (!plan(position, world, movers) && !path_) return false;
+  if (!path_ || replan_now_ || (due && ahead_blocked(position, world, movers))) {
+    if (!plan(position, world, movers) && !path_) {
+      unreachable_ = goal_;
+      cycles_since_no_path_ = 0;
+      return false;
+    }
+  }
   return true;
 }
 

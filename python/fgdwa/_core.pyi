@@ -2754,6 +2754,7 @@ class NavigatorParams:
       footprint_padding (m): the footprint grows by this on every side for everything the navigator plans and checks (room for a body larger than its configured footprint)
       path_margin (m): kept beyond the footprint's circumscribed radius by the global path where the map allows
       replan_period (s): shortest time between two replans for a blocked path
+      retry_period (s): shortest time between two global plans for a goal that had no path (set_goal() with the same goal again does not plan sooner)
       stall_time (s): time over which too little progress is a stall (0: never stalls)
       stall_distance (m): progress in stall_time below which the robot has stalled
       give_up_length (m): path ahead closed to the global planner after a stall
@@ -2796,6 +2797,7 @@ class NavigatorParams:
     progress_reset: typing.Any
     record_top_k: typing.Any
     replan_period: typing.Any
+    retry_period: typing.Any
     rotate_limit: typing.Any
     route_around_movers: typing.Any
     scan_match: typing.Any

@@ -425,6 +425,40 @@ TEST(Navigator, FailsAfterMaxRecoveriesWithoutProgressAndWhenNoPathExists) {
   EXPECT_EQ(r.failure, FailureReason::NoGlobalPath);
 }
 
+TEST(Navigator, AGoalWithNoPathIsPlannedForAgainOnlyEveryRetryPeriod) {
+  // A wall across the room with one gap, and a mover sweeping the gap at first.
+  const OccupancyGrid map = room(30, 60, {{0, 30, 12, 1}, {18, 30, 12, 1}});
+  const Disc in_gap{Vec2(3.05, 1.5), 0.3, Vec2(0.0, 0.5)};
+  NavigatorParams params;
+  params.retry_period = 1.05;  // 7 cycles of the preset's dt, 0.15 s
+  ASSERT_DOUBLE_EQ(gdwa().dt, 0.15);
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  const Vec2 goal(5.0, 1.5);
+  nav.set_goal(goal);
+  const RobotState held = at(1.0, 1.5);
+  ASSERT_EQ(nav.step(held, nullptr, 0.0, {in_gap}).failure, FailureReason::NoGlobalPath);
+  // The gap is open from now on; the goal, given again every cycle, is planned for only after retry_period.
+  int found_at = -1;
+  for (int i = 1; i <= 12 && found_at < 0; ++i) {
+    nav.set_goal(goal);
+    const CycleRecord& r = nav.step(held, nullptr, 0.15 * i);
+    if (r.mode != NavigatorMode::Failed) {
+      found_at = i;
+      ASSERT_TRUE(r.path);
+      EXPECT_LT((r.path->points().back() - goal).norm(), 1e-9);
+    } else {
+      EXPECT_EQ(r.failure, FailureReason::NoGlobalPath) << "cycle " << i;
+    }
+  }
+  EXPECT_EQ(found_at, 7);
+  // Another goal is planned for at once.
+  Navigator other(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+  other.set_goal(goal);
+  ASSERT_EQ(other.step(held, nullptr, 0.0, {in_gap}).failure, FailureReason::NoGlobalPath);
+  other.set_goal(Vec2(2.0, 0.5));
+  EXPECT_NE(other.step(held, nullptr, 0.15).mode, NavigatorMode::Failed);
+}
+
 TEST(Navigator, ProgressResetsTheRecoveryCount) {
   const OccupancyGrid map = room(30, 80);
   NavigatorParams params;

@@ -22,6 +22,9 @@ its verdict and the robot's true state as JSON; ``sim/scan_enabled``
 (std_msgs/Bool) silences the lidar and brings it back; ``sim/reset``
 (std_msgs/Empty) puts the robot back at the start, at rest. ``map`` (latched)
 is the world's grid in the odom frame, for fgdwa_node's known-map mode.
+``sim/door`` (std_msgs/Bool) closes a wall across the whole world ``--door``
+m past the start (true) or takes it away (false): the lidar, the referee and
+``map`` see it at once.
 """
 
 from __future__ import annotations
@@ -68,15 +71,14 @@ class SimJackal:
         world = load_barn(args.barn).world(args.world)
         self.world = world
         self.grid = world.grid
+        self.door_closed = False
         jackal = fgdwa.robot_preset("jackal")
         self.outline = jackal.outline  # the body the referee judges
         self.limits = jackal.limits
         self.odometry = Body(BodySettings(odometry_drift=tuple(args.drift)), args.tick, args.seed)
-        self.truth = fgdwa.CollisionWorld(self.grid)
-        lidar = fgdwa.LidarParams(fov=270.0 * math.pi / 180.0, beams=720, max_range=args.range_max, noise_std=args.noise,
-                                  dropout=args.dropout)
-        self.scanner = fgdwa.LaserScanner(lidar, fgdwa.DistanceField(self.grid))
-        self.lidar = lidar
+        self.lidar = fgdwa.LidarParams(fov=270.0 * math.pi / 180.0, beams=720, max_range=args.range_max,
+                                       noise_std=args.noise, dropout=args.dropout)
+        self.use_grid(world.grid)
         self.args = args
         self.origin = np.array(world.start, dtype=float)
         self.odom_turn = args.odom_yaw - world.start[2]
@@ -104,6 +106,7 @@ class SimJackal:
         rospy.Subscriber("cmd_vel", TwistMsg, self.on_cmd, queue_size=5)
         rospy.Subscriber("sim/scan_enabled", Bool, self.on_scan_enabled, queue_size=5)
         rospy.Subscriber("sim/reset", Empty, self.on_reset, queue_size=1)
+        rospy.Subscriber("sim/door", Bool, self.on_door, queue_size=1)
         self.map_pub = rospy.Publisher("map", GridMsg, queue_size=1, latch=True)
         self.publish_mount()
         self.publish_map()
@@ -114,6 +117,26 @@ class SimJackal:
 
     def on_scan_enabled(self, msg: Bool) -> None:
         self.scan_enabled = bool(msg.data)
+
+    def use_grid(self, grid) -> None:
+        """The world the lidar sees and the referee judges (each swapped whole: the tick reads them)."""
+        self.grid = grid
+        self.truth = fgdwa.CollisionWorld(grid)
+        self.scanner = fgdwa.LaserScanner(self.lidar, fgdwa.DistanceField(grid))
+
+    def on_door(self, msg: Bool) -> None:
+        if bool(msg.data) == self.door_closed:
+            return
+        self.door_closed = bool(msg.data)
+        grid = self.world.grid
+        if self.door_closed:
+            cells = np.array(grid.cells, dtype=np.uint8)
+            col = int((self.world.start[0] + self.args.door - grid.origin[0]) / grid.resolution)
+            cells[:, col] = 1
+            grid = fgdwa.OccupancyGrid(cells, grid.resolution, grid.origin)
+        self.use_grid(grid)
+        self.publish_map()
+        rospy.loginfo(f"sim_jackal: door {'closed' if self.door_closed else 'open'}")
 
     def on_reset(self, _msg: Empty) -> None:
         self.pose = np.array(self.world.start, dtype=float)
@@ -286,6 +309,7 @@ def main() -> None:
     parser.add_argument("--dropout", type=float, default=0.01, help="probability a beam returns nothing")
     parser.add_argument("--range-max", type=float, default=30.0, help="m, the lidar's range")
     parser.add_argument("--odom-yaw", type=float, default=ODOM_YAW, help="rad, the robot's heading at the start, in odom")
+    parser.add_argument("--door", type=float, default=7.5, help="m past the start (along the map's x) of sim/door's wall")
     parser.add_argument("--cmd-timeout", type=float, default=0.25, help="s after which a command counts as a stop")
     parser.add_argument("--drift", type=float, nargs=2, default=BODY_PROFILES["default"].odometry_drift,
                         metavar=("M", "RAD"), help="odometry drift: m per sqrt(m) travelled, rad per sqrt(rad) turned "

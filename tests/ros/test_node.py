@@ -14,11 +14,16 @@ ctest runs it (tests/ros/CMakeLists.txt). In turn:
    from the scans, the footprint, and the rviz config's topics;
 3. bad goals (a frame with no transform, NaN) are aborted with the reason;
 4. a preempt: the action ends PREEMPTED and the robot stops;
-5. the scan goes silent: the action ends ABORTED naming the scan, the robot stops;
+5. the scan goes silent for 2 s while driving: the robot stops, the node says why
+   (a ``wait`` event, WARN diagnostics) and keeps the goal, and it reaches the goal
+   when the scan comes back;
 6. the run's bag (scan, odometry, cmd_vel, the node's diagnostics and events)
    is replayed by ``fgdwa replay``, which must step the same commands;
-7. the known-map mode: the node launched again with ``mapping:=known`` reaches
-   the goal on the world's grid (published by the simulated Jackal), no collision.
+7. the known-map mode: the node launched again with ``mapping:=known`` and a short
+   ``~patience``; a wall across the world (``sim/door``) leaves no path, the robot
+   stands and the node waits; when the wall opens it reaches the goal on the world's
+   grid, no collision; a goal behind the closed wall is aborted once the patience
+   has run out, naming why.
 
 Every process it starts it stops again, by its own id. Exit 77 (skipped) when
 the BARN data is missing.
@@ -370,23 +375,32 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     check(commands and commands[-1][1:] == (0.0, 0.0), f"last command after the preempt: {commands[-1]}")
     print(f"preempted: {text}; robot stopped", flush=True)
 
-    # 5. The scan goes silent while driving.
+    # 5. The scan goes silent for 2 s while driving: the robot stops, the node says why and keeps
+    # the goal, and it drives on to the goal when the scan comes back.
     client.send_goal(goal(*further))
     wait_for(lambda: abs(referee.get("v", 0.0)) > 0.2, 15, "the robot to start for the silent-scan goal")
+    waits_before = sum(e.get("event") == "wait" for e in events)
     scan_switch.publish(Bool(data=False))
-    state, text = wait_result(10)
+    waiting = wait_for(lambda: next((e for e in events[::-1] if e.get("event") == "wait"), None)
+                       if sum(e.get("event") == "wait" for e in events) > waits_before else None,
+                       5, "the node's wait event for the silent scan")
     silenced_at = referee["last_scan_time"]
-    check(state == GoalStatus.ABORTED and "no scan" in text, f"silent scan: {state_name(state)}, {text!r}")
+    check("no scan" in waiting["reason"], f"the node waits for {waiting['reason']!r}, not the scan")
     wait_for(stopped, 5, "the robot to stop after the scan went silent")
     check(commands[-1][1:] == (0.0, 0.0), f"last command after the silent scan: {commands[-1]}")
-    end = wait_for(lambda: next((e for e in reversed(events) if e.get("event") == "end"), None), 5,
-                   "the node's end event")
-    stop_delay = end["stamp"] - silenced_at
-    period = config["planner"]["dt"]
-    print(f"silent scan aborted: {text}; the node sent the stop {stop_delay:.2f} s after the last scan "
-          f"(scan_timeout 0.5 s + one period {period} s = {0.5 + period:.2f} s); the robot stopped", flush=True)
+    check(client.get_state() == GoalStatus.ACTIVE, f"the goal ended {state_name(client.get_state())} while the "
+          f"scan was silent: {client.get_goal_status_text()}")
+    stop_delay = waiting["stamp"] - silenced_at
+    time.sleep(max(0.0, 2.0 - (referee["sim_time"] - silenced_at)))
     scan_switch.publish(Bool(data=True))
-
+    state, text = wait_result(60)
+    check(state == GoalStatus.SUCCEEDED, f"after the silent scan the goal ended {state_name(state)}: {text}")
+    resumed = next((e for e in events[::-1] if e.get("event") == "resume"), None)
+    check(resumed is not None and resumed["waited"] >= 1.0, f"no resume event after the silent scan: {resumed}")
+    period = config["planner"]["dt"]
+    print(f"silent scan for 2 s: the node stopped the robot {stop_delay:.2f} s after the last scan (scan_timeout "
+          f"0.5 s + one period {period} s = {0.5 + period:.2f} s): {waiting['reason']}; it went on after "
+          f"{resumed['waited']:.2f} s of waiting and reached the goal: {text}", flush=True)
     # Every command of the run inside the robot's limits.
     def check_limits(sent):
         bad_cmds = [c for c in sent if not (v_low - 1e-9 <= c[1] <= limits["v_max"] + 1e-9
@@ -417,25 +431,54 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     replay(args, bag, out)
 
     # 7. The known-map mode: the node started again with mapping known, the world's
-    # grid on `map`, the robot back at the start.
+    # grid on `map`, the robot back at the start, a short patience. A wall closes the
+    # whole world first (sim/door): no path, so the robot stands and the node waits;
+    # when the wall opens the goal is reached. Then a goal behind the closed wall is
+    # aborted once the patience has run out.
     procs.stop(launch, signal.SIGINT)
     rospy.Publisher("sim/reset", Empty, queue_size=1, latch=True).publish(Empty())
     wait_for(lambda: stopped() and math.hypot(referee["map_pose"][0] - sx, referee["map_pose"][1] - sy) < 1e-6,
              10, "the simulated Jackal to go back to the start")
+    door = rospy.Publisher("sim/door", Bool, queue_size=1, latch=True)
+    door.publish(Bool(data=True))
+    patience = 4.0
+    rospy.set_param("/fgdwa_node/patience", patience)
     launch = procs.start("fgdwa_node_known", ["roslaunch", "fgdwa_ros", "barn_jackal.launch", "mapping:=known"])
     check(client.wait_for_server(rospy.Duration(30)), "the known-map fgdwa_node's action server did not come up")
     before = len(commands)
+    waits_before = sum(e.get("event") == "wait" for e in events)
     client.send_goal(goal(*odom_goal))
+    waiting = wait_for(lambda: next((e for e in events[::-1] if e.get("event") == "wait"), None)
+                       if sum(e.get("event") == "wait" for e in events) > waits_before else None,
+                       15, "the node's wait event for the closed wall")
+    check("NoGlobalPath" in waiting["reason"], f"with the wall closed the node waits for {waiting['reason']!r}")
+    time.sleep(0.5 * patience)
+    check(client.get_state() == GoalStatus.ACTIVE, f"the goal behind the wall ended {state_name(client.get_state())}"
+          f" before the wall opened: {client.get_goal_status_text()}")
+    check(stopped() and math.hypot(referee["map_pose"][0] - sx, referee["map_pose"][1] - sy) < 0.05,
+          f"the robot did not stand at the start while no path existed: {referee['map_pose']}")
+    door.publish(Bool(data=False))
     state, text = wait_result(args.time_limit + 10)
     time.sleep(0.3)
     distance = math.hypot(referee["map_pose"][0] - gx, referee["map_pose"][1] - gy)
-    print(f"known map, BARN world {world.world_id}: {state_name(state)} ({text}), {distance:.2f} m from the goal, "
-          f"min clearance {referee['min_clearance']:.3f} m", flush=True)
+    print(f"known map, BARN world {world.world_id}: waited ({waiting['reason']}) until the wall opened, then "
+          f"{state_name(state)} ({text}), {distance:.2f} m from the goal, min clearance "
+          f"{referee['min_clearance']:.3f} m", flush=True)
     check(state == GoalStatus.SUCCEEDED, f"known-map goal ended {state_name(state)}: {text}")
     check(not referee["collided"], f"collision at {referee['collision_pose']} (known map)")
     check("map of 0.150 m cells (known)" in procs.log("fgdwa_node_known"),
           "the known-map node did not build its navigator on the world's grid")
+    door.publish(Bool(data=True))
+    sent = time.monotonic()
+    client.send_goal(goal(0.0, 0.5))  # back at the start, behind the wall
+    state, text = wait_result(patience + 20)
+    waited = time.monotonic() - sent
+    print(f"a goal behind the closed wall: {state_name(state)} after {waited:.1f} s: {text}", flush=True)
+    check(state == GoalStatus.ABORTED and "NoGlobalPath" in text and f"patience {patience:.1f} s" in text,
+          f"the goal behind the wall ended {state_name(state)}: {text!r}")
+    check(waited >= patience, f"aborted after {waited:.1f} s, before the patience of {patience} s")
     check_limits(commands[before:])
+    rospy.delete_param("/fgdwa_node/patience")
     summary["known_map"] = text
     (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     return 0

@@ -21,6 +21,7 @@ struct NavigatorParams {
   double footprint_padding = 0.0;
   double path_margin = 0.3;
   double replan_period = 0.5;
+  double retry_period = 1.0;
   double stall_time = 3.0;
   double stall_distance = 0.1;
   double give_up_length = 0.6;
@@ -63,6 +64,7 @@ struct NavigatorParams {
     v.real("footprint_padding", &P::footprint_padding, "m", Bounds::at_least(0, limits::kMaxFootprintRadius), "the footprint grows by this on every side for everything the navigator plans and checks (room for a body larger than its configured footprint)");
     v.real("path_margin", &P::path_margin, "m", distance, "kept beyond the footprint's circumscribed radius by the global path where the map allows");
     v.real("replan_period", &P::replan_period, "s", Bounds::positive(limits::kMaxHorizon), "shortest time between two replans for a blocked path");
+    v.real("retry_period", &P::retry_period, "s", Bounds::positive(limits::kMaxHorizon), "shortest time between two global plans for a goal that had no path (set_goal() with the same goal again does not plan sooner)");
     v.real("stall_time", &P::stall_time, "s", time, "time over which too little progress is a stall (0: never stalls)");
     v.real("stall_distance", &P::stall_distance, "m", distance, "progress in stall_time below which the robot has stalled");
     v.real("give_up_length", &P::give_up_length, "m", distance, "path ahead closed to the global planner after a stall");

@@ -26,7 +26,8 @@ class RouteKeeper {
   RouteKeeper(const OccupancyGrid& map, const Footprint& footprint, const NavigatorParams& params, double dt,
               std::optional<TerrainGrid> terrain);
 
-  // A new goal: no path, nothing given up; the next update() plans.
+  // A new goal: no path, nothing given up; the next update() plans (for the
+  // goal the last plan found no path to, not before retry_period has passed).
   void set_goal(const Vec2& goal);
   // Follows `path` from now on.
   void adopt(GlobalPath path);
@@ -57,6 +58,11 @@ class RouteKeeper {
   std::vector<std::uint8_t> closed_;    // cells given up after stalls
   int replan_cycles_;
   int cycles_since_replan_ = 0;
+  // The goal the last plan found no path to, and the cycles since: the same
+  // goal is planned for again only retry_cycles_ later, however often it is set.
+  std::optional<Vec2> unreachable_;
+  int retry_cycles_;
+  int cycles_since_no_path_ = 0;
   bool replan_now_ = false;
   Vec2 goal_ = Vec2::Zero();
   std::shared_ptr<const GlobalPath> path_;

@@ -226,8 +226,9 @@ def replay(rec: Recording, overrides: Optional[Dict[str, object]] = None) -> Lis
             out.append(ReplayCycle(time, mode, "-", *recorded, math.nan, math.nan, note, gap))
 
         # As the node does: a new navigator is given the goal once; a new goal (even to
-        # the same point) is set on the navigator there is.
-        nid, gid = int(values["navigator"]), int(values["goal_id"])
+        # the same point), or the same one again after the navigator failed, is set on the
+        # navigator there is (goal_set counts both; bags of older nodes lack it).
+        nid, gid = int(values["navigator"]), (int(values["goal_id"]), int(values.get("goal_set", 0)))
         cycle_goal = tuple(float(v) for v in values["goal"].split())
         if nid != navigator_id:
             if nid not in rec.navigators:
