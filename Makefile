@@ -55,7 +55,7 @@ $(VENV)/.installed: $(SOURCES) | $(VENV)/.tools
 	touch $@
 
 demo: setup
-	$(BIN)/fgdwa run demo --planner fgdwa --out $(OUT)/demo --gif $(OUT)/demo/demo.gif
+	$(BIN)/fgdwa demo --out $(OUT)/demo --gif $(OUT)/demo/demo.gif
 
 test: setup test-cpp test-python
 

@@ -43,22 +43,12 @@ def _cycle_line(cycle_times) -> str:
 
 
 def cmd_demo(args: argparse.Namespace) -> int:
-    from fgdwa.io.builtin import demo_scenario
-    from fgdwa.plot.episode import plot_episode
-    from fgdwa.sim import run_episode
-
-    scenario = demo_scenario()
-    result = run_episode(scenario.world, scenario.start, scenario.goal, params=PlannerParams(),
-                         max_steps=args.max_steps)
-    print(f"scenario {scenario.name}: {scenario.description}")
-    print("planner dwa (classic dynamic window, heading to the goal)")
-    print(_format_metrics(result.metrics()))
-    if len(result.trace.cycle_times):
-        print(_cycle_line(result.trace.cycle_times))
-    png = Path(args.out) / "demo.png"
-    plot_episode(result, scenario.world, scenario.goal, png)
-    print(f"figure: {png}")
-    return 0 if result.summary.outcome == "success" else 1
+    """`fgdwa run demo --planner fgdwa`: the one demo, whichever command names it."""
+    argv = ["run", "demo", "--planner", "fgdwa", "--out", args.out, "--seed", str(args.seed),
+            "--max-steps", str(args.max_steps)]
+    if args.gif:
+        argv += ["--gif", args.gif]
+    return main(argv)
 
 
 def cmd_inspect(args: argparse.Namespace) -> int:
@@ -264,8 +254,10 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"fgdwa {importlib.metadata.version('fgdwa')}")
     sub = parser.add_subparsers(dest="command", required=True)
 
-    demo = sub.add_parser("demo", help="run the classic DWA on the built-in demo scenario")
+    demo = sub.add_parser("demo", help="FGDWA on the shipped demo scenario: the same as `fgdwa run demo --planner fgdwa`")
     demo.add_argument("--out", default="out/demo", help="directory for the figure (default: out/demo)")
+    demo.add_argument("--gif", default=None, metavar="FILE", help="also write an animation of the run (.gif)")
+    demo.add_argument("--seed", type=int, default=0, help="seed of the run (default 0)")
     demo.add_argument("--max-steps", type=positive, default=1000)
     demo.set_defaults(func=lambda args, argv: cmd_demo(args))
 

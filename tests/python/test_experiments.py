@@ -203,6 +203,20 @@ def test_bad_executor_arguments():
         run_experiment(scenario_object, trials=1, executor="local", progress=False)
 
 
+def test_a_scheduler_that_does_not_answer_is_named(monkeypatch):
+    import socket
+
+    from fgdwa.bench import runner
+
+    monkeypatch.setattr(runner, "SCHEDULER_TIMEOUT", 1.0)
+    with socket.socket() as s:  # a port nothing listens on
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    for address in (f"tcp://127.0.0.1:{port}", "not an address"):
+        with pytest.raises(FgdwaError, match="no dask scheduler answered within 1 s"):
+            run_tasks([1], abs, executor="dask", scheduler=address, progress=False)
+
+
 def test_results_do_not_depend_on_the_executor():
     options = {"max_steps": 60}
     serial = run_experiment(SMALL, trials=2, base_seed=3, executor="serial", progress=False, options=options)

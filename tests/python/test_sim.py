@@ -137,15 +137,23 @@ def test_a_rectangle_turning_in_place_beside_a_post_is_a_collision():
     assert sweeping and all(reason == "Collision" for reason in sweeping)
 
 
-def test_cli_demo_writes_the_figure(tmp_path, capsys):
+def test_cli_demo_is_fgdwa_run_demo(tmp_path, capsys):
     assert main(["demo", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
+    assert main(["run", "demo", "--planner", "fgdwa", "--out", str(tmp_path / "run")]) == 0
+    run = capsys.readouterr().out.replace(str(tmp_path / "run"), str(tmp_path))
+
+    def untimed(text):
+        return [line for line in text.splitlines() if not any(w in line for w in ("cycle time", "wall", "planning_time"))]
+
+    assert untimed(run) == untimed(out)
+    assert "planner fgdwa, seed 0" in out
     assert "outcome          success" in out
     # Each metric with its unit; a run that succeeded gives no reason.
     assert re.search(r"^  mileage +[0-9.]+ m$", out, flags=re.M) and re.search(r"^  smoothness +[0-9.]+ rad/s$", out,
                                                                                 flags=re.M)
     assert "reason" not in out
-    png = tmp_path / "demo.png"
+    png = tmp_path / "demo_fgdwa.png"
     assert png.stat().st_size > 10_000
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 

@@ -19,6 +19,7 @@ from fgdwa._core import FgdwaError
 
 EXECUTORS = ("local", "dask", "serial")
 DEFAULT_WORKERS = 2
+SCHEDULER_TIMEOUT = 10.0  # s to reach a dask scheduler before the run is refused
 
 
 def run_tasks(tasks: Sequence, runner: Callable, executor: str = "local", scheduler: Optional[str] = None,
@@ -74,7 +75,13 @@ def _run_dask(tasks, scheduler, workers, bar, results, runner) -> None:
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
         client = Client(cluster)
     else:
-        client = Client(scheduler)
+        try:
+            client = Client(scheduler, timeout=SCHEDULER_TIMEOUT)
+        except Exception as error:  # noqa: BLE001 - dask raises OSError, TimeoutError, ValueError and more here
+            raise FgdwaError(f"scheduler = {scheduler!r}: no dask scheduler answered within {SCHEDULER_TIMEOUT:g} s "
+                             f"({type(error).__name__}: {str(error)[:200]}); start one with `dask scheduler` "
+                             f"and workers with `dask worker ADDRESS`, or leave --scheduler out for a local "
+                             f"cluster") from None
     try:
         futures = client.map(runner, tasks, pure=False)
         index = {future.key: i for i, future in enumerate(futures)}
