@@ -11,6 +11,12 @@
 
 namespace fgdwa {
 
+namespace {
+// Sum normalisation's floor: the sum of a critic's terms counts as at least
+// this share of (admissible samples x its largest term).
+constexpr double kSumFloor = 0.25;
+}  // namespace
+
 const char* to_string(Status status) {
   switch (status) {
     case Status::Ok: return "Ok";
@@ -256,7 +262,7 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
     window.v_lo = std::min(window.v_lo, window.v_hi);
   }
   sample_window(window, state.twist, params_.window, result_.samples);
-  evaluate_rollouts(state, world);
+  evaluate_rollouts(state, goal, world);
 
   CriticContext context;
   context.state = state;
@@ -285,7 +291,7 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
   return result_;
 }
 
-void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSource& world) {
+void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, const ClearanceSource& world) {
   const std::size_t n = result_.samples.size();
   rollouts_.resize(n);
   result_.reasons.resize(n);
@@ -426,17 +432,27 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const ClearanceSou
         break;
       }
     }
-    // The smallest clearance over poses 0..last: start from the pose with the
-    // smallest bound, then visit only poses whose bound is below the best so far.
+    // The smallest clearance over poses 0..last, and no further than the goal:
+    // the robot stops there, so what lies beyond (a wall behind a goal) must
+    // not turn it away from the goal. Admissibility above still holds the
+    // whole rollout, braking included. Start from the pose with the smallest
+    // bound, then visit only poses whose bound is below the best so far.
+    const double reach2 = params_.goal_tolerance * params_.goal_tolerance;
+    int scored_last = last;
+    for (int k = 0; k < last; ++k)
+      if ((poses[static_cast<std::size_t>(k)].position() - goal).squaredNorm() <= reach2) {
+        scored_last = k;
+        break;
+      }
     int first_guess = 0;
     double lowest = bounds[0];
-    for (int k = 1; k <= last; ++k) {
+    for (int k = 1; k <= scored_last; ++k) {
       const double b = bounds[static_cast<std::size_t>(k)];
       first_guess = b < lowest ? k : first_guess;
       lowest = std::min(b, lowest);
     }
     double min_clearance = exact(first_guess);
-    for (int k = 0; k <= last; ++k)
+    for (int k = 0; k <= scored_last; ++k)
       if (bounds[static_cast<std::size_t>(k)] - margin < min_clearance) min_clearance = below(k, min_clearance);
     result_.min_clearance[i] = min_clearance + margin;
     result_.free_distance[i] = free_distance;

@@ -526,6 +526,40 @@ TEST(LocalPlanner, GoalReachedWithinTolerance) {
   EXPECT_EQ(again.admissible_count(), 0);
 }
 
+TEST(LocalPlanner, ClearanceIsScoredUntilTheRolloutReachesTheGoal) {
+  // A wall 0.6 m past the goal: rollouts that pass through the goal run into it later.
+  std::vector<std::uint8_t> cells(30 * 40, 0);
+  for (int row = 0; row < 30; ++row)
+    for (int col = 30; col < 40; ++col) cells[static_cast<std::size_t>(row) * 40 + col] = 1;
+  const OccupancyGrid grid(30, 40, 0.1, Vec2(0.0, 0.0), cells);
+  const FieldClearance world(std::make_shared<DistanceField>(grid));
+  PlannerParams params;
+  params.goal_tolerance = 0.2;
+  const Footprint footprint = Footprint::circle(0.25);
+  LocalPlanner planner(RobotLimits{}, footprint, params);
+  const Vec2 goal(2.4, 1.5);
+  const PlanResult& r = planner.plan(RobotState{Pose2{1.0, 1.5, 0.0}, Twist{0.6, 0.0}}, goal, world);
+  int through_goal = 0;
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    if (r.reasons[i] != RejectReason::None) continue;
+    const Trajectory& poses = planner.rollouts()[i];
+    std::size_t reach = poses.size();
+    for (std::size_t k = 0; k < poses.size() && reach == poses.size(); ++k)
+      if ((poses[k].position() - goal).norm() <= params.goal_tolerance) reach = k;
+    if (reach == poses.size()) continue;
+    double until_goal = kInf, whole = kInf;
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+      const double c = world.clearance(footprint, poses[k], 0.0);
+      whole = std::min(whole, c);
+      if (k <= reach) until_goal = std::min(until_goal, c);
+    }
+    ++through_goal;
+    EXPECT_NEAR(r.min_clearance[i], until_goal, 1e-9) << "sample " << i;
+    if (whole <= 0.0) EXPECT_GT(r.min_clearance[i], 0.1) << "sample " << i;  // the wall beyond is not held against it
+  }
+  EXPECT_GT(through_goal, 0);
+}
+
 TEST(LocalPlanner, DiagnosticsHaveOneRowPerSampleAndOneColumnPerCritic) {
   std::mt19937 rng(3);
   const World world = random_world(rng, Vec2::Zero(), 0.25);

@@ -152,7 +152,7 @@ struct PlanResult {
   std::vector<double> weights;                  // per critic, this cycle
   std::vector<Twist> samples;                   // n_v x n_omega, v-major
   std::vector<RejectReason> reasons;            // per sample
-  std::vector<double> min_clearance;            // m, per sample
+  std::vector<double> min_clearance;            // m, per sample, until the rollout reaches the goal
   std::vector<double> free_distance;            // m, per sample (+inf: never touches)
   std::vector<double> moving_contact;           // s, per sample: first predicted contact with a moving obstacle
                                                 // within moving_horizon (+inf: none)
@@ -212,7 +212,7 @@ class LocalPlanner {
 
  private:
   std::size_t critic_index(const std::string& name) const;
-  void evaluate_rollouts(const RobotState& state, const ClearanceSource& world);
+  void evaluate_rollouts(const RobotState& state, const Vec2& goal, const ClearanceSource& world);
   void score_and_choose(const CriticContext& context);
   const PlanResult& run_cycle(const RobotState& state, const Vec2& goal, const Vec2& target, int key_node,
                               const ClearanceSource& world);
