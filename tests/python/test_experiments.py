@@ -15,6 +15,7 @@ from fgdwa.bench.experiments import (
     EXPERIMENTS,
     FINISHING,
     Claim,
+    correct_claims,
     ExperimentResult,
     ExperimentSpec,
     TrialRecord,
@@ -102,6 +103,25 @@ def test_verdicts_come_from_the_numbers():
     none = Claim("mileage", "x", 0.1, "paper", kind="no_difference")
     assert verdict(none, 0.05, 0.6)[1] is True
     assert verdict(none, 3.0, 0.001)[1] is False
+    # Two runs on a side say nothing, whatever the p-value.
+    words, agrees = verdict(down, -4.0, 1e-6, n=[2, 15])
+    assert agrees is None and words.startswith("too few runs to say (n = 2, 15")
+
+
+def test_holm_corrects_the_claims_judged_together():
+    assert stats.holm([0.01, 0.04, 0.03, float("nan")]) == pytest.approx([0.03, 0.06, 0.06, float("nan")],
+                                                                          nan_ok=True)
+    assert stats.holm([0.5, 0.9]) == [1.0, 1.0]
+    assert stats.holm([]) == []
+    rows = [dict(metric="steps", other="gdwa", paper_effect=-2.0, paper="p", kind="direction", effect_pct=-3.0,
+                 p=p, n=[15, 15]) for p in (0.02, 0.02, 0.001)]
+    judged = correct_claims(rows)
+    assert [r["p_holm"] for r in judged] == pytest.approx([0.04, 0.04, 0.003])
+    assert all(r["family"] == 3 and r["agrees"] is True for r in judged)
+    assert "significant (-3.0 %, p = 0.04)" in judged[0]["verdict"]
+    # Thirteen at once: a raw 0.02 is no longer significant.
+    judged = correct_claims(rows[:1] + [dict(rows[0], p=0.5)] * 12)
+    assert judged[0]["p_holm"] == pytest.approx(0.26) and "not significant" in judged[0]["verdict"]
 
 
 # --------------------------------------------------------------------------------------------- tables and files
@@ -142,8 +162,10 @@ def test_failed_runs_count_in_the_finishing_rate_only():
     assert (finishing["rate_proposed"], finishing["rate_other"]) == (100.0, pytest.approx(200 / 3))
     assert finishing["fisher_p"] == pytest.approx(sps.fisher_exact([[3, 0], [2, 1]]).pvalue)
     claims = {c["metric"]: c for c in d["claims"]}
-    assert claims["steps"]["agrees"] is True and "same direction" in claims["steps"]["verdict"]
-    assert claims[FINISHING]["agrees"] is True
+    # Three runs against two: the same direction as the paper, but too few runs to judge.
+    assert claims["steps"]["agrees"] is None
+    assert claims["steps"]["verdict"].startswith("too few runs to say (n = 3, 2; -18.0 %")
+    assert claims[FINISHING]["agrees"] is None and claims[FINISHING]["verdict"].startswith("too few runs to say (n = 3, 3")
     assert d["seeds"] == [7, 8, 9]
     assert d["cycle_time_ms"]["all"]["cycles"] == 100 + 102 + 98 + 120 + 40 + 124
 
@@ -271,18 +293,26 @@ def test_the_three_experiments_end_to_end(tmp_path, capsys):
 def test_results_page_counts_claims_read_back_from_json(tmp_path):
     from fgdwa.bench.report import write_results
 
-    result = _hand_made_result()
-    result.spec = ExperimentSpec("t", "T", "demo", ("fgdwa", "gdwa"),
-                                 claims=(Claim("steps", "gdwa", -10.0, "fewer"),
-                                         Claim("steps", "nobody", -10.0, "not run here"),
-                                         Claim("mileage", "gdwa", 0.1, "same", kind="no_difference")))
-    save_experiment(result, tmp_path)
+    mileages = ([10.0, 10.2, 9.9, 10.1, 10.0, 10.3], [11.0, 11.4, 10.9, 11.2, 11.1, 11.3])
+    records = [_record(planner, i, steps=steps + i, mileage=m)
+               for planner, steps, ms in (("fgdwa", 100, mileages[0]), ("gdwa", 120, mileages[1]))
+               for i, m in enumerate(ms)]
+    spec = ExperimentSpec("t", "T", "demo", ("fgdwa", "gdwa"),
+                          claims=(Claim("steps", "gdwa", -10.0, "fewer"),
+                                  Claim("steps", "nobody", -10.0, "not run here"),
+                                  Claim("mileage", "gdwa", 0.1, "same", kind="no_difference")))
+    save_experiment(ExperimentResult(spec, 6, 0, records, wall_time=1.0, executor="serial"), tmp_path)
     d = read_json(tmp_path / "t" / "t.json")
-    mileage_p = sps.ttest_ind([10.0, 10.2, 9.9], [11.0, 11.4], equal_var=False).pvalue
-    assert [c["agrees"] for c in d["claims"]] == [True, None, bool(mileage_p >= 0.05)]
+    mileage_p = sps.ttest_ind(*mileages, equal_var=False).pvalue
+    steps_p = sps.ttest_ind([100 + i for i in range(6)], [120 + i for i in range(6)], equal_var=False).pvalue
+    # Holm over the two finite p-values (the claim against "nobody" has none): the larger is kept as it is.
+    mileage_holm = max(2 * steps_p, mileage_p)
+    assert d["claims"][2]["p_holm"] == pytest.approx(mileage_holm) and d["claims"][0]["p_holm"] == pytest.approx(
+        2 * steps_p)
+    assert [c["agrees"] for c in d["claims"]] == [True, None, bool(mileage_holm >= 0.05)]
     page = write_results(tmp_path, ["t"], "fgdwa experiment t", tmp_path / "R.md").read_text()
     assert "Of the paper's 2 directional claims, 1 could be measured here; 1 show the same direction" in page
-    assert f"1 claim(s) of no difference, 1 could be measured and {int(mileage_p >= 0.05)} hold" in page
+    assert f"1 claim(s) of no difference, 1 could be measured and {int(mileage_holm >= 0.05)} hold" in page
     # Sections below the keep marker (the BARN results) survive a rewrite; the rest is regenerated.
     from fgdwa.bench.report import KEEP_MARKER
 

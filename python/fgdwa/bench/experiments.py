@@ -30,7 +30,7 @@ from fgdwa._core import FgdwaError, NavigatorParams
 from fgdwa.bench import stats
 from fgdwa.bench.recordings import RECORDED_ROLLOUTS, record_failures
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
-from fgdwa.bench.stats import SIGNIFICANCE, finishing_rate
+from fgdwa.bench.stats import SIGNIFICANCE, SMALL_SAMPLE, finishing_rate
 from fgdwa.sim.scenario import Scenario, run_scenario, trial_variation
 
 
@@ -344,6 +344,7 @@ class ExperimentResult:
             rate_p, rate_o = finishing_rate(sp, n_p), finishing_rate(so, n_o)
             out.append({"metric": FINISHING, "proposed": self.spec.proposed, "other": other,
                         "rate_proposed": rate_p, "rate_other": rate_o,
+                        "runs_proposed": n_p, "runs_other": n_o,
                         "effect_pct": stats.effect_percent(rate_p, rate_o),
                         "fisher_p": stats.fisher_p(sp, n_p, so, n_o)})
         return out
@@ -399,7 +400,8 @@ def _cycle_stats(times: np.ndarray) -> dict:
 
 
 def judge_claims(claims: Iterable[Claim], comparisons: Sequence[dict], finishing: Sequence[dict]) -> list:
-    """For each claim of the paper: our effect, its p-values and a verdict computed from them."""
+    """For each claim of the paper: our effect, its p-values (raw and Holm-corrected
+    over these claims) and a verdict computed from them."""
     out = []
     for claim in claims:
         row = {"metric": claim.metric, "other": claim.other, "paper_effect": claim.paper_effect,
@@ -408,6 +410,7 @@ def judge_claims(claims: Iterable[Claim], comparisons: Sequence[dict], finishing
             found = [f for f in finishing if f["other"] == claim.other]
             ours = found[0] if found else {}
             row.update(effect_pct=ours.get("effect_pct", float("nan")), p=ours.get("fisher_p", float("nan")),
+                       n=[ours.get("runs_proposed", 0), ours.get("runs_other", 0)],
                        test="Fisher exact", ours=f"{_fmt(ours.get('rate_proposed'), 0)} % vs "
                                                   f"{_fmt(ours.get('rate_other'), 0)} %")
         else:
@@ -416,19 +419,34 @@ def judge_claims(claims: Iterable[Claim], comparisons: Sequence[dict], finishing
             ours = found[0] if found else {}
             row.update(effect_pct=ours.get("effect_pct", float("nan")), p=ours.get("welch_p", float("nan")),
                        mwu_p=ours.get("mwu_p", float("nan")), test="Welch t",
+                       n=[ours.get("n_proposed", 0), ours.get("n_other", 0)],
                        ours=f"{_fmt(ours.get('mean_proposed'), digits)} vs {_fmt(ours.get('mean_other'), digits)} "
                             f"(n = {ours.get('n_proposed', 0)}, {ours.get('n_other', 0)})")
-        row["verdict"], row["agrees"] = verdict(claim, row["effect_pct"], row["p"])
         out.append(row)
-    return out
+    return correct_claims(out)
 
 
-def verdict(claim: Claim, effect: float, p: float) -> tuple:
-    """(words, agrees) for a claim given our effect in % and its p-value; agrees is None when not measurable."""
+def correct_claims(rows: Sequence[dict]) -> list:
+    """The claims judged together: each gets its Holm-corrected p (``p_holm``, over
+    all of them) and its verdict from that; the raw ``p`` stays beside it."""
+    rows = [dict(r) for r in rows]
+    for row, p_holm in zip(rows, stats.holm([r["p"] for r in rows])):
+        row["p_holm"], row["family"] = p_holm, len(rows)
+        row["verdict"], row["agrees"] = verdict(Claim(row["metric"], row["other"], row["paper_effect"], row["paper"],
+                                                      row["kind"]), row["effect_pct"], p_holm, row.get("n"))
+    return rows
+
+
+def verdict(claim: Claim, effect: float, p: float, n: Optional[Sequence[int]] = None) -> tuple:
+    """(words, agrees) for a claim given our effect in % and its (corrected) p-value;
+    agrees is None when not measurable: no effect, or fewer than SMALL_SAMPLE runs
+    on a side (``n``: the runs each side's numbers come from)."""
     if effect is None or not math.isfinite(effect):
         return "not measurable (no successful run on a side, or a zero reference)", None
-    significant = p is not None and math.isfinite(p) and p < SIGNIFICANCE
     p_text = f"p = {p:.3g}" if p is not None and math.isfinite(p) else "no p-value"
+    if n is not None and min(n) < SMALL_SAMPLE:
+        return (f"too few runs to say (n = {', '.join(str(k) for k in n)}; {_pct(effect)} %, {p_text})", None)
+    significant = p is not None and math.isfinite(p) and p < SIGNIFICANCE
     if claim.kind == "no_difference":
         if significant:
             return f"differs: significant {_pct(effect)} % ({p_text})", False

@@ -23,7 +23,10 @@ EXCLUSION_NOTE = ("Runs that did not reach the goal (collision, fall or timeout)
                   "In the per-trial tables such a run shows its outcome instead of a number.")
 TEST_NOTE = ("Effect (%) = (proposed - other) / |other| x 100, so a negative effect means the proposed planner's "
              "value is lower. p-values are two-sided: Welch's t-test and the Mann-Whitney U test (scipy.stats) for "
-             "the metrics, Fisher's exact test for the finishing rate. Running time is the wall-clock time spent "
+             "the metrics, Fisher's exact test for the finishing rate. A claim's verdict takes the p-value after Holm's "
+             "correction for all the claims judged together (one experiment's in its report, all of them in the "
+             "table of the paper's claims), shown beside the raw one; with fewer than 5 runs on a side it says "
+             "there are too few runs to judge. Running time is the wall-clock time spent "
              "planning (the sum of the control cycles), so it depends on the machine and its load.")
 
 DIGITS = {"planning_time": 3, "steps": 0, "mileage": 2, "danger_clearance": 3, "sim_time": 2,
@@ -188,10 +191,12 @@ def _significant(p) -> bool:
 
 
 def claim_p(c: dict) -> str:
-    """The p-values behind a claim's verdict: Welch (which decides) and Mann-Whitney, or Fisher."""
+    """The p-values behind a claim's verdict: Welch's (or Fisher's), raw and Holm-corrected
+    over the claims judged with it (the corrected one decides), and Mann-Whitney's."""
+    holm = f" (Holm {fmt_p(c.get('p_holm'))} of {c.get('family', 1)})"
     if c["test"] == "Fisher exact":
-        return f"Fisher {fmt_p(c['p'])}"
-    return f"t {fmt_p(c['p'])}, U {fmt_p(c.get('mwu_p'))}"
+        return f"Fisher {fmt_p(c['p'])}{holm}"
+    return f"t {fmt_p(c['p'])}{holm}, U {fmt_p(c.get('mwu_p'))}"
 
 
 def claims_table(d: dict) -> Table:
@@ -361,6 +366,11 @@ def results_markdown(experiments: Sequence[tuple], command: str, relative_to: Pa
              "direction of each effect and its significance, not the numbers (docs/algorithms.md, \"Experiments "
              "E1-E3\").", "", EXCLUSION_NOTE, "", TEST_NOTE, "",
              "## The paper's claims", ""]
+    from fgdwa.bench.experiments import correct_claims
+
+    # The paper's claims of every experiment are judged together: one Holm correction over all of them.
+    judged = iter(correct_claims([c for d, _ in experiments for c in d["claims"]]))
+    experiments = [(dict(d, claims=[next(judged) for _ in d["claims"]]), figures) for d, figures in experiments]
     rows = []
     for d, _ in experiments:
         for c in d["claims"]:
@@ -373,11 +383,12 @@ def results_markdown(experiments: Sequence[tuple], command: str, relative_to: Pa
     claims = [c for d, _ in experiments for c in d["claims"]]
     direction = [c for c in claims if c["kind"] == "direction"]
     same = [c for c in direction if c["agrees"] is True]
-    significant = [c for c in same if _significant(c["p"])]
+    significant = [c for c in same if _significant(c["p_holm"])]
     measurable = [c for c in direction if c["agrees"] in (True, False)]
     none_claims = [c for c in claims if c["kind"] == "no_difference"]
     summary = (f"Of the paper's {len(direction)} directional claims, {len(measurable)} could be measured here; "
-               f"{len(same)} show the same direction in our runs, {len(significant)} of them with Welch p < 0.05.")
+               f"{len(same)} show the same direction in our runs, {len(significant)} of them significant "
+               f"(p < 0.05 after Holm's correction over the {len(claims)} claims).")
     if none_claims:
         summary += (f" Of its {len(none_claims)} claim(s) of no difference, "
                     f"{sum(1 for c in none_claims if c['agrees'] in (True, False))} could be measured and "

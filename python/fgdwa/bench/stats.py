@@ -22,7 +22,22 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-SIGNIFICANCE = 0.05  # two-sided p below which an effect counts as significant
+SIGNIFICANCE = 0.05  # two-sided p (Holm-corrected over the claims judged together) below which an effect counts
+SMALL_SAMPLE = 5  # runs on a side below which a test says too little to judge a claim either way
+
+
+def holm(p_values: Sequence[float]) -> list:
+    """Holm's step-down correction of p-values tested together: the i-th smallest
+    of m finite ones times (m - i), never below the one before it, at most 1. A
+    NaN stays NaN and does not count in m."""
+    p = np.asarray([np.nan if v is None else v for v in p_values], dtype=float).reshape(-1)
+    finite_at = np.flatnonzero(np.isfinite(p))
+    out = np.full(p.shape, np.nan)
+    running = 0.0
+    for rank, i in enumerate(finite_at[np.argsort(p[finite_at], kind="stable")]):
+        running = max(running, min(1.0, (len(finite_at) - rank) * p[i]))
+        out[i] = running
+    return out.tolist()
 
 
 def finishing_rate(successes: int, runs: int) -> float:
