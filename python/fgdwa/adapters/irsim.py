@@ -57,6 +57,7 @@ from fgdwa._core import (
     preset_names,
 )
 from fgdwa.io.scenario_values import ValueReader, param_keys
+from fgdwa.io.table import Table
 from fgdwa.sim.scenario import init_keywords, params_with
 
 try:
@@ -652,11 +653,11 @@ def run_world(world, max_steps: int = 1000, seed: Optional[int] = None, render: 
 
 def format_run(run: WorldRun) -> str:
     """A table of the robots' outcomes."""
-    lines = [f"world {run.world}: {run.steps} steps, {run.wall_time:.2f} s wall"]
+    rows = []
     for r in run.robots:
-        cycle = f", cycle median {r.cycle_ms_median:.2f} ms, p95 {r.cycle_ms_p95:.2f} ms" \
-            if math.isfinite(r.cycle_ms_median) else ""
-        failures = f", gave up {r.failures}x" if r.failures else ""
-        lines.append(f"  {r.name:<12} {r.behavior or '-':<8} {r.outcome:<9} step {r.steps:>5}, "
-                     f"{r.time:.1f} s{cycle}{failures}")
-    return "\n".join(lines)
+        finite = math.isfinite(r.cycle_ms_median)
+        rows.append([r.name, r.behavior or "-", r.outcome, str(r.steps), f"{r.time:.1f}",
+                     f"{r.cycle_ms_median:.2f}" if finite else "-", f"{r.cycle_ms_p95:.2f}" if finite else "-",
+                     str(r.failures)])
+    return Table(["robot", "behavior", "outcome", "step", "time s", "cycle median ms", "cycle p95 ms", "gave up"],
+                 rows, f"world {run.world}: {run.steps} steps, {run.wall_time:.2f} s wall").text()

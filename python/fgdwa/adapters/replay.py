@@ -46,6 +46,7 @@ from fgdwa.io.rosbag_reader import (
     decode_string,
     read_bag,
 )
+from fgdwa.io.table import Table
 
 CYCLE_STATUS = "fgdwa_node: cycle"
 TOLERANCE = 1e-9  # m/s and rad/s: commands this close count as the same
@@ -278,12 +279,11 @@ def format_table(cycles: Sequence[ReplayCycle], limit: int = 20) -> str:
              f"max |dv| {s['max_dv']:.4g} m/s, max |domega| {s['max_domega']:.4g} rad/s"]
     differing = [c for c in cycles if not c.matches]
     if differing:
-        lines.append(f"{'time s':>9} {'mode (bag)':<12} {'mode (replay)':<13} {'v bag':>8} {'v replay':>9} "
-                     f"{'w bag':>8} {'w replay':>9}  note")
-        for c in differing[:limit]:
-            lines.append(f"{c.time:9.3f} {c.mode_recorded:<12} {c.mode_replayed:<13} {c.v_recorded:8.3f} "
-                         f"{c.v_replayed:9.3f} {c.omega_recorded:8.3f} {c.omega_replayed:9.3f}  "
-                         f"{'; '.join(filter(None, [c.note, c.gap]))}")
+        rows = [[f"{c.time:.3f}", c.mode_recorded, c.mode_replayed, f"{c.v_recorded:.3f}", f"{c.v_replayed:.3f}",
+                 f"{c.omega_recorded:.3f}", f"{c.omega_replayed:.3f}", "; ".join(filter(None, [c.note, c.gap]))]
+                for c in differing[:limit]]
+        lines.append(Table(["time s", "mode (bag)", "mode (replay)", "v bag", "v replay", "w bag", "w replay", "note"],
+                           rows).text())
         if len(differing) > limit:
             lines.append(f"... and {len(differing) - limit} more (replay.csv has every cycle)")
     return "\n".join(lines)

@@ -16,6 +16,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from fgdwa.bench.report import json_safe
+from fgdwa.io.table import Table
 
 OUTCOMES = ("success", "collision", "timeout")
 
@@ -110,25 +111,16 @@ def summarize(runs: Sequence[Run], outcomes: Sequence[str] = OUTCOMES) -> dict:
 
 def format_table(summary: dict, title: str, outcomes: Sequence[str] = OUTCOMES) -> str:
     """The terminal table of a :func:`summarize` summary: one line per planner."""
-    scored = all("mean_score" in s for s in summary.values())
-    timed = all("mean_time_score" in s for s in summary.values())
-    header = f"{'planner':<14} {'n':>5}" + "".join(f" {o:>9}" for o in outcomes) + f" {'mean time':>10}"
-    simulated = all("sim_ms_mean" in s for s in summary.values())
-    header += f" {'mean score':>11}" * scored + f" {'time score':>11}" * timed + f" {'cycle ms':>9}" \
-        + f" {'sim ms':>7}" * simulated
-    lines = [title, header]
-    for planner, s in summary.items():
-        mean_time = "-" if math.isnan(s["mean_time"]) else f"{s['mean_time']:.1f} s"
-        line = f"{planner:<14} {s['n']:>5}" + "".join(f" {s[o]:>9.3f}" for o in outcomes) + f" {mean_time:>10}"
-        if scored:
-            line += f" {s['mean_score']:>11.3f}"
-        if timed:
-            line += f" {s['mean_time_score']:>11.3f}"
-        line += f" {s['cycle_ms_mean']:>9.2f}"
-        if simulated:
-            line += f" {s['sim_ms_mean']:>7.2f}"
-        lines.append(line)
-    return "\n".join(lines)
+    columns = [("n", lambda s: str(s["n"]))] + [(o, lambda s, o=o: f"{s[o]:.3f}") for o in outcomes]
+    columns.append(("mean time", lambda s: "-" if math.isnan(s["mean_time"]) else f"{s['mean_time']:.1f} s"))
+    for key, header in (("mean_score", "mean score"), ("mean_time_score", "time score")):
+        if all(key in s for s in summary.values()):
+            columns.append((header, lambda s, key=key: f"{s[key]:.3f}"))
+    columns.append(("cycle ms", lambda s: f"{s['cycle_ms_mean']:.2f}"))
+    if all("sim_ms_mean" in s for s in summary.values()):
+        columns.append(("sim ms", lambda s: f"{s['sim_ms_mean']:.2f}"))
+    rows = [[planner] + [cell(s) for _, cell in columns] for planner, s in summary.items()]
+    return Table(["planner"] + [header for header, _ in columns], rows, title).text()
 
 
 def write_run_outputs(runs: Sequence[Run], out_dir, fields: Sequence[str], head: dict, figure: bool = True,
