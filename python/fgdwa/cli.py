@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from fgdwa._core import FgdwaError, PlannerParams, preset_names
+from fgdwa._core import FgdwaError, preset_names
 
 DEFAULT_EXPERIMENT_OUT = "out/experiments"
 

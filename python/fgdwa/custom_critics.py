@@ -27,11 +27,12 @@ critic too (e.g. in the module that defines it, imported by the task).
 from __future__ import annotations
 
 from fgdwa._core import FgdwaError, register_python_critic
+from fgdwa.file_limits import short_repr
 
 
 def register_critic(name: str, cls) -> None:
     """Make ``cls`` buildable as critic ``name`` (see the module's docstring);
     FgdwaError when the name is empty or taken, or ``cls`` lacks ``score_batch``."""
     if not isinstance(name, str):
-        raise FgdwaError(f"register_critic: name = {name!r}: expected a string")
+        raise FgdwaError(f"register_critic: name = {short_repr(name)}: expected a string")
     register_python_critic(name, cls)

@@ -166,7 +166,7 @@ def _rule(value: Any, where: str) -> FuzzyRule:
     _only_keys(spec, ("if", "then"), where)
     for key in ("if", "then"):
         if key not in spec:
-            raise FgdwaError(f"{where}: missing key {key!r}")
+            raise FgdwaError(f"{where}: missing key {short_repr(key)}")
     return FuzzyRule(_clauses(spec["if"], f"{where}.if"), _clauses(spec["then"], f"{where}.then"))
 
 
@@ -178,7 +178,7 @@ def engine_from_dict(config: Mapping) -> MamdaniEngine:
     _only_keys(config, ("resolution", "inputs", "outputs", "rules"), "fuzzy configuration")
     for key in ("inputs", "outputs", "rules"):
         if key not in config:
-            raise FgdwaError(f"fuzzy configuration: missing key {key!r}")
+            raise FgdwaError(f"fuzzy configuration: missing key {short_repr(key)}")
     resolution = config.get("resolution", 1001)
     if isinstance(resolution, bool) or not isinstance(resolution, numbers.Integral):
         raise FgdwaError(f"resolution: expected an integer, got {_type_name(resolution)} {short_repr(resolution)}")

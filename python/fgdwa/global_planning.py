@@ -6,6 +6,7 @@ from typing import Optional
 
 from fgdwa._core import (AStarParams, AStarPlanner, FgdwaError, Footprint, GlobalPlan, OccupancyGrid, OmplParams,
                          OmplPlanner, TerrainGrid)
+from fgdwa.file_limits import short_repr
 
 
 def global_methods() -> list:
@@ -19,7 +20,7 @@ def method_params(method: str):
         return AStarParams
     if isinstance(method, str) and method.startswith("ompl:"):
         return OmplParams
-    raise FgdwaError(f"method = {method!r}: expected one of {global_methods()}")
+    raise FgdwaError(f"method = {short_repr(method)}: expected one of {global_methods()}")
 
 
 def plan_global(grid: OccupancyGrid, start, goal, method: str = "astar",
@@ -41,6 +42,6 @@ def plan_global(grid: OccupancyGrid, start, goal, method: str = "astar",
             raise FgdwaError("plan_global: footprint does not apply to astar (its inflation_radius stands for it)")
         return AStarPlanner(grid, terrain=terrain, **options).plan(start, goal)
     if "planner" in options:
-        raise FgdwaError(f"plan_global: the OMPL planner is named by method ({method!r}), not by a planner option")
+        raise FgdwaError(f"plan_global: the OMPL planner is named by method ({short_repr(method)}), not by a planner option")
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
     return OmplPlanner(grid, footprint, terrain=terrain, planner=method[len("ompl:"):], **options).plan(start, goal)

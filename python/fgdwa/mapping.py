@@ -6,6 +6,7 @@ grid's layout). The map itself lives in the C++ :class:`fgdwa.Navigator`.
 from __future__ import annotations
 
 from fgdwa._core import FgdwaError
+from fgdwa.file_limits import short_repr
 
 MAPPING_MODES = ("known", "scan")
 
@@ -13,5 +14,5 @@ MAPPING_MODES = ("known", "scan")
 def check_mapping(mapping: str) -> str:
     """``mapping`` when it names a mode, else FgdwaError listing the modes."""
     if mapping not in MAPPING_MODES:
-        raise FgdwaError(f"mapping = {mapping!r}: expected one of {', '.join(MAPPING_MODES)}")
+        raise FgdwaError(f"mapping = {short_repr(mapping)}: expected one of {', '.join(MAPPING_MODES)}")
     return mapping

@@ -59,6 +59,7 @@ from fgdwa._core import (
 from fgdwa.io.scenario_values import ValueReader, param_keys
 from fgdwa.io.table import Table
 from fgdwa.sim.scenario import init_keywords, params_with
+from fgdwa.file_limits import short_repr
 
 try:
     # IR-SIM prints every matplotlib backend it fails to load when imported;
@@ -166,14 +167,14 @@ def robot_footprint(robot, pad: float = 0.0) -> Footprint:
             return Footprint.circle(float(robot.radius) + pad)
     hull = geometry.convex_hull
     if hull.geom_type != "Polygon" or hull.area <= 0.0:
-        raise FgdwaError(f"robot {robot.name!r}: shape {robot.shape!r} has no area to plan with")
+        raise FgdwaError(f"robot {short_repr(robot.name)}: shape {short_repr(robot.shape)} has no area to plan with")
     if pad > 0.0:
         hull = hull.buffer(pad, join_style=JOIN_STYLE.mitre)
     vertices = np.asarray(orient(hull, 1.0).exterior.coords, dtype=float)[:-1]
     try:
         return Footprint.polygon(vertices)
     except FgdwaError as error:
-        raise FgdwaError(f"robot {robot.name!r}: shape {robot.shape!r} as a footprint: {error}") from None
+        raise FgdwaError(f"robot {short_repr(robot.name)}: shape {short_repr(robot.shape)} as a footprint: {error}") from None
 
 
 def step_mismatch(limits: RobotLimits, step_time: float) -> float:
@@ -196,9 +197,9 @@ def robot_limits(robot, overrides: Mapping[str, float]) -> RobotLimits:
     acce = np.asarray(robot.info.acce, dtype=float).reshape(-1)
     v_max, omega_max = float(vel_max[0]), float(min(vel_max[1], -vel_min[1]))
     if not v_max > 0.0:
-        raise FgdwaError(f"robot {robot.name!r}: vel_max = {vel_max.tolist()}: fgdwa needs a forward speed > 0")
+        raise FgdwaError(f"robot {short_repr(robot.name)}: vel_max = {vel_max.tolist()}: fgdwa needs a forward speed > 0")
     if not omega_max > 0.0:
-        raise FgdwaError(f"robot {robot.name!r}: vel_min = {vel_min.tolist()}, vel_max = {vel_max.tolist()}: "
+        raise FgdwaError(f"robot {short_repr(robot.name)}: vel_min = {vel_min.tolist()}, vel_max = {vel_max.tolist()}: "
                          f"fgdwa needs turning both ways (vel_min[1] < 0 < vel_max[1])")
     defaults = RobotLimits()
     acc_v = float(acce[0]) if math.isfinite(acce[0]) else defaults.acc_v
@@ -210,11 +211,11 @@ def robot_limits(robot, overrides: Mapping[str, float]) -> RobotLimits:
     values = {"v_max": v_max, "omega_max": omega_max, "acc_v": acc_v, "acc_omega": acc_omega}
     for name, value in overrides.items():
         if value > values[name] * (1.0 + 1e-9):
-            raise FgdwaError(f"robot {robot.name!r}: {name} = {value:g}: may only tighten the robot's own "
+            raise FgdwaError(f"robot {short_repr(robot.name)}: {name} = {value:g}: may only tighten the robot's own "
                              f"limit ({values[name]:g}, from IR-SIM's vel_max, vel_min and acce)")
         values[name] = value
     if not all(value > 0.0 for value in values.values()):
-        raise FgdwaError(f"robot {robot.name!r}: limits {values}: must all be > 0")
+        raise FgdwaError(f"robot {short_repr(robot.name)}: limits {values}: must all be > 0")
     return RobotLimits(v_min=0.0, **values)
 
 
@@ -222,11 +223,11 @@ def robot_lidar(robot):
     """The robot's first 2D lidar, or FgdwaError saying how to give it one."""
     lidar = robot.lidar
     if lidar is None or getattr(lidar, "sensor_type", None) not in LIDAR_TYPES:
-        raise FgdwaError(f"robot {robot.name!r}: the fgdwa behavior senses with a 2D lidar, and this robot has "
+        raise FgdwaError(f"robot {short_repr(robot.name)}: the fgdwa behavior senses with a 2D lidar, and this robot has "
                          f"none: add one under the robot's sensors, e.g. "
                          f"sensors: [{{type: lidar2d, range_max: 8, angle_range: 4.71, number: 271}}]")
     if lidar.number < 2:
-        raise FgdwaError(f"robot {robot.name!r}: lidar number = {lidar.number}: fgdwa needs at least 2 beams")
+        raise FgdwaError(f"robot {short_repr(robot.name)}: lidar number = {lidar.number}: fgdwa needs at least 2 beams")
     return lidar
 
 
@@ -395,7 +396,7 @@ class FgdwaBehavior:
             raise self.error
         if robot.kinematics != "diff":
             raise FgdwaError(f"{self.where}: fgdwa drives differential-drive robots (kinematics diff), "
-                             f"not {robot.kinematics!r}")
+                             f"not {short_repr(robot.kinematics)}")
         config = self.config
         lidar = robot_lidar(robot)
         step_time = float(robot._world_param.step_time)
@@ -523,8 +524,8 @@ class _NotDifferential:
         self.kinematics = getattr(object_info, "kinematics", "?")
 
     def __call__(self, ego_object=None, external_objects=None, **_config):
-        raise FgdwaError(f"IR-SIM robot {self.name!r}, behavior {BEHAVIOR}: fgdwa drives differential-drive "
-                         f"robots (kinematics diff), not {self.kinematics!r}")
+        raise FgdwaError(f"IR-SIM robot {short_repr(self.name)}, behavior {BEHAVIOR}: fgdwa drives differential-drive "
+                         f"robots (kinematics diff), not {short_repr(self.kinematics)}")
 
 
 def _register() -> None:
@@ -588,7 +589,7 @@ def make_env(world, seed: Optional[int] = None, render: bool = False, log_level:
     Headless unless ``render``."""
     path = Path(world)
     if not path.is_file():
-        raise FgdwaError(f"world {world!r}: no such file")
+        raise FgdwaError(f"world {short_repr(world)}: no such file")
     kwargs = dict(log_level=log_level, seed=seed)
     if render:
         env = irsim.make(str(path), display=True, **kwargs)
@@ -609,14 +610,14 @@ def run_world(world, max_steps: int = 1000, seed: Optional[int] = None, render: 
     """Run ``world`` until every fgdwa robot has arrived or collided, or ``max_steps``;
     IR-SIM's arrive and collision flags are the referee."""
     if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
-        raise FgdwaError(f"max_steps = {max_steps!r}: must be an integer >= 1")
+        raise FgdwaError(f"max_steps = {short_repr(max_steps)}: must be an integer >= 1")
     tic = _time.perf_counter()
     env = make_env(world, seed=seed, render=render, log_level=log_level)
     robots = list(env.robot_list)
     driven = [r for r in robots if behavior_of(r) is not None]
     if not driven:
         env.end(0)
-        raise FgdwaError(f"world {world!r}: no robot has behavior {{name: {BEHAVIOR}}}")
+        raise FgdwaError(f"world {short_repr(world)}: no robot has behavior {{name: {BEHAVIOR}}}")
     step_time = float(env.step_time)
     ended = {}  # robot index -> step at which it arrived or first collided
     collided = [False] * len(robots)

@@ -47,6 +47,7 @@ from fgdwa.io.rosbag_reader import (
     read_bag,
 )
 from fgdwa.io.table import Table
+from fgdwa.file_limits import short_repr
 
 CYCLE_STATUS = "fgdwa_node: cycle"
 TOLERANCE = 1e-9  # m/s and rad/s: commands this close count as the same
@@ -94,7 +95,7 @@ def navigator_from_event(event: dict, overrides: Optional[Dict[str, object]] = N
             raise FgdwaError(f"--set {name}: not a setting of fgdwa_node{hint} (docs/parameters.md lists them)")
         config[name] = value
     if event.get("mapping") != "scan":
-        raise FgdwaError(f"navigator {event.get('id')}: mapping {event.get('mapping')!r}; replay rebuilds maps "
+        raise FgdwaError(f"navigator {event.get('id')}: mapping {short_repr(event.get('mapping'))}; replay rebuilds maps "
                          f"from scans only (mapping scan): the known map is not in the bag")
     limits = _param_set(RobotLimits, config)
     if config.get("footprint") is not None:
@@ -160,15 +161,15 @@ def read_recording(path, scan_topic: Optional[str] = None, odom_topic: Optional[
             _take(rec, msg, scan_topic, odom_topic)
         except (KeyError, TypeError, ValueError, OverflowError, UnicodeDecodeError) as error:
             # A bag is outside data: what it holds wrong is said, not raised as a traceback.
-            raise FgdwaError(f"bag {where!r}: a malformed {msg.type} message on {msg.topic} at {msg.time:.3f} s "
+            raise FgdwaError(f"bag {short_repr(where)}: a malformed {msg.type} message on {msg.topic} at {msg.time:.3f} s "
                              f"({type(error).__name__}: {error})") from None
     if not rec.cycles or not rec.navigators:
-        raise FgdwaError(f"bag {where!r}: no fgdwa_node cycle diagnostics or navigator events (it has "
+        raise FgdwaError(f"bag {short_repr(where)}: no fgdwa_node cycle diagnostics or navigator events (it has "
                          f"{', '.join(sorted(rec.topics)) or 'nothing'}); record /diagnostics and "
                          f"/fgdwa_node/events with the scan and odometry (docs/ros.md)")
     for kind, found in (("sensor_msgs/LaserScan", rec.scans), ("nav_msgs/Odometry", rec.odometry)):
         if not found:
-            raise FgdwaError(f"bag {where!r}: no {kind} messages to replay on")
+            raise FgdwaError(f"bag {short_repr(where)}: no {kind} messages to replay on")
     return rec
 
 
@@ -314,7 +315,7 @@ def parse_overrides(items: Sequence[str]) -> Dict[str, object]:
     out = {}
     for item in items:
         if "=" not in item:
-            raise FgdwaError(f"--set {item!r}: expected NAME=VALUE, e.g. planner/sim_time=1.5")
+            raise FgdwaError(f"--set {short_repr(item)}: expected NAME=VALUE, e.g. planner/sim_time=1.5")
         name, text = item.split("=", 1)
         try:
             out[name.strip()] = json.loads(text)
@@ -330,7 +331,7 @@ def replay_command(args) -> int:
         cycles = replay(rec, parse_overrides(args.set or []))
     except (KeyError, TypeError, ValueError, OverflowError) as error:
         # The node's events and cycle diagnostics came from the bag: a field missing or of the wrong kind is the bag's.
-        raise FgdwaError(f"bag {str(args.bag)!r}: malformed fgdwa_node events or cycle diagnostics "
+        raise FgdwaError(f"bag {short_repr(str(args.bag))}: malformed fgdwa_node events or cycle diagnostics "
                          f"({type(error).__name__}: {error})") from None
     print(f"bag {args.bag}: {len(rec.scans)} scans, {len(rec.odometry)} odometry messages, {rec.commands} cmd_vel, "
           f"{len(rec.cycles)} fgdwa_node cycles, {len(rec.navigators)} navigator(s)")

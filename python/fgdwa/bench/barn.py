@@ -40,6 +40,7 @@ from fgdwa.sim.body import DEFAULT_BODY, body_profile
 from fgdwa.sim.episode import run_episode
 from fgdwa.sim.scenario import params_with
 from fgdwa.sim.world import World
+from fgdwa.file_limits import short_repr
 
 BARN_PLANNERS = ("dwa", "gdwa", "sgdwa", "fgdwa", "dwb")
 RUN_FIELDS = ("world", "planner", "mapping", "trial", "seed", "outcome", "success", "time", "score", "optimal_time",
@@ -86,16 +87,16 @@ class BarnSetup:
         for name in ("v_max", "dt", "sim_time", "lidar_range", "replan_period", "stall_time"):
             value = getattr(self, name)
             if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-                raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be a finite number > 0")
+                raise FgdwaError(f"BarnSetup.{name} = {short_repr(value)}: must be a finite number > 0")
         check_sensing("BarnSetup", self.noise_std, self.dropout, self.latency)
         body_profile(self.body)
         padding = self.footprint_padding
         if not (isinstance(padding, (int, float)) and not isinstance(padding, bool) and 0 <= padding <= 1):
-            raise FgdwaError(f"BarnSetup.footprint_padding = {padding!r}: must be a number in [0, 1] (m)")
+            raise FgdwaError(f"BarnSetup.footprint_padding = {short_repr(padding)}: must be a number in [0, 1] (m)")
         for name in ("lidar_beams", "max_recoveries"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
-                raise FgdwaError(f"BarnSetup.{name} = {value!r}: must be an integer >= 1")
+                raise FgdwaError(f"BarnSetup.{name} = {short_repr(value)}: must be an integer >= 1")
 
     def limits(self) -> RobotLimits:
         jackal = robot_preset("jackal").limits
@@ -143,7 +144,7 @@ def barn_tasks(dataset: BarnDataset, world_ids: Sequence[int], planners: Sequenc
     check_mapping(mapping)
     planners = check_planners(planners)
     if isinstance(trials, bool) or not isinstance(trials, (int, np.integer)) or trials < 1:
-        raise FgdwaError(f"trials = {trials!r}: must be an integer >= 1")
+        raise FgdwaError(f"trials = {short_repr(trials)}: must be an integer >= 1")
     setup = setup if setup is not None else BarnSetup()
     tasks = []
     for wid in world_ids:

@@ -42,6 +42,7 @@ from fgdwa.io.dynamic_fields import ROLLOUT_TIME
 from fgdwa.mapping import MAPPING_MODES, check_mapping
 from fgdwa.sim.body import check_seed
 from fgdwa.sim.world import World
+from fgdwa.file_limits import short_repr
 
 RESOLUTION = 0.1  # m per cell of the arena's grid
 MAP_MARGIN = 5.0  # m of free grid beyond everything the world holds
@@ -59,11 +60,11 @@ def run_py_score(success: bool, time_s: float, path_length: float) -> float:
     """run.py's score, ``success * OT / clip(T, 2 OT, 8 OT)`` with ``OT = path_length / 2``,
     clipped as numpy clips (``min(max(T, 2 OT), 8 OT)``), a negative length included."""
     if not (isinstance(path_length, (int, float)) and math.isfinite(path_length)):
-        raise FgdwaError(f"run_py_score: path_length = {path_length!r}: must be a finite number (m)")
+        raise FgdwaError(f"run_py_score: path_length = {short_repr(path_length)}: must be a finite number (m)")
     if not success:
         return 0.0
     if not (isinstance(time_s, (int, float)) and time_s >= 0 and math.isfinite(time_s)):
-        raise FgdwaError(f"run_py_score: time = {time_s!r}: a successful run needs a finite time >= 0 (s)")
+        raise FgdwaError(f"run_py_score: time = {short_repr(time_s)}: a successful run needs a finite time >= 0 (s)")
     if path_length == 0:
         return math.nan  # the formula is 0 / 0: run.py itself would fail on such a world
     optimal = path_length / 2.0
@@ -112,9 +113,9 @@ def dynabarn_tasks(dataset: DynabarnDataset, world_ids: Sequence[int], planners:
     check_mapping(mapping)
     planners = check_planners(planners)
     if isinstance(trials, bool) or not isinstance(trials, (int, np.integer)) or trials < 1:
-        raise FgdwaError(f"trials = {trials!r}: must be an integer >= 1")
+        raise FgdwaError(f"trials = {short_repr(trials)}: must be an integer >= 1")
     if isinstance(base_seed, bool) or not isinstance(base_seed, (int, np.integer)) or base_seed < 0:
-        raise FgdwaError(f"seed = {base_seed!r}: must be an integer >= 0")
+        raise FgdwaError(f"seed = {short_repr(base_seed)}: must be an integer >= 0")
     setup = setup if setup is not None else DYNABARN_SETUP
     return [DynabarnTask(dataset.world(wid), planner, mapping, trial, int(base_seed) + trial, setup)
             for wid in world_ids for planner in planners for trial in range(int(trials))]

@@ -32,6 +32,7 @@ from fgdwa.bench.recordings import RECORDED_ROLLOUTS, record_failures
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.stats import SIGNIFICANCE, SMALL_SAMPLE, finishing_rate
 from fgdwa.sim.scenario import Scenario, run_scenario, trial_variation
+from fgdwa.file_limits import short_repr
 
 
 @dataclass(frozen=True)
@@ -170,10 +171,10 @@ def resolve_scenario(source) -> Scenario:
     if callable(source):
         scenario = source()
         if not isinstance(scenario, Scenario):
-            raise FgdwaError(f"scenario factory {source!r} returned {type(scenario).__name__}, not a Scenario")
+            raise FgdwaError(f"scenario factory {short_repr(source)} returned {type(scenario).__name__}, not a Scenario")
         return scenario
     if not isinstance(source, str):
-        raise FgdwaError(f"scenario = {source!r}: expected a name, a YAML path or text, a callable or a Scenario")
+        raise FgdwaError(f"scenario = {short_repr(source)}: expected a name, a YAML path or text, a callable or a Scenario")
     from fgdwa.io.scenario_file import load_scenario
 
     return load_scenario(source)
@@ -280,7 +281,7 @@ def trial_failures(result: "ExperimentResult", recordings: Optional[dict] = None
 def trial_tasks(spec: ExperimentSpec, trials: int, base_seed: int = 0, options: Optional[dict] = None) -> list:
     """Every (planner, trial) task of an experiment; trial i has seed base_seed + i for every planner."""
     if isinstance(trials, bool) or not isinstance(trials, (int, np.integer)) or trials < 1:
-        raise FgdwaError(f"trials = {trials!r}: must be an integer >= 1")
+        raise FgdwaError(f"trials = {short_repr(trials)}: must be an integer >= 1")
     items = tuple(sorted((options or {}).items()))
     return [TrialTask(spec.name, spec.scenario, planner, i, int(base_seed) + i, items)
             for i in range(int(trials)) for planner in spec.planners]
@@ -479,7 +480,7 @@ def run_experiments(specs: Sequence[Union[ExperimentSpec, str]], trials: int = 1
     specs = [EXPERIMENTS[s] if isinstance(s, str) and s in EXPERIMENTS else s for s in specs]
     for spec in specs:
         if not isinstance(spec, ExperimentSpec):
-            raise FgdwaError(f"experiment {spec!r}: expected one of {', '.join(EXPERIMENTS)} or an ExperimentSpec")
+            raise FgdwaError(f"experiment {short_repr(spec)}: expected one of {', '.join(EXPERIMENTS)} or an ExperimentSpec")
     tasks = [task for spec in specs for task in trial_tasks(spec, trials, base_seed, options)]
     tic = time.perf_counter()
     records = run_tasks(tasks, run_trial, executor=executor, scheduler=scheduler, workers=workers, progress=progress,

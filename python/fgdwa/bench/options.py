@@ -12,6 +12,7 @@ import numpy as np
 
 from fgdwa._core import FgdwaError
 from fgdwa.bench.runner import DEFAULT_WORKERS, EXECUTORS
+from fgdwa.file_limits import short_repr
 
 
 def positive(text: str) -> int:
@@ -76,11 +77,11 @@ def check_sensing(owner: str, noise_std, dropout, latency) -> None:
             and math.isfinite(value)
 
     if not (number(noise_std) and noise_std >= 0):
-        raise FgdwaError(f"{owner}.noise_std = {noise_std!r}: must be a finite number >= 0 (m)")
+        raise FgdwaError(f"{owner}.noise_std = {short_repr(noise_std)}: must be a finite number >= 0 (m)")
     if not (number(dropout) and 0 <= dropout < 1):
-        raise FgdwaError(f"{owner}.dropout = {dropout!r}: must be in [0, 1) (a probability)")
+        raise FgdwaError(f"{owner}.dropout = {short_repr(dropout)}: must be in [0, 1) (a probability)")
     if isinstance(latency, bool) or not isinstance(latency, (int, np.integer)) or latency < 0:
-        raise FgdwaError(f"{owner}.latency = {latency!r}: must be an integer >= 0 (control cycles)")
+        raise FgdwaError(f"{owner}.latency = {short_repr(latency)}: must be an integer >= 0 (control cycles)")
 
 
 def planner_list(planners, known: Sequence[str]) -> list:
@@ -92,5 +93,5 @@ def planner_list(planners, known: Sequence[str]) -> list:
         raise FgdwaError("planners: name at least one (e.g. fgdwa,dwb)")
     for name in planners:
         if name not in known:
-            raise FgdwaError(f"planner {name!r} unknown (known: {', '.join(known)})")
+            raise FgdwaError(f"planner {short_repr(name)} unknown (known: {', '.join(known)})")
     return planners

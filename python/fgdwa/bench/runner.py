@@ -16,6 +16,7 @@ from typing import Callable, Optional, Sequence
 import numpy as np
 
 from fgdwa._core import FgdwaError
+from fgdwa.file_limits import short_repr
 
 EXECUTORS = ("local", "dask", "serial")
 DEFAULT_WORKERS = 2
@@ -35,11 +36,11 @@ def run_tasks(tasks: Sequence, runner: Callable, executor: str = "local", schedu
     FgdwaError for a task that cannot be sent to another process; it is called
     for every task unless the executor is "serial"."""
     if executor not in EXECUTORS:
-        raise FgdwaError(f"executor = {executor!r}: expected one of {', '.join(EXECUTORS)}")
+        raise FgdwaError(f"executor = {short_repr(executor)}: expected one of {', '.join(EXECUTORS)}")
     if scheduler is not None and executor != "dask":
-        raise FgdwaError(f"scheduler = {scheduler!r}: only the dask executor takes a scheduler address")
+        raise FgdwaError(f"scheduler = {short_repr(scheduler)}: only the dask executor takes a scheduler address")
     if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
-        raise FgdwaError(f"workers = {workers!r}: must be an integer >= 1")
+        raise FgdwaError(f"workers = {short_repr(workers)}: must be an integer >= 1")
     tasks = list(tasks)
     if executor != "serial" and check_task is not None:
         for task in tasks:
@@ -78,7 +79,7 @@ def _run_dask(tasks, scheduler, workers, bar, results, runner) -> None:
         try:
             client = Client(scheduler, timeout=SCHEDULER_TIMEOUT)
         except Exception as error:  # noqa: BLE001 - dask raises OSError, TimeoutError, ValueError and more here
-            raise FgdwaError(f"scheduler = {scheduler!r}: no dask scheduler answered within {SCHEDULER_TIMEOUT:g} s "
+            raise FgdwaError(f"scheduler = {short_repr(scheduler)}: no dask scheduler answered within {SCHEDULER_TIMEOUT:g} s "
                              f"({type(error).__name__}: {str(error)[:200]}); start one with `dask scheduler` "
                              f"and workers with `dask worker ADDRESS`, or leave --scheduler out for a local "
                              f"cluster") from None

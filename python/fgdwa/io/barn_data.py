@@ -33,7 +33,7 @@ import numpy as np
 
 from fgdwa import file_limits as limits
 from fgdwa._core import FgdwaError, OccupancyGrid
-from fgdwa.file_limits import npz_names, read_npz_member, unreadable_as_error
+from fgdwa.file_limits import npz_names, read_npz_member, unreadable_as_error, short_repr
 
 # --- the format's constants (docs/barn.md) ----------------------------------------
 RESOLUTION = 0.15  # m per cell; also the spacing of the challenge's cylinders
@@ -76,12 +76,12 @@ def barn_score(success: bool, time: float, optimal_time: float) -> float:
     """
     ot = float(optimal_time)
     if not (math.isfinite(ot) and ot > 0):
-        raise FgdwaError(f"barn_score: optimal_time = {optimal_time!r}: must be a finite number > 0")
+        raise FgdwaError(f"barn_score: optimal_time = {short_repr(optimal_time)}: must be a finite number > 0")
     if not success:
         return 0.0
     t = float(time)
     if math.isnan(t) or t < 0:
-        raise FgdwaError(f"barn_score: time = {time!r}: a successful run needs a time >= 0")
+        raise FgdwaError(f"barn_score: time = {short_repr(time)}: a successful run needs a time >= 0")
     return ot / min(max(t, 2.0 * ot), 8.0 * ot)
 
 
@@ -158,7 +158,7 @@ class BarnDataset:
 
     def __getitem__(self, index) -> BarnWorld:
         if not isinstance(index, (int, np.integer)) or isinstance(index, bool):
-            raise FgdwaError(f"{self.source}: worlds are indexed by position (int), got {index!r}; "
+            raise FgdwaError(f"{self.source}: worlds are indexed by position (int), got {short_repr(index)}; "
                              f"use .world(world_id) for a BARN world id or .select(spec) for a selection")
         k = int(index)
         if not -len(self) <= k < len(self):
@@ -182,7 +182,7 @@ class BarnDataset:
         try:
             return self._index[int(world_id)]
         except (KeyError, TypeError, ValueError):
-            raise FgdwaError(f"{self.source}: world {world_id!r} is not in this data set "
+            raise FgdwaError(f"{self.source}: world {short_repr(world_id)} is not in this data set "
                              f"({describe_world_ids(self._ids)})") from None
 
     def world(self, world_id: int) -> BarnWorld:
@@ -203,7 +203,7 @@ class BarnDataset:
         try:
             ids = [int(i) for i in selection]
         except (TypeError, ValueError):
-            raise FgdwaError(f"world selection {selection!r}: expected a string such as '0-49' or world ids") from None
+            raise FgdwaError(f"world selection {short_repr(selection)}: expected a string such as '0-49' or world ids") from None
         for wid in ids:
             self.index_of(wid)
         return list(dict.fromkeys(ids))
@@ -321,7 +321,7 @@ def _check_arrays(name: str, a: dict, keys: Sequence[str]) -> None:
     _check_float(fail, a, "time_limit", ())
     for key in ("resolution", "goal_radius", "time_limit"):
         if float(a[key]) <= 0:
-            fail(key, f"{float(a[key])!r}: must be > 0")
+            fail(key, f"{short_repr(float(a[key]))}: must be > 0")
     if np.any(a["optimal_time"] <= 0):
         fail("optimal_time", "values must be > 0 (seconds)")
 
@@ -329,7 +329,7 @@ def _check_arrays(name: str, a: dict, keys: Sequence[str]) -> None:
     # finite run, positions that keep their precision.
     resolution = float(a["resolution"])
     if not limits.MIN_RESOLUTION <= resolution <= limits.MAX_RESOLUTION:
-        fail("resolution", f"{resolution!r}: must be within [{limits.MIN_RESOLUTION:g}, {limits.MAX_RESOLUTION:g}] "
+        fail("resolution", f"{short_repr(resolution)}: must be within [{limits.MIN_RESOLUTION:g}, {limits.MAX_RESOLUTION:g}] "
                            f"m per cell (fgdwa.file_limits.MIN_RESOLUTION, MAX_RESOLUTION)")
     origin = tuple(float(v) for v in a["origin"])
     x0, y0 = origin
@@ -339,14 +339,14 @@ def _check_arrays(name: str, a: dict, keys: Sequence[str]) -> None:
                        f"within +-{limits.MAX_COORDINATE:g} m (fgdwa.file_limits.MAX_COORDINATE)")
     time_limit = float(a["time_limit"])
     if time_limit > limits.MAX_DURATION:
-        fail("time_limit", f"{time_limit!r}: must be <= {limits.MAX_DURATION:g} s of simulated time "
+        fail("time_limit", f"{short_repr(time_limit)}: must be <= {limits.MAX_DURATION:g} s of simulated time "
                            f"(fgdwa.file_limits.MAX_DURATION)")
     slowest = float(np.max(a["optimal_time"]))
     if slowest > time_limit:
-        fail("optimal_time", f"{slowest!r} s is over the time limit {time_limit:g} s: every run that succeeded "
+        fail("optimal_time", f"{short_repr(slowest)} s is over the time limit {time_limit:g} s: every run that succeeded "
                              f"would score the best 0.5 however slow")
     if abs(float(a["start"][2])) > limits.MAX_MAGNITUDE:
-        fail("start", f"yaw {float(a['start'][2])!r}: must be within +-{limits.MAX_MAGNITUDE:g} rad")
+        fail("start", f"yaw {short_repr(float(a['start'][2]))}: must be within +-{limits.MAX_MAGNITUDE:g} rad")
 
     # The task must be one: start and goal on the map, apart by more than the goal radius.
     def inside(point):
@@ -359,7 +359,7 @@ def _check_arrays(name: str, a: dict, keys: Sequence[str]) -> None:
     distance = float(np.hypot(*(goal - start)))
     goal_radius = float(a["goal_radius"])
     if goal_radius >= distance:
-        fail("goal_radius", f"{goal_radius!r} m holds the start ({distance:g} m from the goal): every run would "
+        fail("goal_radius", f"{short_repr(goal_radius)} m holds the start ({distance:g} m from the goal): every run would "
                             f"succeed before the robot moved")
     for key, point in (("start", start), ("goal", goal)):
         row = min(int((point[1] - y0) / resolution), GRID_SHAPE[0] - 1)
@@ -438,7 +438,7 @@ def parse_world_selection(text: str, available: Optional[Iterable[int]] = None, 
     (the dynamic benchmark's seeds use the same syntax).
     """
     if not isinstance(text, str):
-        raise FgdwaError(f"{what} {text!r}: expected a string such as 'all', '0,6,12' or '0-49'")
+        raise FgdwaError(f"{what} {short_repr(text)}: expected a string such as 'all', '0,6,12' or '0-49'")
     have = None if available is None else sorted(set(int(i) for i in available))
     have_set = None if have is None else set(have)
     spec = text.strip()
@@ -454,25 +454,25 @@ def parse_world_selection(text: str, available: Optional[Iterable[int]] = None, 
         if item.isdigit():
             wid = int(item)
             if have_set is not None and wid not in have_set:
-                raise FgdwaError(f"{what} {text!r}: world {wid} is not in the data set "
+                raise FgdwaError(f"{what} {short_repr(text)}: world {wid} is not in the data set "
                                  f"({describe_world_ids(have)})")
             ids.append(wid)
             continue
         match = _RANGE.match(item)
         if not match:
-            raise FgdwaError(f"{what} {text!r}: cannot read {item!r} (expected 'all', a {noun} such as "
+            raise FgdwaError(f"{what} {short_repr(text)}: cannot read {short_repr(item)} (expected 'all', a {noun} such as "
                              f"'12', or a range such as '0-49' or '0-299:6')")
         first, last = int(match.group(1)), int(match.group(2))
         step = int(match.group(3)) if match.group(3) else 1
         if last < first:
-            raise FgdwaError(f"{what} {text!r}: range {item!r} runs backwards")
+            raise FgdwaError(f"{what} {short_repr(text)}: range {short_repr(item)} runs backwards")
         if step < 1:
-            raise FgdwaError(f"{what} {text!r}: range {item!r} needs a step >= 1")
+            raise FgdwaError(f"{what} {short_repr(text)}: range {short_repr(item)} needs a step >= 1")
         chosen = range(first, last + 1, step)
         if have_set is not None:
             chosen = [wid for wid in chosen if wid in have_set]
             if not chosen:
-                raise FgdwaError(f"{what} {text!r}: no world of {item!r} is in the data set "
+                raise FgdwaError(f"{what} {short_repr(text)}: no world of {short_repr(item)} is in the data set "
                                  f"({describe_world_ids(have)})")
         ids.extend(chosen)
     return list(dict.fromkeys(ids))

@@ -20,7 +20,7 @@ from typing import Iterable, List, Optional, Union
 import numpy as np
 
 from fgdwa._core import FgdwaError
-from fgdwa.file_limits import read_text
+from fgdwa.file_limits import read_text, short_repr
 from fgdwa.io.barn_data import describe_world_ids, find_data_file, parse_world_selection
 from fgdwa.io.scenario_values import ValueReader, join_key
 from fgdwa.sim.keyframes import KeyframedMover
@@ -71,7 +71,7 @@ class DynabarnDataset:
 
     def world(self, world_id: int) -> DynabarnWorld:
         if world_id not in self._worlds:
-            raise FgdwaError(f"DynaBARN world {world_id!r}: not in {self.source} "
+            raise FgdwaError(f"DynaBARN world {short_repr(world_id)}: not in {self.source} "
                              f"({describe_world_ids(self.world_ids)})")
         return self._worlds[world_id]
 

@@ -19,6 +19,7 @@ import numpy as np
 import yaml
 
 from fgdwa._core import FgdwaError, robot_preset
+from fgdwa.file_limits import short_repr
 
 FIELD_SIZE = (12.0, 8.0)  # m, the room's outer size; its walls are one cell thick
 RESOLUTION = 0.1  # m per cell
@@ -60,13 +61,13 @@ LEVELS = {
 
 def check_level(level) -> str:
     if level not in LEVELS:
-        raise FgdwaError(f"level = {level!r}: expected one of {', '.join(LEVELS)}")
+        raise FgdwaError(f"level = {short_repr(level)}: expected one of {', '.join(LEVELS)}")
     return level
 
 
 def check_field_seed(seed) -> int:
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-        raise FgdwaError(f"seed = {seed!r}: must be an integer >= 0")
+        raise FgdwaError(f"seed = {short_repr(seed)}: must be an integer >= 0")
     return int(seed)
 
 
@@ -172,9 +173,9 @@ def generate_field(level: str, seed: int, noise_std: float = NOISE_STD, dropout:
     level = check_level(level)
     seed = check_field_seed(seed)
     if not (isinstance(noise_std, (int, float)) and math.isfinite(noise_std) and noise_std >= 0):
-        raise FgdwaError(f"noise_std = {noise_std!r}: must be a finite number >= 0 (m)")
+        raise FgdwaError(f"noise_std = {short_repr(noise_std)}: must be a finite number >= 0 (m)")
     if not (isinstance(dropout, (int, float)) and math.isfinite(dropout) and 0 <= dropout < 1):
-        raise FgdwaError(f"dropout = {dropout!r}: must be in [0, 1) (a probability)")
+        raise FgdwaError(f"dropout = {short_repr(dropout)}: must be in [0, 1) (a probability)")
     spec = LEVELS[level]
     rng = np.random.default_rng([seed, list(LEVELS).index(level)])
     robot = robot_preset("default")

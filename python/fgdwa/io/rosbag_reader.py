@@ -21,6 +21,7 @@ from typing import Dict, Iterator, List, Optional, Tuple
 import numpy as np
 
 from fgdwa._core import FgdwaError
+from fgdwa.file_limits import short_repr
 
 MAGIC = b"#ROSBAG V2.0\n"
 OP_MESSAGE, OP_BAG_HEADER, OP_INDEX, OP_CHUNK, OP_CHUNK_INFO, OP_CONNECTION = 0x02, 0x03, 0x04, 0x05, 0x06, 0x07
@@ -81,7 +82,7 @@ def _records(buffer: bytes, start: int, where: str) -> Iterator[Tuple[Dict[str, 
 
 def _uint32(fields: Dict[str, bytes], name: str, where: str) -> int:
     if name not in fields or len(fields[name]) != 4:
-        raise FgdwaError(f"{where}: record without a 4-byte {name!r} field")
+        raise FgdwaError(f"{where}: record without a 4-byte {short_repr(name)} field")
     return struct.unpack("<I", fields[name])[0]
 
 
@@ -89,7 +90,7 @@ def _text(value: bytes, what: str, where: str) -> str:
     try:
         return value.decode("utf-8")
     except UnicodeDecodeError:
-        raise FgdwaError(f"{where}: the {what} {value[:40]!r} is not UTF-8 text") from None
+        raise FgdwaError(f"{where}: the {what} {short_repr(value[:40])} is not UTF-8 text") from None
 
 
 def _chunk_data(fields: Dict[str, bytes], data: bytes, where: str) -> bytes:
@@ -107,7 +108,7 @@ def _chunk_data(fields: Dict[str, bytes], data: bytes, where: str) -> bytes:
         if len(out) != size or not (decompressor.eof or decompressor.needs_input):
             raise FgdwaError(f"{where}: a bz2 chunk that expands past its declared {size} bytes")
         return out
-    raise FgdwaError(f"{where}: chunks compressed with {compression!r}; fgdwa reads uncompressed and bz2 bags. "
+    raise FgdwaError(f"{where}: chunks compressed with {short_repr(compression)}; fgdwa reads uncompressed and bz2 bags. "
                      f"Write an uncompressed copy with: rosbag decompress {where}")
 
 
@@ -116,11 +117,11 @@ def read_bag(path) -> Iterator[BagMessage]:
     where = str(path)
     file = Path(path)
     if not file.is_file():
-        raise FgdwaError(f"bag {where!r}: no such file")
+        raise FgdwaError(f"bag {short_repr(where)}: no such file")
     buffer = file.read_bytes()
     if not buffer.startswith(MAGIC):
         version = buffer[:13].split(b"\n")[0].decode("ascii", "replace")
-        raise FgdwaError(f"bag {where!r}: not a ROS bag of format 2.0 (starts with {version!r})")
+        raise FgdwaError(f"bag {short_repr(where)}: not a ROS bag of format 2.0 (starts with {short_repr(version)})")
     connections: Dict[int, Connection] = {}
 
     def connection(fields, data):
@@ -142,10 +143,10 @@ def read_bag(path) -> Iterator[BagMessage]:
                 elif inner_op == OP_MESSAGE:
                     conn = _uint32(inner, "conn", where)
                     if conn not in connections:
-                        raise FgdwaError(f"bag {where!r}: a message on connection {conn} before its connection record")
+                        raise FgdwaError(f"bag {short_repr(where)}: a message on connection {conn} before its connection record")
                     stamp = inner.get("time", b"")
                     if len(stamp) != 8:
-                        raise FgdwaError(f"bag {where!r}: a message without its 8-byte time")
+                        raise FgdwaError(f"bag {short_repr(where)}: a message without its 8-byte time")
                     sec, nsec = struct.unpack("<II", stamp)
                     c = connections[conn]
                     yield BagMessage(c.topic, c.type, sec + 1e-9 * nsec, payload)
@@ -271,13 +272,13 @@ def topic_of_type(available: Dict[str, Tuple[str, int]], kind: str, given: Optio
     """The bag's one topic of ``kind``, or ``given`` checked; FgdwaError saying which to choose otherwise."""
     if given is not None:
         if given not in available:
-            raise FgdwaError(f"bag {where!r}: no topic {given!r} (it has {', '.join(sorted(available))})")
+            raise FgdwaError(f"bag {short_repr(where)}: no topic {short_repr(given)} (it has {', '.join(sorted(available))})")
         if available[given][0] != kind:
-            raise FgdwaError(f"bag {where!r}: topic {given!r} is {available[given][0]}, not {kind}")
+            raise FgdwaError(f"bag {short_repr(where)}: topic {short_repr(given)} is {available[given][0]}, not {kind}")
         return given
     matching = sorted(t for t, (k, _) in available.items() if k == kind)
     if not matching:
-        raise FgdwaError(f"bag {where!r}: no {kind} topic (it has {', '.join(sorted(available)) or 'nothing'})")
+        raise FgdwaError(f"bag {short_repr(where)}: no {kind} topic (it has {', '.join(sorted(available)) or 'nothing'})")
     if len(matching) > 1:
-        raise FgdwaError(f"bag {where!r}: several {kind} topics ({', '.join(matching)}); name one")
+        raise FgdwaError(f"bag {short_repr(where)}: several {kind} topics ({', '.join(matching)}); name one")
     return matching[0]

@@ -14,7 +14,7 @@ import numpy as np
 
 from fgdwa import file_limits as limits
 from fgdwa._core import FgdwaError, OccupancyGrid, TerrainGrid
-from fgdwa.file_limits import clip, load_npy
+from fgdwa.file_limits import clip, load_npy, short_repr
 from fgdwa.io.scenario_values import ValueReader, join_key
 from fgdwa.sim.world import World
 
@@ -181,7 +181,7 @@ class MapReader(ValueReader):
         bad = ~np.isin(array, allowed)
         if bad.any():
             r, c = np.argwhere(bad)[0]
-            self.fail(key, value, f"cell [{r}, {c}] = {array[r, c]!r}: every cell must be {what}")
+            self.fail(key, value, f"cell [{r}, {c}] = {short_repr(array[r, c])}: every cell must be {what}")
         return np.ascontiguousarray(array.astype(np.uint8))
 
     def same_layout(self, cells: np.ndarray, layout: Layout, key: str, value: Any, per_char_text: bool):

@@ -35,6 +35,7 @@ from fgdwa._core import FgdwaError  # noqa: E402
 from fgdwa.plot.episode import FAN_COLOURS, MOVER_COLOUR, draw_world, footprint_patch, placed_outline  # noqa: E402
 from fgdwa.sim.episode import EpisodeResult  # noqa: E402
 from fgdwa.sim.scenario import Scenario, scenario_params, trial_variation  # noqa: E402
+from fgdwa.file_limits import short_repr
 
 FRAME_SIZE = (11.2, 6.4)  # inches; 1120 x 640 pixels at the default 100 dpi
 STATUS_POINTS = 10  # the status lines' font size
@@ -44,7 +45,7 @@ CIRCLE = np.column_stack([np.cos(np.linspace(0, 2 * np.pi, 33)), np.sin(np.linsp
 def frame_indices(steps: int, max_frames: int = 150) -> np.ndarray:
     """Up to ``max_frames`` cycle indices from 0 to ``steps`` (the final pose), evenly spread."""
     if max_frames < 2:
-        raise ValueError(f"max_frames = {max_frames!r}: must be >= 2")
+        raise ValueError(f"max_frames = {short_repr(max_frames)}: must be >= 2")
     count = min(int(max_frames), steps + 1)
     return np.unique(np.linspace(0, steps, count).round().astype(int))
 

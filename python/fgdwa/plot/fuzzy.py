@@ -16,6 +16,7 @@ import numpy as np  # noqa: E402
 from fgdwa._core import FgdwaError, MamdaniEngine, paper_fuzzy_controller  # noqa: E402
 from fgdwa.fuzzy import engine_from_dict  # noqa: E402
 from fgdwa.plot.episode import save_figure  # noqa: E402
+from fgdwa.file_limits import short_repr
 
 # Axis labels for the paper's variable names.
 _PAPER_LABELS = {
@@ -34,7 +35,7 @@ def _as_engine(engine_or_preset: Union[MamdaniEngine, Mapping, str]) -> MamdaniE
     if engine_or_preset == "paper":
         return paper_fuzzy_controller()
     raise FgdwaError(f"engine: expected a MamdaniEngine, a configuration mapping or 'paper', "
-                     f"got {engine_or_preset!r}")
+                     f"got {short_repr(engine_or_preset)}")
 
 
 def plot_control_surfaces(engine_or_preset: Union[MamdaniEngine, Mapping, str] = "paper",
@@ -51,9 +52,9 @@ def plot_control_surfaces(engine_or_preset: Union[MamdaniEngine, Mapping, str] =
     if len(engine.inputs) != 2:
         raise FgdwaError(f"engine: control surfaces need exactly 2 inputs, this one has {len(engine.inputs)}")
     if kind not in ("surface", "heatmap"):
-        raise FgdwaError(f"kind = {kind!r}: must be 'surface' or 'heatmap'")
+        raise FgdwaError(f"kind = {short_repr(kind)}: must be 'surface' or 'heatmap'")
     if isinstance(points, bool) or not isinstance(points, numbers.Integral) or points < 2:
-        raise FgdwaError(f"points = {points!r}: must be an integer >= 2")
+        raise FgdwaError(f"points = {short_repr(points)}: must be an integer >= 2")
     text = {**_PAPER_LABELS, **(labels or {})}
     x_var, y_var = engine.inputs
     xs = np.linspace(x_var.lo, x_var.hi, int(points))

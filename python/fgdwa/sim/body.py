@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from fgdwa._core import FgdwaError, Twist, unicycle_step, wrap_angle
-from fgdwa.file_limits import MAX_STEPS
+from fgdwa.file_limits import MAX_STEPS, short_repr
 
 ACTUATION_STREAM = 1  # the second word of the actuators' generator seed: (seed, ACTUATION_STREAM)
 ODOMETRY_STREAM = 2
@@ -31,7 +31,7 @@ def _non_negative_pair(value, name: str, units: str) -> np.ndarray:
     except (TypeError, ValueError):
         pair = None
     if pair is None or pair.shape != (2,) or not np.all(np.isfinite(pair)) or np.any(pair < 0):
-        raise FgdwaError(f"{name} = {value!r}: expected two finite numbers >= 0 ({units})")
+        raise FgdwaError(f"{name} = {short_repr(value)}: expected two finite numbers >= 0 ({units})")
     return pair
 
 
@@ -43,7 +43,7 @@ MAX_SEED = (2**64 - 1 - MAX_STEPS) // SCAN_SEED_STRIDE
 def check_seed(seed) -> int:
     """The episode's seed as a Python int: an integer in [0, MAX_SEED]."""
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= seed <= MAX_SEED:
-        raise FgdwaError(f"seed = {seed!r}: must be an integer in [0, {MAX_SEED}]")
+        raise FgdwaError(f"seed = {short_repr(seed)}: must be an integer in [0, {MAX_SEED}]")
     return int(seed)
 
 
@@ -60,7 +60,7 @@ class BodySettings:
     def __post_init__(self):
         latency = self.latency
         if isinstance(latency, bool) or not isinstance(latency, (int, np.integer)) or latency < 0:
-            raise FgdwaError(f"latency = {latency!r}: must be an integer >= 0 (control cycles)")
+            raise FgdwaError(f"latency = {short_repr(latency)}: must be an integer >= 0 (control cycles)")
         object.__setattr__(self, "actuation_noise",
                            tuple(_non_negative_pair(self.actuation_noise, "actuation_noise", "std of v in m/s, "
                                                     "std of omega in rad/s")))
@@ -72,7 +72,7 @@ class BodySettings:
             # Compared before any conversion: a huge integer has no float.
             if isinstance(value, bool) or not isinstance(value, (int, float, np.floating, np.integer)) \
                     or not 0 <= value <= top:
-                raise FgdwaError(f"{name} = {value!r}: must be a number in [0, {top:g}] ({unit})")
+                raise FgdwaError(f"{name} = {short_repr(value)}: must be a number in [0, {top:g}] ({unit})")
 
 
 # The bodies the benchmarks run: "default", what a wheeled robot with wheel
@@ -95,7 +95,7 @@ def body_profile(body) -> BodySettings:
         return body
     if isinstance(body, str) and body in BODY_PROFILES:
         return BODY_PROFILES[body]
-    raise FgdwaError(f"body = {body!r}: expected a BodySettings or one of {', '.join(BODY_PROFILES)}")
+    raise FgdwaError(f"body = {short_repr(body)}: expected a BodySettings or one of {', '.join(BODY_PROFILES)}")
 
 
 class Body:

@@ -50,6 +50,7 @@ from fgdwa.sim.body import DEFAULT_BODY, SCAN_SEED_STRIDE, Body, body_settings, 
 from fgdwa.sim.referee import (DANGER_MARGIN, Contact, collides_during_step, collision_contact,
                                danger_point_clearance, danger_points, falls, path_length, smoothness)
 from fgdwa.sim.world import World
+from fgdwa.file_limits import short_repr
 
 OUTCOMES = ("success", "collision", "fall", "failed", "timeout")
 
@@ -167,14 +168,14 @@ class EpisodeResult:
 def _as_pose(value, name: str) -> np.ndarray:
     pose = np.asarray(value, dtype=float)
     if pose.shape != (3,) or not np.all(np.isfinite(pose)):
-        raise FgdwaError(f"{name}: expected a finite (x, y, theta), got {value!r}")
+        raise FgdwaError(f"{name}: expected a finite (x, y, theta), got {short_repr(value)}")
     return pose
 
 
 def _as_point(value, name: str) -> np.ndarray:
     point = np.asarray(value, dtype=float)
     if point.shape != (2,) or not np.all(np.isfinite(point)):
-        raise FgdwaError(f"{name}: expected a finite (x, y), got {value!r}")
+        raise FgdwaError(f"{name}: expected a finite (x, y), got {short_repr(value)}")
     return point
 
 
@@ -297,16 +298,16 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     start_pose = _as_pose(start, "start")
     goal_point = _as_point(goal, "goal")
     if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
-        raise FgdwaError(f"max_steps = {max_steps!r}: must be an integer >= 1")
+        raise FgdwaError(f"max_steps = {short_repr(max_steps)}: must be an integer >= 1")
     tolerance = params.goal_tolerance if goal_tolerance is None else float(goal_tolerance)
     if not np.isfinite(tolerance) or tolerance < 0:
-        raise FgdwaError(f"goal_tolerance = {goal_tolerance!r}: must be >= 0")
+        raise FgdwaError(f"goal_tolerance = {short_repr(goal_tolerance)}: must be >= 0")
     margin = options.goal_margin
     if margin is None:
         margin = GOAL_MARGIN if max(settings_of_body.odometry_drift) > 0 else 0.0
     if isinstance(margin, bool) or not isinstance(margin, (int, float, np.integer, np.floating)) \
             or not 0 <= margin <= 10:
-        raise FgdwaError(f"goal_margin = {margin!r}: must be a number in [0, 10] (m)")
+        raise FgdwaError(f"goal_margin = {short_repr(margin)}: must be a number in [0, 10] (m)")
     if margin > 0:
         params = copy.copy(params)
         params.goal_tolerance = max(tolerance - margin, 0.5 * tolerance, 1e-3)

@@ -29,6 +29,7 @@ from typing import Optional
 import numpy as np
 
 from fgdwa._core import Disc, FgdwaError
+from fgdwa.file_limits import short_repr
 
 # ignition-math compares points within this (Vector3::operator==) and times
 # within this (math::equal's default).
@@ -77,11 +78,11 @@ class KeyframedMover:
 
     def __post_init__(self):
         if not (isinstance(self.radius, (int, float)) and math.isfinite(self.radius) and self.radius > 0):
-            raise FgdwaError(f"keyframed mover radius = {self.radius!r}: must be a finite number > 0 (m)")
+            raise FgdwaError(f"keyframed mover radius = {short_repr(self.radius)}: must be a finite number > 0 (m)")
         try:
             frames = np.asarray(self.keyframes, dtype=float)
         except (TypeError, ValueError):
-            raise FgdwaError(f"keyframed mover keyframes = {self.keyframes!r}: expected (k, 3) numbers [t, x, y]") \
+            raise FgdwaError(f"keyframed mover keyframes = {short_repr(self.keyframes)}: expected (k, 3) numbers [t, x, y]") \
                 from None
         if frames.ndim != 2 or frames.shape[1] != 3 or len(frames) < 2 or not np.all(np.isfinite(frames)):
             raise FgdwaError(f"keyframed mover keyframes: expected (k >= 2, 3) finite [t s, x m, y m], "
@@ -89,18 +90,18 @@ class KeyframedMover:
         times = frames[:, 0]
         if times[0] < 0 or np.any(np.diff(times) <= 0):
             bad = int(np.argmax(np.diff(times) <= 0)) + 1 if times[0] >= 0 else 0
-            raise FgdwaError(f"keyframed mover keyframes[{bad}]: time {times[bad]!r} s: times must start >= 0 "
+            raise FgdwaError(f"keyframed mover keyframes[{bad}]: time {short_repr(times[bad])} s: times must start >= 0 "
                              "and increase")
         object.__setattr__(self, "keyframes", frames)
         length = float(times[-1]) if self.length is None else self.length
         if not (isinstance(length, (int, float)) and math.isfinite(length) and length >= times[-1] and length > 0):
-            raise FgdwaError(f"keyframed mover length = {self.length!r}: must be a finite number of seconds "
+            raise FgdwaError(f"keyframed mover length = {short_repr(self.length)}: must be a finite number of seconds "
                              f">= the last keyframe's time ({times[-1]:g} s)")
         object.__setattr__(self, "length", float(length))
         if not isinstance(self.loop, (bool, np.bool_)):
-            raise FgdwaError(f"keyframed mover loop = {self.loop!r}: must be true or false")
+            raise FgdwaError(f"keyframed mover loop = {short_repr(self.loop)}: must be true or false")
         if not (isinstance(self.phase, (int, float)) and math.isfinite(self.phase)):
-            raise FgdwaError(f"keyframed mover phase = {self.phase!r}: must be a finite number of seconds")
+            raise FgdwaError(f"keyframed mover phase = {short_repr(self.phase)}: must be a finite number of seconds")
 
     @cached_property
     def _tangents(self) -> np.ndarray:

@@ -14,6 +14,7 @@ import numpy as np
 
 from fgdwa._core import CollisionWorld, Disc, DistanceField, FgdwaError, Footprint, OccupancyGrid, wrap_angle
 from fgdwa.sim.world import World
+from fgdwa.file_limits import short_repr
 
 DANGER_MARGIN = 0.3  # m beyond the footprint's radius: the default danger clearance
 
@@ -101,7 +102,7 @@ def collides_during_step(truth: CollisionWorld, footprint: Footprint, before, af
     if start_clearance is not None and (isinstance(start_clearance, bool) or
                                         not isinstance(start_clearance, (int, float, np.floating, np.integer))
                                         or np.isnan(start_clearance)):
-        raise FgdwaError(f"start_clearance = {start_clearance!r}: must be a number (m, +inf when nothing is near) "
+        raise FgdwaError(f"start_clearance = {short_repr(start_clearance)}: must be a number (m, +inf when nothing is near) "
                          "or None")
     if discs_at is None:
         discs = truth.discs

@@ -28,6 +28,7 @@ from fgdwa._core import (
 from fgdwa.sim.body import check_seed
 from fgdwa.sim.episode import EpisodeResult, run_episode
 from fgdwa.sim.world import World
+from fgdwa.file_limits import short_repr
 
 def init_keywords(cls) -> tuple:
     """The top-level fields of a parameter class, in declaration order, from its
@@ -53,9 +54,9 @@ class Variability:
         for name in ("start_xy_std", "start_theta_std", "lidar_noise_std", "lidar_dropout"):
             value = getattr(self, name)
             if not (np.isfinite(value) and value >= 0):
-                raise FgdwaError(f"variability {name} = {value!r}: must be a finite number >= 0")
+                raise FgdwaError(f"variability {name} = {short_repr(value)}: must be a finite number >= 0")
         if self.lidar_dropout >= 1:
-            raise FgdwaError(f"variability lidar_dropout = {self.lidar_dropout!r}: must be < 1 (a probability)")
+            raise FgdwaError(f"variability lidar_dropout = {short_repr(self.lidar_dropout)}: must be < 1 (a probability)")
 
 
 @dataclass(frozen=True)

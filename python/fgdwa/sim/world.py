@@ -9,6 +9,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from fgdwa._core import Disc, FgdwaError, OccupancyGrid, TerrainGrid
+from fgdwa.file_limits import short_repr
 
 MOVER_MODES = ("loop", "back_and_forth", "once")
 
@@ -36,27 +37,27 @@ class MovingObstacle:
 
     def __post_init__(self):
         if not (np.isfinite(self.radius) and self.radius > 0):
-            raise FgdwaError(f"moving obstacle radius = {self.radius!r}: must be > 0")
+            raise FgdwaError(f"moving obstacle radius = {short_repr(self.radius)}: must be > 0")
         if self.mode not in MOVER_MODES:
-            raise FgdwaError(f"moving obstacle mode = {self.mode!r}: expected one of {MOVER_MODES}")
+            raise FgdwaError(f"moving obstacle mode = {short_repr(self.mode)}: expected one of {MOVER_MODES}")
         for name in ("start_delay", "phase", "speed"):
             value = getattr(self, name)
             if not np.isfinite(value) or (name != "phase" and value < 0):
-                raise FgdwaError(f"moving obstacle {name} = {value!r}: must be a finite number >= 0")
+                raise FgdwaError(f"moving obstacle {name} = {short_repr(value)}: must be a finite number >= 0")
         if self.waypoints is not None:
             points = np.asarray(self.waypoints, dtype=float)
             if points.ndim != 2 or points.shape[1] != 2 or len(points) < 2 or not np.all(np.isfinite(points)):
-                raise FgdwaError(f"moving obstacle waypoints: expected (k >= 2, 2) finite points, got {self.waypoints!r}")
+                raise FgdwaError(f"moving obstacle waypoints: expected (k >= 2, 2) finite points, got {short_repr(self.waypoints)}")
             object.__setattr__(self, "waypoints", points)
             if self.speed <= 0:
-                raise FgdwaError(f"moving obstacle speed = {self.speed!r}: must be > 0 to follow waypoints")
+                raise FgdwaError(f"moving obstacle speed = {short_repr(self.speed)}: must be > 0 to follow waypoints")
         else:
             start = np.asarray(self.start if self.start is not None else (np.nan, np.nan), dtype=float)
             velocity = np.asarray(self.velocity, dtype=float)
             if start.shape != (2,) or not np.all(np.isfinite(start)):
-                raise FgdwaError(f"moving obstacle start = {self.start!r}: needed (x, y) when there are no waypoints")
+                raise FgdwaError(f"moving obstacle start = {short_repr(self.start)}: needed (x, y) when there are no waypoints")
             if velocity.shape != (2,) or not np.all(np.isfinite(velocity)):
-                raise FgdwaError(f"moving obstacle velocity = {self.velocity!r}: expected (vx, vy)")
+                raise FgdwaError(f"moving obstacle velocity = {short_repr(self.velocity)}: expected (vx, vy)")
 
     @cached_property
     def route(self) -> np.ndarray:
@@ -144,10 +145,10 @@ class World:
             origin = getattr(layer, "origin", self.grid.origin)
             if tuple(layer.shape) != tuple(self.grid.shape) or layer.resolution != self.grid.resolution \
                     or tuple(origin) != tuple(self.grid.origin):
-                raise FgdwaError(f"{name}: its layout {layer!r} differs from the map's {self.grid!r}")
+                raise FgdwaError(f"{name}: its layout {short_repr(layer)} differs from the map's {short_repr(self.grid)}")
         factors = np.asarray(self.passing_factors, dtype=float)
         if factors.shape != (5,) or not np.all((factors >= 0) & (factors <= 1)):
-            raise FgdwaError(f"passing_factors = {self.passing_factors!r}: expected 5 values in [0, 1]")
+            raise FgdwaError(f"passing_factors = {short_repr(self.passing_factors)}: expected 5 values in [0, 1]")
 
     def discs_at(self, t: float) -> list:
         """Every moving obstacle as a Disc at time ``t``, with its velocity then."""
