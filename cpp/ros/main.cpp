@@ -1,13 +1,27 @@
 // fgdwa_node: fgdwa's Navigator as a ROS 1 local planner behind move_base's
 // action interface (docs/ros.md).
+#include <csignal>
+#include <string>
+
 #include <ros/ros.h>
 
 #include "fgdwa/error.hpp"
 #include "navigator_node.hpp"
 #include "node_params.hpp"
 
+namespace {
+
+// The signal that asked the node to stop, 0 while it runs.
+volatile std::sig_atomic_t stop_signal = 0;
+void on_signal(int signal) { stop_signal = signal; }
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "fgdwa_node");
+  // Our own SIGINT and SIGTERM handling: the robot is sent a stop before ROS shuts down.
+  ros::init(argc, argv, "fgdwa_node", ros::init_options::NoSigintHandler);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
   ros::NodeHandle nh, private_nh("~");
   fgdwa_ros::NodeConfig config;
   try {
@@ -23,6 +37,14 @@ int main(int argc, char** argv) {
     return 3;
   }
   fgdwa_ros::NavigatorNode node(nh, private_nh, config);
-  ros::spin();
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  while (ros::ok() && stop_signal == 0) ros::WallDuration(0.01).sleep();
+  spinner.stop();
+  if (stop_signal != 0) {
+    node.shut_down(std::string("fgdwa_node shutting down (") + (stop_signal == SIGINT ? "SIGINT" : "SIGTERM") + ")");
+    ros::WallDuration(0.2).sleep();  // the stop and the action's result on their way out
+  }
+  ros::shutdown();
   return 0;
 }

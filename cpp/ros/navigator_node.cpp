@@ -95,6 +95,8 @@ NavigatorNode::NavigatorNode(ros::NodeHandle nh, ros::NodeHandle private_nh, Nod
   action_.start();
   timer_ = nh_.createTimer(ros::Duration(config_.planner.dt), &NavigatorNode::on_timer, this);
   publish_event("{\"event\": \"config\", \"time\": " + number(0.0) + ", \"config\": " + config_.to_json() + "}");
+  // A node that starts (or restarts after a crash) holds the robot still until a goal comes.
+  publish_stop();
   ROS_INFO("fgdwa_node: preset %s, robot %s, mapping %s, %g Hz; scan %s, odometry %s, goals on move_base "
            "(frame %s)", p.preset.c_str(), p.robot.c_str(), p.mapping.c_str(), 1.0 / config_.planner.dt,
            p.scan_topic.c_str(), p.odom_topic.c_str(), p.global_frame.c_str());
@@ -221,6 +223,18 @@ void NavigatorNode::finish(Outcome outcome, const std::string& reason) {
     ROS_WARN("fgdwa_node: goal aborted: %s (cycle time %s)", reason.c_str(), cycles.c_str());
   else
     ROS_INFO("fgdwa_node: goal %s: %s (cycle time %s)", word, reason.c_str(), cycles.c_str());
+}
+
+void NavigatorNode::shut_down(const std::string& reason) {
+  timer_.stop();
+  if (active_) {
+    finish(Outcome::Aborted, reason);
+  } else {
+    publish_stop();
+  }
+  publish_event("{\"event\": \"shutdown\", \"time\": " + number((ros::Time::now() - start_time_).toSec()) +
+                ", \"reason\": " + json_text(reason) + "}");
+  ROS_INFO("fgdwa_node: %s; robot stopped", reason.c_str());
 }
 
 void NavigatorNode::on_timer(const ros::TimerEvent&) {

@@ -40,6 +40,9 @@ namespace fgdwa_ros {
 class NavigatorNode {
  public:
   NavigatorNode(ros::NodeHandle nh, ros::NodeHandle private_nh, NodeConfig config);
+  // The node is going down (SIGINT, SIGTERM): the robot is sent a stop and an
+  // active goal is aborted with `reason`, so that no client waits on it.
+  void shut_down(const std::string& reason);
 
  private:
   enum class Outcome { Succeeded, Aborted, Preempted };

@@ -23,7 +23,9 @@ ctest runs it (tests/ros/CMakeLists.txt). In turn:
    ``~patience``; a wall across the world (``sim/door``) leaves no path, the robot
    stands and the node waits; when the wall opens it reaches the goal on the world's
    grid, no collision; a goal behind the closed wall is aborted once the patience
-   has run out, naming why.
+   has run out, naming why;
+8. the node stopped (SIGINT) while it drives: the goal ends ABORTED saying so, and
+   the robot is sent a stop.
 
 Every process it starts it stops again, by its own id. Exit 77 (skipped) when
 the BARN data is missing.
@@ -479,6 +481,18 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     check(waited >= patience, f"aborted after {waited:.1f} s, before the patience of {patience} s")
     check_limits(commands[before:])
     rospy.delete_param("/fgdwa_node/patience")
+
+    # 8. The node stopped while it drives: the goal ends ABORTED saying so and the robot is sent a stop.
+    door.publish(Bool(data=False))
+    client.send_goal(goal(0.0, 0.5))
+    wait_for(lambda: abs(referee.get("v", 0.0)) > 0.2, 20, "the robot to start back to the start")
+    procs.stop(launch, signal.SIGINT)
+    state, text = wait_result(10)
+    check(state == GoalStatus.ABORTED and "shutting down" in text, f"node stopped mid-goal: {state_name(state)}, "
+                                                                     f"{text!r}")
+    wait_for(stopped, 5, "the robot to stop after the node did")
+    check(commands[-1][1:] == (0.0, 0.0), f"last command after the node stopped: {commands[-1]}")
+    print(f"node stopped mid-goal: {state_name(state)} ({text}); the robot stopped", flush=True)
     summary["known_map"] = text
     (out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     return 0
