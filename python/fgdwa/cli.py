@@ -308,8 +308,8 @@ def build_parser() -> argparse.ArgumentParser:
     irs.set_defaults(func=lambda args, argv: cmd_irsim(args))
     rep = sub.add_parser("replay", help="rerun fgdwa_node's planner on a ROS bag's scans and odometry and show "
                                         "where its commands differ from the recorded ones (docs/ros.md)")
-    rep.add_argument("bag", help="a ROS 1 bag recorded from fgdwa_node: the scan, odometry, cmd_vel, "
-                                 "/diagnostics and /fgdwa_node/events")
+    rep.add_argument("bag", help="a ROS 1 bag, or a ROS 2 bag's directory or .db3/.mcap file, recorded from "
+                                 "fgdwa_node: the scan, odometry, cmd_vel, /diagnostics and /fgdwa_node/events")
     rep.add_argument("--out", default="out/replay", help="directory for replay.csv, .json, .png (default out/replay)")
     rep.add_argument("--scan-topic", default=None, help="the LaserScan topic, when the bag has several")
     rep.add_argument("--odom-topic", default=None, help="the Odometry topic, when the bag has several")

@@ -1,191 +1,128 @@
-"""Reading ROS 1 bags (format 2.0) without ROS: enough for ``fgdwa replay``.
+"""Reading bags without ROS for ``fgdwa replay``, through the ``rosbags`` library:
+ROS 1 bags (uncompressed, bz2 or lz4 chunks) and ROS 2 bags (a directory with
+its metadata.yaml, sqlite3 or MCAP storage). :func:`read_bag` yields every
+message in time order, deserialized; the ``decode_*`` functions turn the few
+message types replay needs into plain values.
 
-ROS's own ``rosbag`` module imports only under Debian's Python, so fgdwa reads
-the format itself (http://wiki.ros.org/Bags/Format/2.0): a bag is a magic line
-and then records, each a header of ``name=value`` fields and a data block; the
-messages sit in chunks (uncompressed or bz2; lz4 chunks are refused with what
-to do), each message naming its connection, whose record says its topic and
-type. :func:`read_bag` yields every message in file order; the ``decode_*``
-functions deserialize the few message types replay needs from ROS's wire
-format (little-endian, strings and arrays prefixed by a uint32 length).
+A bag is outside data: whatever ``rosbags`` cannot read, or a message it cannot
+deserialize, becomes an FgdwaError naming the bag (and the message), and a
+compressed ROS 1 chunk is expanded no further than ``MAX_EXPANSION`` times its
+size (a few kilobytes of bz2 can expand to gigabytes).
 """
 
 from __future__ import annotations
 
 import bz2
-import struct
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Dict, Iterator, List, Optional, Tuple
+from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 import numpy as np
 
 from fgdwa._core import FgdwaError
-from fgdwa.file_limits import short_repr
+from fgdwa.file_limits import MAX_ARRAY_BYTES, short_repr
 
-MAGIC = b"#ROSBAG V2.0\n"
-OP_MESSAGE, OP_BAG_HEADER, OP_INDEX, OP_CHUNK, OP_CHUNK_INFO, OP_CONNECTION = 0x02, 0x03, 0x04, 0x05, 0x06, 0x07
-
-
-@dataclass(frozen=True)
-class Connection:
-    id: int
-    topic: str
-    type: str  # e.g. "sensor_msgs/LaserScan"
-    md5sum: str
+# A compressed ROS 1 chunk expands to at most this many times its size (plus a
+# mebibyte), and never past MAX_ARRAY_BYTES: bz2 and lz4 reach 10-50 on sensor data.
+MAX_EXPANSION = 1000
 
 
 @dataclass(frozen=True)
 class BagMessage:
     topic: str
-    type: str
+    type: str  # ROS 1 style, e.g. "sensor_msgs/LaserScan", whatever the bag's ROS
     time: float  # s, when the recorder received it
-    data: bytes  # the serialized message
+    data: Any  # the deserialized message
 
 
-def _fields(block: bytes, where: str) -> Dict[str, bytes]:
-    fields, pos = {}, 0
-    while pos < len(block):
-        if pos + 4 > len(block):
-            raise FgdwaError(f"{where}: a header field's length runs past its header")
-        (length,) = struct.unpack_from("<I", block, pos)
-        pos += 4
-        field = block[pos:pos + length]
-        if len(field) != length or b"=" not in field:
-            raise FgdwaError(f"{where}: a malformed header field")
-        name, value = field.split(b"=", 1)
-        fields[name.decode("ascii", "replace")] = value
-        pos += length
-    return fields
+def _bag_path(path) -> Path:
+    """The path rosbags opens: a ROS 1 bag file, or a ROS 2 bag's directory (also
+    when given one of its storage files)."""
+    p = Path(path)
+    if not p.exists():
+        raise FgdwaError(f"bag {short_repr(str(path))}: no such file or directory")
+    if p.is_file() and p.suffix in (".db3", ".mcap") and (p.parent / "metadata.yaml").is_file():
+        return p.parent
+    return p
 
 
-def _records(buffer: bytes, start: int, where: str) -> Iterator[Tuple[Dict[str, bytes], bytes]]:
-    pos = start
-    while pos < len(buffer):
-        if pos + 4 > len(buffer):
-            raise FgdwaError(f"{where}: truncated at byte {pos}")
-        (header_len,) = struct.unpack_from("<I", buffer, pos)
-        header = buffer[pos + 4:pos + 4 + header_len]
-        pos += 4 + header_len
-        if len(header) != header_len or pos + 4 > len(buffer):
-            raise FgdwaError(f"{where}: truncated record at byte {pos} (was the recording stopped cleanly?)")
-        (data_len,) = struct.unpack_from("<I", buffer, pos)
-        data = buffer[pos + 4:pos + 4 + data_len]
-        pos += 4 + data_len
-        if len(data) != data_len:
-            raise FgdwaError(f"{where}: truncated record data at byte {pos} (was the recording stopped cleanly?)")
-        fields = _fields(header, where)
-        if "op" not in fields or len(fields["op"]) != 1:
-            raise FgdwaError(f"{where}: a record without its op field")
-        yield fields, data
+def _bounded(kind: str, where: str):
+    """A decompressor of ``kind`` (bz2 or lz4) that stops at MAX_EXPANSION times its input."""
+    def run(data: bytes) -> bytes:
+        limit = min(MAX_EXPANSION * len(data) + 2**20, MAX_ARRAY_BYTES)
+        if kind == "bz2":
+            decompressor = bz2.BZ2Decompressor()
+        else:
+            import lz4.frame
 
-
-def _uint32(fields: Dict[str, bytes], name: str, where: str) -> int:
-    if name not in fields or len(fields[name]) != 4:
-        raise FgdwaError(f"{where}: record without a 4-byte {short_repr(name)} field")
-    return struct.unpack("<I", fields[name])[0]
-
-
-def _text(value: bytes, what: str, where: str) -> str:
-    try:
-        return value.decode("utf-8")
-    except UnicodeDecodeError:
-        raise FgdwaError(f"{where}: the {what} {short_repr(value[:40])} is not UTF-8 text") from None
-
-
-def _chunk_data(fields: Dict[str, bytes], data: bytes, where: str) -> bytes:
-    compression = fields.get("compression", b"none").decode("ascii", "replace")
-    if compression == "none":
-        return data
-    if compression == "bz2":
-        # No further than the chunk says it holds: a small chunk may expand to gigabytes.
-        size = _uint32(fields, "size", where)
-        decompressor = bz2.BZ2Decompressor()
+            decompressor = lz4.frame.LZ4FrameDecompressor()
         try:
-            out = decompressor.decompress(data, max_length=size)
-        except (OSError, EOFError) as error:
-            raise FgdwaError(f"{where}: a bz2 chunk that does not decompress ({error})") from None
-        if len(out) != size or not (decompressor.eof or decompressor.needs_input):
-            raise FgdwaError(f"{where}: a bz2 chunk that expands past its declared {size} bytes")
+            out = decompressor.decompress(data, max_length=limit)
+        except (OSError, EOFError, RuntimeError) as error:
+            raise FgdwaError(f"{where}: a {kind} chunk that does not decompress ({error})") from None
+        if not decompressor.eof:
+            if len(out) >= limit:
+                raise FgdwaError(f"{where}: a {kind} chunk of {len(data)} bytes expands past {limit} bytes")
+            raise FgdwaError(f"{where}: a {kind} chunk that ends early")
         return out
-    raise FgdwaError(f"{where}: chunks compressed with {short_repr(compression)}; fgdwa reads uncompressed and bz2 bags. "
-                     f"Write an uncompressed copy with: rosbag decompress {where}")
+    return run
+
+
+def _bound_chunks(reader, where: str) -> None:
+    """Every compressed chunk of the ROS 1 bags in ``reader`` expands within bounds."""
+    from rosbags.rosbag1 import reader as rosbag1
+
+    kinds = {id(rosbag1.decompressors[name]): name for name in ("bz2", "lz4") if name in rosbag1.decompressors}
+    for bag in getattr(reader, "readers", []):
+        chunks = getattr(bag, "chunks", None)
+        if not isinstance(chunks, dict):
+            continue
+        for pos, chunk in list(chunks.items()):
+            kind = kinds.get(id(chunk.decompressor))
+            if kind is not None:
+                chunks[pos] = chunk._replace(decompressor=_bounded(kind, where))
+
+
+def _ros1_type(msgtype: str) -> str:
+    return msgtype.replace("/msg/", "/")
 
 
 def read_bag(path) -> Iterator[BagMessage]:
-    """Every message of the bag at ``path``, in file order (the recorder's order within a chunk)."""
-    where = str(path)
-    file = Path(path)
-    if not file.is_file():
-        raise FgdwaError(f"bag {short_repr(where)}: no such file")
-    buffer = file.read_bytes()
-    if not buffer.startswith(MAGIC):
-        version = buffer[:13].split(b"\n")[0].decode("ascii", "replace")
-        raise FgdwaError(f"bag {short_repr(where)}: not a ROS bag of format 2.0 (starts with {short_repr(version)})")
-    connections: Dict[int, Connection] = {}
+    """Every message of the bag at ``path``, in time order."""
+    from rosbags.highlevel import AnyReader
 
-    def connection(fields, data):
-        conn = _uint32(fields, "conn", where)
-        info = _fields(data, where)
-        connections[conn] = Connection(conn, _text(fields.get("topic", info.get("topic", b"")), "topic", where),
-                                       _text(info.get("type", b""), "type", where),
-                                       _text(info.get("md5sum", b""), "md5sum", where))
-
-    for fields, data in _records(buffer, len(MAGIC), where):
-        op = fields["op"][0]
-        if op == OP_CONNECTION:
-            connection(fields, data)
-        elif op == OP_CHUNK:
-            for inner, payload in _records(_chunk_data(fields, data, where), 0, where + " (chunk)"):
-                inner_op = inner["op"][0]
-                if inner_op == OP_CONNECTION:
-                    connection(inner, payload)
-                elif inner_op == OP_MESSAGE:
-                    conn = _uint32(inner, "conn", where)
-                    if conn not in connections:
-                        raise FgdwaError(f"bag {short_repr(where)}: a message on connection {conn} before its connection record")
-                    stamp = inner.get("time", b"")
-                    if len(stamp) != 8:
-                        raise FgdwaError(f"bag {short_repr(where)}: a message without its 8-byte time")
-                    sec, nsec = struct.unpack("<II", stamp)
-                    c = connections[conn]
-                    yield BagMessage(c.topic, c.type, sec + 1e-9 * nsec, payload)
-        # Bag header, index and chunk info records only locate what is read here in order.
-
-
-class _Reader:
-    """ROS's wire format, read front to back."""
-
-    def __init__(self, data: bytes, what: str):
-        self.data, self.pos, self.what = data, 0, what
-
-    def take(self, fmt: str):
-        try:
-            values = struct.unpack_from("<" + fmt, self.data, self.pos)
-        except struct.error:
-            raise FgdwaError(f"{self.what}: message shorter than its type") from None
-        self.pos += struct.calcsize("<" + fmt)
-        return values
-
-    def string(self) -> str:
-        (n,) = self.take("I")
-        raw = self.data[self.pos:self.pos + n]
-        if len(raw) != n:
-            raise FgdwaError(f"{self.what}: message shorter than its type")
-        self.pos += n
-        return raw.decode("utf-8", "replace")
-
-    def floats32(self) -> np.ndarray:
-        (n,) = self.take("I")
-        raw = self.data[self.pos:self.pos + 4 * n]
-        if len(raw) != 4 * n:
-            raise FgdwaError(f"{self.what}: message shorter than its type")
-        self.pos += 4 * n
-        return np.frombuffer(raw, dtype="<f4").astype(float)
-
-    def header(self) -> Tuple[float, str]:
-        _seq, sec, nsec = self.take("III")
-        return float(sec) + 1e-9 * float(nsec), self.string()
+    where = f"bag {short_repr(str(path))}"
+    opened = _bag_path(path)
+    try:
+        reader = AnyReader([opened])
+        reader.open()
+    except FgdwaError:
+        raise
+    except Exception as error:  # noqa: BLE001 - rosbags raises its own errors, OSError, struct.error and more
+        raise FgdwaError(f"{where}: not a readable ROS 1 or ROS 2 bag ({type(error).__name__}: "
+                         f"{short_repr(str(error), 200)})") from None
+    try:
+        _bound_chunks(reader, where)
+        messages = reader.messages()
+        while True:
+            try:
+                connection, stamp, raw = next(messages)
+            except StopIteration:
+                return
+            except FgdwaError:
+                raise
+            except Exception as error:  # noqa: BLE001 - a truncated or corrupt bag
+                raise FgdwaError(f"{where}: truncated or corrupt ({type(error).__name__}: "
+                                 f"{short_repr(str(error), 200)})") from None
+            kind = _ros1_type(connection.msgtype)
+            try:
+                message = reader.deserialize(raw, connection.msgtype)
+            except Exception as error:  # noqa: BLE001 - bytes that are not the message their type says
+                raise FgdwaError(f"{where}: a malformed {kind} message on {connection.topic} at {stamp * 1e-9:.3f} s "
+                                 f"({type(error).__name__}: {short_repr(str(error), 200)})") from None
+            yield BagMessage(connection.topic, kind, stamp * 1e-9, message)
+    finally:
+        reader.close()
 
 
 @dataclass(frozen=True)
@@ -211,52 +148,42 @@ class OdometryMsg:
     angular: Tuple[float, float, float]
 
 
-def decode_laser_scan(data: bytes) -> LaserScanMsg:
-    r = _Reader(data, "sensor_msgs/LaserScan")
-    stamp, frame = r.header()
-    angle_min, angle_max, increment, _time_inc, _scan_time, range_min, range_max = r.take("7f")
-    ranges = r.floats32()
-    r.floats32()  # intensities
-    return LaserScanMsg(stamp, frame, angle_min, angle_max, increment, range_min, range_max, ranges)
+def _stamp(header) -> float:
+    return float(header.stamp.sec) + 1e-9 * float(header.stamp.nanosec)
 
 
-def decode_odometry(data: bytes) -> OdometryMsg:
-    r = _Reader(data, "nav_msgs/Odometry")
-    stamp, frame = r.header()
-    child = r.string()
-    pose = r.take("7d")
-    r.take("36d")
-    twist = r.take("6d")
-    r.take("36d")
-    return OdometryMsg(stamp, frame, child, pose[:3], pose[3:], twist[:3], twist[3:])
+def _xyz(v) -> Tuple[float, float, float]:
+    return float(v.x), float(v.y), float(v.z)
 
 
-def decode_twist(data: bytes) -> Tuple[float, float]:
+def decode_laser_scan(msg) -> LaserScanMsg:
+    """sensor_msgs/LaserScan."""
+    return LaserScanMsg(_stamp(msg.header), str(msg.header.frame_id), float(msg.angle_min), float(msg.angle_max),
+                        float(msg.angle_increment), float(msg.range_min), float(msg.range_max),
+                        np.asarray(msg.ranges, dtype=np.float32).astype(float))
+
+
+def decode_odometry(msg) -> OdometryMsg:
+    """nav_msgs/Odometry."""
+    pose, twist = msg.pose.pose, msg.twist.twist
+    q = pose.orientation
+    return OdometryMsg(_stamp(msg.header), str(msg.header.frame_id), str(msg.child_frame_id), _xyz(pose.position),
+                       (float(q.x), float(q.y), float(q.z), float(q.w)), _xyz(twist.linear), _xyz(twist.angular))
+
+
+def decode_twist(msg) -> Tuple[float, float]:
     """geometry_msgs/Twist as (linear.x, angular.z)."""
-    values = _Reader(data, "geometry_msgs/Twist").take("6d")
-    return values[0], values[5]
+    return float(msg.linear.x), float(msg.angular.z)
 
 
-def decode_string(data: bytes) -> str:
-    return _Reader(data, "std_msgs/String").string()
+def decode_string(msg) -> str:
+    """std_msgs/String."""
+    return str(msg.data)
 
 
-def decode_diagnostics(data: bytes) -> List[Tuple[str, str, Dict[str, str]]]:
+def decode_diagnostics(msg) -> List[Tuple[str, str, Dict[str, str]]]:
     """diagnostic_msgs/DiagnosticArray as (name, message, {key: value}) per status."""
-    r = _Reader(data, "diagnostic_msgs/DiagnosticArray")
-    r.header()
-    (count,) = r.take("I")
-    statuses = []
-    for _ in range(count):
-        r.take("b")  # level
-        name, message, _hardware = r.string(), r.string(), r.string()
-        (n,) = r.take("I")
-        values = {}
-        for _ in range(n):
-            key = r.string()
-            values[key] = r.string()
-        statuses.append((name, message, values))
-    return statuses
+    return [(str(s.name), str(s.message), {str(kv.key): str(kv.value) for kv in s.values}) for s in msg.status]
 
 
 def topics(path) -> Dict[str, Tuple[str, int]]:
