@@ -273,7 +273,7 @@ struct TouchCounts {
 void expect_free_distances_match_sweeps(LocalPlanner& planner, const ClearanceSource& world, const RobotState& state,
                                         const Vec2& goal, double h, double band, TouchCounts& n) {
   const Footprint& fp = planner.footprint();
-  const double dt = planner.params().dt, margin = planner.params().safety_margin;
+  const double margin = planner.params().safety_margin;
   // Clearance beyond the safety margin.
   const auto beyond_margin = [&](const Pose2& pose) { return world.clearance(fp, pose, 0.0) - margin; };
   ASSERT_GT(beyond_margin(state.pose), 1e-3);  // keeps the margin whole
@@ -555,7 +555,9 @@ TEST(LocalPlanner, ClearanceIsScoredUntilTheRolloutReachesTheGoal) {
     }
     ++through_goal;
     EXPECT_NEAR(r.min_clearance[i], until_goal, 1e-9) << "sample " << i;
-    if (whole <= 0.0) EXPECT_GT(r.min_clearance[i], 0.1) << "sample " << i;  // the wall beyond is not held against it
+    if (whole <= 0.0) {
+      EXPECT_GT(r.min_clearance[i], 0.1) << "sample " << i;  // the wall beyond is not held against it
+    }
   }
   EXPECT_GT(through_goal, 0);
 }

@@ -2525,6 +2525,160 @@ def test_fixed_controller_refuses_hits_past_the_limit():
 
 
 # =============================================================================================
+# DynaBARN data files and bags
+# =============================================================================================
+DYNABARN_FILE = "/work/shared/benchmarks/dynabarn/dynabarn_dev.json"
+
+
+def dynabarn_base():
+    """Two worlds of the shared file (one easy, one hard), the document the mutations start from."""
+    import json
+
+    with open(DYNABARN_FILE) as handle:
+        data = json.load(handle)
+    data["worlds"] = [data["worlds"][0], data["worlds"][-1]]
+    return data
+
+
+try:
+    DYNABARN_BASE = dynabarn_base()
+except OSError:
+    DYNABARN_BASE = None
+
+HOSTILE_VALUES = [float("nan"), float("inf"), -1e308, 1e308, -1, 0, 10**30, "x", None, True, [], {}, [1, 2],
+                  [[0.0, 1.0, 2.0]] * 3, -0.0, 1e-320, "1e400", "NaN"]
+
+
+def _paths(node, prefix=()):
+    """Every path (key or index sequence) into a JSON document."""
+    yield prefix
+    if isinstance(node, dict):
+        for key, value in node.items():
+            yield from _paths(value, prefix + (key,))
+    elif isinstance(node, list):
+        for i, value in enumerate(node[:4]):
+            yield from _paths(value, prefix + (i,))
+
+
+@st.composite
+def mutated_dynabarn(draw):
+    doc = copy.deepcopy(DYNABARN_BASE)
+    paths = [p for p in _paths(doc) if p and p[0] != "about"]
+    for _ in range(draw(st.integers(1, 3))):
+        path = draw(st.sampled_from(paths))
+        parent = doc
+        try:
+            for key in path[:-1]:
+                parent = parent[key]
+            op = draw(st.sampled_from(["set", "delete", "hostile_float"]))
+            if op == "delete":
+                del parent[path[-1]]
+            elif op == "hostile_float":
+                parent[path[-1]] = draw(hf(-1e7, 1e7))
+            else:
+                parent[path[-1]] = copy.deepcopy(draw(st.sampled_from(HOSTILE_VALUES)))
+        except (KeyError, IndexError, TypeError):
+            pass  # an earlier mutation took the path away
+    return doc, draw(st.sampled_from(["json", "flip", "truncate"])), draw(st.integers(0, 2**32 - 1))
+
+
+@pytest.mark.skipif(DYNABARN_BASE is None, reason=f"no DynaBARN data at {DYNABARN_FILE}")
+@fuzz(150)
+@given(case=mutated_dynabarn() if DYNABARN_BASE is not None else st.none())
+def test_dynabarn_loader_on_mutated_files(case, tmp_path_factory):
+    import json
+
+    from fgdwa.io.dynabarn_data import load_dynabarn
+
+    ran("dynabarn")
+    doc, corrupt, seed = case
+    data = bytearray(json.dumps(doc, allow_nan=True).encode())
+    rng = np.random.default_rng(seed)
+    if corrupt == "flip":
+        for k in rng.integers(0, len(data), 4):
+            data[k] ^= 1 << int(rng.integers(0, 8))
+    elif corrupt == "truncate":
+        data = data[: int(rng.integers(0, len(data)))]
+    path = tmp_path_factory.mktemp("dynabarn") / "dynabarn.json"
+    path.write_bytes(bytes(data))
+    out = attempt(load_dynabarn, path)
+    if not out.ok:
+        assert str(path) in out.message, f"{out.call}: the message does not name the file: {out.message}"
+        return
+    for world in (out.value.world(i) for i in out.value.world_ids):  # what loaded runs: finite, movers that move
+        assert finite(np.asarray(world.start, dtype=float)) and finite(np.asarray(world.goal, dtype=float)), out.call
+        for mover in world.movers:
+            for t in (0.0, 0.37, 1e3):
+                position = np.asarray(mover.state_at(t)[0], dtype=float)
+                assert finite(position), f"{out.call}: mover position {position} at t = {t}"
+
+
+def _bag_bytes():
+    """A small ROS 1 bag (bz2 chunks) of the messages replay reads, written with rosbags."""
+    from rosbags.rosbag1 import Writer
+    from rosbags.typesys import Stores, get_typestore
+
+    store = get_typestore(Stores.ROS1_NOETIC)
+    types = store.types
+    path = tempfile.mktemp(suffix=".bag")
+    header = lambda k: types["std_msgs/msg/Header"](seq=k, stamp=types["builtin_interfaces/msg/Time"](sec=100 + k,  # noqa: E731
+                                                                                                   nanosec=0),
+                                                     frame_id="front_laser")
+    writer = Writer(path)
+    writer.set_compression(Writer.CompressionFormat.BZ2)
+    with writer:
+        scan_c = writer.add_connection("/front/scan", "sensor_msgs/msg/LaserScan", typestore=store)
+        event_c = writer.add_connection("/fgdwa_node/events", "std_msgs/msg/String", typestore=store)
+        for k in range(4):
+            scan = types["sensor_msgs/msg/LaserScan"](header=header(k), angle_min=-1.0, angle_max=1.0,
+                                                      angle_increment=0.5, time_increment=0.0, scan_time=0.1,
+                                                      range_min=0.1, range_max=10.0,
+                                                      ranges=np.array([1.0, 2.0, np.inf, 3.0, 4.0], np.float32),
+                                                      intensities=np.zeros(5, np.float32))
+            writer.write(scan_c, (100 + k) * 10**9, store.serialize_ros1(scan, "sensor_msgs/msg/LaserScan"))
+            event = types["std_msgs/msg/String"](data='{"event": "goal", "goal": [1, 2]}')
+            writer.write(event_c, (100 + k) * 10**9 + 1, store.serialize_ros1(event, "std_msgs/msg/String"))
+    with open(path, "rb") as handle:
+        data = handle.read()
+    os.unlink(path)
+    return data
+
+
+try:
+    BAG_BASE = _bag_bytes()
+except ImportError:
+    BAG_BASE = None
+
+
+@pytest.mark.skipif(BAG_BASE is None, reason="rosbags is not installed")
+@fuzz(200)
+@given(flips=st.lists(st.tuples(st.integers(0, 10**6), st.integers(0, 7)), max_size=6),
+       cut=st.one_of(st.none(), st.integers(0, 10**6)), duplicate=st.one_of(st.none(), st.integers(0, 10**6)))
+def test_bag_reader_on_mutated_bags(flips, cut, duplicate, tmp_path_factory):
+    from fgdwa.adapters.replay import read_recording
+    from fgdwa.io.rosbag_reader import decode_laser_scan, read_bag
+
+    ran("bags")
+    data = bytearray(BAG_BASE)
+    for at, bit in flips:
+        data[at % len(data)] ^= 1 << bit
+    if duplicate is not None:
+        at = duplicate % len(data)
+        data[at:at] = data[at:at + 64]
+    if cut is not None:
+        data = data[: cut % (len(data) + 1)]
+    path = tmp_path_factory.mktemp("bag") / "run.bag"
+    path.write_bytes(bytes(data))
+    out = attempt(lambda p: [(m.topic, m.type, m.time, decode_laser_scan(m.data) if m.type.endswith("LaserScan")
+                              else m.data) for m in read_bag(p)], path)
+    if not out.ok:
+        assert "run.bag" in out.message, f"{out.call}: the message does not name the bag: {out.message}"
+    replayed = attempt(read_recording, path)
+    assert not replayed.ok  # no cycle diagnostics in this bag: refused, saying what it lacks
+    assert "run.bag" in replayed.message, replayed.message
+
+
+# =============================================================================================
 # The count
 # =============================================================================================
 ALL_FUZZ = {"angles", "carriers", "motion", "limits", "sample_window", "circle", "polygon", "grid", "grid_cells",
@@ -2532,7 +2686,7 @@ ALL_FUZZ = {"angles", "carriers", "motion", "limits", "sample_window", "circle",
             "points_field", "disc", "clearance", "sensed", "path", "reference_samples", "path_blocked", "dtw", "lidar",
             "scan", "segment", "scan_map", "tracker", "astar", "ompl", "params", "plan", "nav_params", "navigator",
             "controller", "nav_construct", "fuzzy", "membership", "fuzzy_engine", "scenario", "scenario_file",
-            "barn", "barn_headers",
+            "barn", "barn_headers", "dynabarn", "bags",
             "int_overflow"}
 
 
@@ -2542,7 +2696,7 @@ def test_zz_call_count():
     print("  calls answered / refused, by function:")
     for name in names:
         print(f"    {name:<40} {OUTCOMES[name, 'ok']:>6} / {OUTCOMES[name, 'refused']:<6}")
-    if FUZZ_TESTS_RUN >= ALL_FUZZ - {"barn", "barn_headers"}:
+    if FUZZ_TESTS_RUN >= ALL_FUZZ - {"barn", "barn_headers", "dynabarn", "bags"}:
         assert CALLS[0] >= 10_000, f"only {CALLS[0]} calls"
     else:
         pytest.skip(f"not every fuzz test ran ({len(FUZZ_TESTS_RUN)} of {len(ALL_FUZZ)}): {CALLS[0]} calls")
