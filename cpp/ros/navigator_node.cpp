@@ -16,6 +16,7 @@
 
 #include "fgdwa/error.hpp"
 #include "fgdwa/presets.hpp"
+#include "json.hpp"
 #include "ros_convert.hpp"
 
 namespace fgdwa_ros {
@@ -28,24 +29,7 @@ std::string number(double value) {
   return buffer;
 }
 
-// JSON of a number that may be infinite or NaN (Python's json reads these words).
-std::string json_number(double value) {
-  if (std::isnan(value)) return "NaN";
-  if (std::isinf(value)) return value > 0 ? "Infinity" : "-Infinity";
-  return number(value);
-}
-
 std::string seconds(const ros::Time& t) { return number(t.toSec()); }
-
-// A JSON string of `text`.
-std::string json_text(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
 
 // Median and 95th percentile of `values`, "median X ms, p95 Y ms over N cycles".
 std::string cycle_summary(std::vector<double> values) {

@@ -13,6 +13,7 @@
 #include "fgdwa/error.hpp"
 #include "fgdwa/params.hpp"
 #include "fgdwa/presets.hpp"
+#include "json.hpp"
 
 namespace fgdwa_ros {
 
@@ -40,24 +41,6 @@ double as_number(const std::string& name, const XmlRpcValue& value) {
 std::string as_text(const std::string& name, const XmlRpcValue& value) {
   if (value.getType() != XmlRpcValue::TypeString) refuse(name, value, "must be a string");
   return static_cast<std::string>(const_cast<XmlRpcValue&>(value));
-}
-
-std::string json_number(double value) {
-  if (std::isnan(value)) return "NaN";
-  if (std::isinf(value)) return value > 0 ? "Infinity" : "-Infinity";
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
-}
-
-std::string json_text(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
 }
 
 // One parameter: how to set it from the server's value and how to write it as JSON.
