@@ -105,25 +105,48 @@ bool RouteKeeper::plan(const Vec2& position, WorldModel& world, const std::vecto
   const OccupancyGrid& grid = with_closed ? *with_closed : base;
   std::vector<std::uint8_t> unknown;
   if (params_.unknown_cost > 0.0) unknown = world.unknown_cells();
-  for (double radius : radii_) {
-    AStarParams astar;
-    astar.inflation_radius = radius;
-    astar.unknown_cost = params_.unknown_cost;
-    GlobalPlan found;
-    try {
-      AStarPlanner planner(grid, astar, terrain_);
-      planner.set_unknown(unknown);
-      found = planner.plan(from, goal_);
-    } catch (const Error&) {
-      continue;  // start or goal in a marked cell: no way from here on this map at this radius
+  const auto ladder = [&](const OccupancyGrid& on) {
+    for (double radius : radii_) {
+      AStarParams astar;
+      astar.inflation_radius = radius;
+      astar.unknown_cost = params_.unknown_cost;
+      GlobalPlan found;
+      try {
+        AStarPlanner planner(on, astar, terrain_);
+        planner.set_unknown(unknown);
+        found = planner.plan(from, goal_);
+      } catch (const Error&) {
+        continue;  // start or goal in a marked cell: no way from here on this map at this radius
+      }
+      if (found.status == GlobalStatus::Found) {
+        if (from != position) found.path.insert(found.path.begin(), position);
+        adopt(GlobalPath(std::move(found.path)));
+        return true;
+      }
     }
-    if (found.status == GlobalStatus::Found) {
-      if (from != position) found.path.insert(found.path.begin(), position);
-      adopt(GlobalPath(std::move(found.path)));
-      return true;
+    return false;
+  };
+  if (ladder(grid)) return true;
+  // What the scans found at the goal may be standing there for now (another
+  // robot, a person): the way up to it is planned as if it were gone, and the
+  // local planner stops short while it stays. A goal inside the given map's
+  // obstacles stays refused.
+  const double keep = radii_.front() + base.resolution();
+  const OccupancyGrid* given = world.given_map();
+  std::vector<std::uint8_t> cells = grid.cells();
+  bool opened = false;
+  const int reach = static_cast<int>(std::ceil(keep / base.resolution()));
+  int goal_row, goal_col;
+  if (!base.cell_of(goal_, goal_row, goal_col)) return false;
+  for (int r = std::max(0, goal_row - reach); r <= std::min(base.rows() - 1, goal_row + reach); ++r)
+    for (int c = std::max(0, goal_col - reach); c <= std::min(base.cols() - 1, goal_col + reach); ++c) {
+      const std::size_t i = base.index(r, c);
+      if (!cells[i] || (given && given->cells()[i]) || (base.cell_center(r, c) - goal_).norm() > keep) continue;
+      cells[i] = 0;
+      opened = true;
     }
-  }
-  return false;
+  if (!opened) return false;
+  return ladder(OccupancyGrid(base.rows(), base.cols(), base.resolution(), base.origin(), std::move(cells)));
 }
 
 bool RouteKeeper::ahead_blocked(const Vec2& position, WorldModel& world, const std::vector<Disc>& movers) {

@@ -149,6 +149,36 @@ TEST(Navigator, ReplansWhenTheScanShowsThePathBlocked) {
   EXPECT_EQ(replanned_at, 3);
 }
 
+TEST(Navigator, SomethingTheScansFindOnTheGoalIsDrivenUpToNotRefused) {
+  // A box standing on the goal (another robot, a person) that only the scans show.
+  const OccupancyGrid truth = room(30, 60, {{12, 47, 6, 6}});
+  LidarParams lidar;
+  const LaserScanner scanner(lidar, std::make_shared<DistanceField>(truth));
+  std::mt19937_64 rng(0);
+  Scan scan;
+  const Vec2 goal(4.8, 1.5);  // 0.1 m from the box's near side, inside every inflation of it
+  for (const MapMode mode : {MapMode::Scan, MapMode::Known}) {
+    // Scan: the map is built from the scans; Known: the given map lacks the box and learns it.
+    Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), mode == MapMode::Scan ? truth : room(30, 60), mode,
+                  lidar);
+    nav.set_goal(goal);
+    double t = 0.0;
+    const CycleRecord* r = nullptr;
+    for (int i = 0; i < 4; ++i, t += 0.15) {
+      scanner.scan(Pose2{1.0, 1.5, 0.0}, {}, 0.0, rng, scan);
+      r = &nav.step(at(1.0, 1.5), &scan, t);
+      EXPECT_NE(r->mode, NavigatorMode::Failed) << to_string(mode) << " cycle " << i;
+    }
+    EXPECT_TRUE(nav.map().occupied_at(Vec2(4.75, 1.5))) << to_string(mode);  // the box's near side is on the map...
+    ASSERT_TRUE(r->path);
+    EXPECT_LT((r->path->points().back() - goal).norm(), 1e-9);  // ... and the path still leads to the goal
+  }
+  // A goal inside the given map's obstacles stays refused.
+  Navigator walled(RobotLimits{}, Footprint::circle(0.2), gdwa(), truth, MapMode::Known, lidar);
+  walled.set_goal(goal);
+  EXPECT_EQ(walled.step(at(1.0, 1.5), nullptr, 0.0).failure, FailureReason::NoGlobalPath);
+}
+
 TEST(Navigator, StallBacksUpWithinTheLimitsThenReplansAroundTheGivenUpPath) {
   const OccupancyGrid map = room(30, 60);
   NavigatorParams params;

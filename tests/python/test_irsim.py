@@ -53,6 +53,8 @@ SHIPPED = [
     ("static_rectangle.yaml", 500, 0, 1),
     ("hm3d_floor.yaml", 700, 0, 1),
     ("two_robots.yaml", 700, 0, 2),
+    # Each goal is where another robot stands at the start: planned up to and waited for, not refused.
+    ("circle_swap.yaml", 600, 0, 4),
 ]
 # Not solved every time (docs/irsim.md): seeds 0-15 give 14 arrivals, one
 # collision (seed 7) and one robot still pressed against the box at the step
@@ -69,6 +71,7 @@ def test_shipped_worlds_arrive_without_touching_anything(name, steps, seed, driv
         assert not outcome.collided, fi.format_run(run)
         assert outcome.arrived, fi.format_run(run)
         assert outcome.steps < steps
+        assert outcome.failures == 0, fi.format_run(run)  # never gave up, not even for a goal another robot held
 
 
 def test_moving_obstacles_world_never_touches_a_mover_and_mostly_arrives():

@@ -44,6 +44,8 @@ class WorldModel {
 
   // The map the global planner plans on.
   const OccupancyGrid& map() const;
+  // The map given with MapMode::Known, without what the scans added; null for a map built from scans.
+  const OccupancyGrid* given_map() const { return known_map_.get(); }
   // Its distance field, brought up to date (null while a map built from scans
   // has seen nothing). Let go of the last one first and it is updated in place.
   std::shared_ptr<const DistanceField> field();
