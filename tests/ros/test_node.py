@@ -727,6 +727,10 @@ def replay(args, bag: Path, out: Path) -> None:
     check(report["gaps"] == 0, f"the bag misses cycles of the node ({report['gaps']} gaps)")
     check(report["matching"] == report["cycles"],
           f"replay matched only {report['matching']} of {report['cycles']} recorded commands (same build, same inputs)")
+    # A setting given wrong is the user's to fix, and named so, not blamed on the bag.
+    bad = subprocess.run(argv + ["--set", "navigator/max_recoveries=1.5"], capture_output=True, text=True, timeout=600)
+    check(bad.returncode == 2 and "--set navigator/max_recoveries=1.5: " in bad.stderr and "Traceback" not in bad.stderr,
+          f"replay with a bad --set: exit {bad.returncode}, {bad.stderr[-500:]!r}")
 
 
 if __name__ == "__main__":

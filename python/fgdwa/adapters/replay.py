@@ -97,14 +97,21 @@ def navigator_from_event(event: dict, overrides: Optional[Dict[str, object]] = N
     if event.get("mapping") != "scan":
         raise FgdwaError(f"navigator {event.get('id')}: mapping {short_repr(event.get('mapping'))}; replay rebuilds maps "
                          f"from scans only (mapping scan): the known map is not in the bag")
-    limits = _param_set(RobotLimits, config)
+    try:
+        limits = _param_set(RobotLimits, config)
+        planner = _param_set(PlannerParams, config)
+        navigator = _param_set(NavigatorParams, config)
+        window = _param_set(DetectWindowParams, config)
+    except FgdwaError as error:
+        # A value given with --set is the user's to fix, not the bag's.
+        named = [n for n in (overrides or {}) if n.replace("/", ".") in str(error)]
+        if named:
+            raise FgdwaError(f"--set {named[0]}={short_repr(overrides[named[0]])}: {error}") from None
+        raise
     if config.get("footprint") is not None:
         footprint = Footprint.polygon(np.asarray(config["footprint"], dtype=float))
     else:
         footprint = Footprint.circle(float(config["footprint_radius"]))
-    planner = _param_set(PlannerParams, config)
-    navigator = _param_set(NavigatorParams, config)
-    window = _param_set(DetectWindowParams, config)
     lidar = event["lidar"]
     lidar_params = LidarParams(beams=int(lidar["beams"]), max_range=float(lidar["max_range"]),
                                noise_std=float(lidar["noise_std"]))
@@ -329,6 +336,11 @@ def replay_command(args) -> int:
     rec = read_recording(args.bag, scan_topic=args.scan_topic, odom_topic=args.odom_topic)
     try:
         cycles = replay(rec, parse_overrides(args.set or []))
+    except FgdwaError as error:
+        if str(error).startswith("--set "):
+            raise
+        raise FgdwaError(f"bag {short_repr(str(args.bag))}: malformed fgdwa_node events or cycle diagnostics "
+                         f"({error})") from None
     except (KeyError, TypeError, ValueError, OverflowError) as error:
         # The node's events and cycle diagnostics came from the bag: a field missing or of the wrong kind is the bag's.
         raise FgdwaError(f"bag {short_repr(str(args.bag))}: malformed fgdwa_node events or cycle diagnostics "
