@@ -11,11 +11,10 @@ from scipy import stats as sps
 
 from fgdwa import FgdwaError
 from fgdwa.bench import stats
+from fgdwa.bench.claims import Claim, correct_claims, verdict
 from fgdwa.bench.experiments import (
     EXPERIMENTS,
     FINISHING,
-    Claim,
-    correct_claims,
     ExperimentResult,
     ExperimentSpec,
     TrialRecord,
@@ -24,7 +23,6 @@ from fgdwa.bench.experiments import (
     run_experiment,
     run_trial,
     trial_tasks,
-    verdict,
 )
 from fgdwa.bench.report import (
     EXCLUSION_NOTE,

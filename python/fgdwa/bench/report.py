@@ -14,6 +14,7 @@ import os
 from pathlib import Path
 from typing import Optional, Sequence
 
+from fgdwa.bench.claims import correct_claims
 from fgdwa.bench.stats import SIGNIFICANCE, finishing_rate
 from fgdwa.io.table import Table
 
@@ -331,8 +332,6 @@ def results_markdown(experiments: Sequence[tuple], command: str, relative_to: Pa
              "direction of each effect and its significance, not the numbers (docs/algorithms.md, \"Experiments "
              "E1-E3\").", "", EXCLUSION_NOTE, "", TEST_NOTE, "",
              "## The paper's claims", ""]
-    from fgdwa.bench.experiments import correct_claims
-
     # The paper's claims of every experiment are judged together: one Holm correction over all of them.
     judged = iter(correct_claims([c for d, _ in experiments for c in d["claims"]]))
     experiments = [(dict(d, claims=[next(judged) for _ in d["claims"]]), figures) for d, figures in experiments]
