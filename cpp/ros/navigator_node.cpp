@@ -31,6 +31,13 @@ std::string number(double value) {
 
 std::string seconds(const ros::Time& t) { return number(t.toSec()); }
 
+void add_value(diagnostic_msgs::DiagnosticStatus& status, const std::string& key, const std::string& value) {
+  diagnostic_msgs::KeyValue kv;
+  kv.key = key;
+  kv.value = value;
+  status.values.push_back(kv);
+}
+
 // Median and 95th percentile of `values`, "median X ms, p95 Y ms over N cycles".
 std::string cycle_summary(std::vector<double> values) {
   if (values.empty()) return "no cycles";
@@ -251,7 +258,8 @@ void NavigatorNode::on_timer(const ros::TimerEvent&) {
 
 void NavigatorNode::wait(const ros::Time& now, const std::string& reason) {
   publish_stop();
-  if (!waiting_) {
+  const bool began = !waiting_;
+  if (began) {
     waiting_ = true;
     waiting_since_ = now;
   }
@@ -265,7 +273,7 @@ void NavigatorNode::wait(const ros::Time& now, const std::string& reason) {
   }
   // The reason's words without its numbers (an age that grows every cycle) tell a new trouble from the same one.
   auto words = [](const std::string& text) { return text.substr(0, text.find_first_of("0123456789")); };
-  if (waited == 0.0 || words(reason) != words(wait_reason_)) {
+  if (began || words(reason) != words(wait_reason_)) {
     publish_event("{\"event\": \"wait\", \"time\": " + number((now - start_time_).toSec()) + ", \"stamp\": " +
                   seconds(now) + ", \"reason\": " +
                   json_text(reason) + ", \"patience\": " + number(patience) + "}");
@@ -286,15 +294,11 @@ void NavigatorNode::wait(const ros::Time& now, const std::string& reason) {
   status.hardware_id = ros::this_node::getName();
   status.level = diagnostic_msgs::DiagnosticStatus::WARN;
   status.message = "waiting: " + reason;
-  for (const auto& [key, value] : {std::pair<std::string, std::string>{"reason", reason},
-                                   {"waited", number(waited)}, {"patience", number(patience)},
-                                   {"goal", number(goal_.x()) + " " + number(goal_.y())},
-                                   {"goal_id", std::to_string(goals_)}}) {
-    diagnostic_msgs::KeyValue kv;
-    kv.key = key;
-    kv.value = value;
-    status.values.push_back(kv);
-  }
+  add_value(status, "reason", reason);
+  add_value(status, "waited", number(waited));
+  add_value(status, "patience", number(patience));
+  add_value(status, "goal", number(goal_.x()) + " " + number(goal_.y()));
+  add_value(status, "goal_id", std::to_string(goals_));
   array.status.push_back(status);
   diagnostics_pub_.publish(array);
 }
@@ -535,12 +539,7 @@ void NavigatorNode::publish_cycle(const fgdwa::CycleRecord& record, const ros::T
                  : recovering                                 ? diagnostic_msgs::DiagnosticStatus::WARN
                                                               : diagnostic_msgs::DiagnosticStatus::OK;
   status.message = std::string(fgdwa::to_string(record.mode)) + " (" + fgdwa::to_string(record.control.status) + ")";
-  auto add = [&](const std::string& key, const std::string& value) {
-    diagnostic_msgs::KeyValue kv;
-    kv.key = key;
-    kv.value = value;
-    status.values.push_back(kv);
-  };
+  auto add = [&](const std::string& key, const std::string& value) { add_value(status, key, value); };
   add("cycle", std::to_string(++cycles_));
   add("time", number(record.time));
   add("mode", fgdwa::to_string(record.mode));

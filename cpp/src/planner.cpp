@@ -11,12 +11,6 @@
 
 namespace fgdwa {
 
-namespace {
-// Sum normalisation's floor: the sum of a critic's terms counts as at least
-// this share of (admissible samples x its largest term).
-constexpr double kSumFloor = 0.25;
-}  // namespace
-
 const char* to_string(Status status) {
   switch (status) {
     case Status::Ok: return "Ok";

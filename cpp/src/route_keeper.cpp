@@ -85,10 +85,13 @@ bool RouteKeeper::plan(const Vec2& position, WorldModel& world, const std::vecto
   cycles_since_replan_ = 0;
   replan_now_ = false;
   const OccupancyGrid& base = world.map();
+  // Kept open near the robot and the goal, beyond the widest inflation: the
+  // path must leave the one and reach the other whatever stands beside them.
+  const double keep = radii_.front() + base.resolution();
   // A robot off the map (out of an open side, round a mover) is guided back:
-  // the path starts at the map's nearest point past the widest inflation, and
-  // the robot drives straight there first.
-  const Vec2 from = onto_grid(base, position, radii_.front() + base.resolution());
+  // the path starts at the map's nearest point that far in, and the robot
+  // drives straight there first.
+  const Vec2 from = onto_grid(base, position, keep);
   const bool any_closed = std::any_of(closed_.begin(), closed_.end(), [](std::uint8_t c) { return c != 0; });
   const std::vector<detail::SweptDisc> sweeps = mover_sweeps(movers, params_);
   std::optional<OccupancyGrid> with_closed;
@@ -96,9 +99,6 @@ bool RouteKeeper::plan(const Vec2& position, WorldModel& world, const std::vecto
     std::vector<std::uint8_t> cells = base.cells();
     if (any_closed)
       for (std::size_t i = 0; i < cells.size(); ++i) cells[i] = cells[i] || closed_[i];
-    // Left open near the robot and the goal, beyond the widest inflation: the
-    // path must leave the one and reach the other whatever moves beside them.
-    const double keep = radii_.front() + base.resolution();
     for (const detail::SweptDisc& sweep : sweeps) detail::close_swept_cells(base, sweep, from, goal_, keep, cells);
     with_closed.emplace(base.rows(), base.cols(), base.resolution(), base.origin(), std::move(cells));
   }
@@ -131,7 +131,6 @@ bool RouteKeeper::plan(const Vec2& position, WorldModel& world, const std::vecto
   // robot, a person): the way up to it is planned as if it were gone, and the
   // local planner stops short while it stays. A goal inside the given map's
   // obstacles stays refused.
-  const double keep = radii_.front() + base.resolution();
   const OccupancyGrid* given = world.given_map();
   std::vector<std::uint8_t> cells = grid.cells();
   bool opened = false;

@@ -589,7 +589,7 @@ def make_env(world, seed: Optional[int] = None, render: bool = False, log_level:
     Headless unless ``render``."""
     path = Path(world)
     if not path.is_file():
-        raise FgdwaError(f"world {short_repr(world)}: no such file")
+        raise FgdwaError(f"world {world!r}: no such file")
     kwargs = dict(log_level=log_level, seed=seed)
     if render:
         env = irsim.make(str(path), display=True, **kwargs)
@@ -617,7 +617,7 @@ def run_world(world, max_steps: int = 1000, seed: Optional[int] = None, render: 
     driven = [r for r in robots if behavior_of(r) is not None]
     if not driven:
         env.end(0)
-        raise FgdwaError(f"world {short_repr(world)}: no robot has behavior {{name: {BEHAVIOR}}}")
+        raise FgdwaError(f"world {world!r}: no robot has behavior {{name: {BEHAVIOR}}}")
     step_time = float(env.step_time)
     ended = {}  # robot index -> step at which it arrived or first collided
     collided = [False] * len(robots)

@@ -168,15 +168,15 @@ def read_recording(path, scan_topic: Optional[str] = None, odom_topic: Optional[
             _take(rec, msg, scan_topic, odom_topic)
         except (KeyError, TypeError, ValueError, OverflowError, UnicodeDecodeError) as error:
             # A bag is outside data: what it holds wrong is said, not raised as a traceback.
-            raise FgdwaError(f"bag {short_repr(where)}: a malformed {msg.type} message on {msg.topic} at {msg.time:.3f} s "
+            raise FgdwaError(f"bag {where!r}: a malformed {msg.type} message on {msg.topic} at {msg.time:.3f} s "
                              f"({type(error).__name__}: {error})") from None
     if not rec.cycles or not rec.navigators:
-        raise FgdwaError(f"bag {short_repr(where)}: no fgdwa_node cycle diagnostics or navigator events (it has "
+        raise FgdwaError(f"bag {where!r}: no fgdwa_node cycle diagnostics or navigator events (it has "
                          f"{', '.join(sorted(rec.topics)) or 'nothing'}); record /diagnostics and "
                          f"/fgdwa_node/events with the scan and odometry (docs/ros.md)")
     for kind, found in (("sensor_msgs/LaserScan", rec.scans), ("nav_msgs/Odometry", rec.odometry)):
         if not found:
-            raise FgdwaError(f"bag {short_repr(where)}: no {kind} messages to replay on")
+            raise FgdwaError(f"bag {where!r}: no {kind} messages to replay on")
     return rec
 
 
@@ -339,11 +339,11 @@ def replay_command(args) -> int:
     except FgdwaError as error:
         if str(error).startswith("--set "):
             raise
-        raise FgdwaError(f"bag {short_repr(str(args.bag))}: malformed fgdwa_node events or cycle diagnostics "
+        raise FgdwaError(f"bag {str(args.bag)!r}: malformed fgdwa_node events or cycle diagnostics "
                          f"({error})") from None
     except (KeyError, TypeError, ValueError, OverflowError) as error:
         # The node's events and cycle diagnostics came from the bag: a field missing or of the wrong kind is the bag's.
-        raise FgdwaError(f"bag {short_repr(str(args.bag))}: malformed fgdwa_node events or cycle diagnostics "
+        raise FgdwaError(f"bag {str(args.bag)!r}: malformed fgdwa_node events or cycle diagnostics "
                          f"({type(error).__name__}: {error})") from None
     print(f"bag {args.bag}: {len(rec.scans)} scans, {len(rec.odometry)} odometry messages, {rec.commands} cmd_vel, "
           f"{len(rec.cycles)} fgdwa_node cycles, {len(rec.navigators)} navigator(s)")

@@ -13,6 +13,7 @@ size (a few kilobytes of bz2 can expand to gigabytes).
 from __future__ import annotations
 
 import bz2
+import contextlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Dict, Iterator, List, Optional, Tuple
@@ -40,7 +41,7 @@ def _bag_path(path) -> Path:
     when given one of its storage files)."""
     p = Path(path)
     if not p.exists():
-        raise FgdwaError(f"bag {short_repr(str(path))}: no such file or directory")
+        raise FgdwaError(f"bag {str(path)!r}: no such file or directory")
     if p.is_file() and p.suffix in (".db3", ".mcap") and (p.parent / "metadata.yaml").is_file():
         return p.parent
     return p
@@ -87,22 +88,30 @@ def _ros1_type(msgtype: str) -> str:
     return msgtype.replace("/msg/", "/")
 
 
-def read_bag(path) -> Iterator[BagMessage]:
-    """Every message of the bag at ``path``, in time order."""
+@contextlib.contextmanager
+def _opened(path):
+    """(reader, where): the bag at ``path`` open in rosbags' AnyReader, its
+    compressed chunks bounded; FgdwaError naming the bag if it cannot be read."""
     from rosbags.highlevel import AnyReader
 
-    where = f"bag {short_repr(str(path))}"
+    where = f"bag {str(path)!r}"
     opened = _bag_path(path)
     try:
         reader = AnyReader([opened])
         reader.open()
-    except FgdwaError:
-        raise
     except Exception as error:  # noqa: BLE001 - rosbags raises its own errors, OSError, struct.error and more
         raise FgdwaError(f"{where}: not a readable ROS 1 or ROS 2 bag ({type(error).__name__}: "
                          f"{short_repr(str(error), 200)})") from None
     try:
         _bound_chunks(reader, where)
+        yield reader, where
+    finally:
+        reader.close()
+
+
+def read_bag(path) -> Iterator[BagMessage]:
+    """Every message of the bag at ``path``, in time order."""
+    with _opened(path) as (reader, where):
         messages = reader.messages()
         while True:
             try:
@@ -121,8 +130,6 @@ def read_bag(path) -> Iterator[BagMessage]:
                 raise FgdwaError(f"{where}: a malformed {kind} message on {connection.topic} at {stamp * 1e-9:.3f} s "
                                  f"({type(error).__name__}: {short_repr(str(error), 200)})") from None
             yield BagMessage(connection.topic, kind, stamp * 1e-9, message)
-    finally:
-        reader.close()
 
 
 @dataclass(frozen=True)
@@ -187,11 +194,12 @@ def decode_diagnostics(msg) -> List[Tuple[str, str, Dict[str, str]]]:
 
 
 def topics(path) -> Dict[str, Tuple[str, int]]:
-    """{topic: (type, messages)} of the bag."""
+    """{topic: (type, messages)} of the bag, from its index: no message is read."""
     out: Dict[str, Tuple[str, int]] = {}
-    for msg in read_bag(path):
-        kind, n = out.get(msg.topic, (msg.type, 0))
-        out[msg.topic] = (kind, n + 1)
+    with _opened(path) as (reader, _where):
+        for connection in reader.connections:
+            kind, n = out.get(connection.topic, (_ros1_type(connection.msgtype), 0))
+            out[connection.topic] = (kind, n + int(connection.msgcount))
     return out
 
 
@@ -199,13 +207,13 @@ def topic_of_type(available: Dict[str, Tuple[str, int]], kind: str, given: Optio
     """The bag's one topic of ``kind``, or ``given`` checked; FgdwaError saying which to choose otherwise."""
     if given is not None:
         if given not in available:
-            raise FgdwaError(f"bag {short_repr(where)}: no topic {short_repr(given)} (it has {', '.join(sorted(available))})")
+            raise FgdwaError(f"bag {where!r}: no topic {short_repr(given)} (it has {', '.join(sorted(available))})")
         if available[given][0] != kind:
-            raise FgdwaError(f"bag {short_repr(where)}: topic {short_repr(given)} is {available[given][0]}, not {kind}")
+            raise FgdwaError(f"bag {where!r}: topic {short_repr(given)} is {available[given][0]}, not {kind}")
         return given
     matching = sorted(t for t, (k, _) in available.items() if k == kind)
     if not matching:
-        raise FgdwaError(f"bag {short_repr(where)}: no {kind} topic (it has {', '.join(sorted(available)) or 'nothing'})")
+        raise FgdwaError(f"bag {where!r}: no {kind} topic (it has {', '.join(sorted(available)) or 'nothing'})")
     if len(matching) > 1:
-        raise FgdwaError(f"bag {short_repr(where)}: several {kind} topics ({', '.join(matching)}); name one")
+        raise FgdwaError(f"bag {where!r}: several {kind} topics ({', '.join(matching)}); name one")
     return matching[0]
