@@ -519,6 +519,8 @@ TEST(Navigator, RejectsBadInputNamingIt) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   bad([&](NavigatorParams& p) { p.path_margin = -0.1; }, "path_margin");
   bad([&](NavigatorParams& p) { p.replan_period = 0.0; }, "replan_period");
+  bad([&](NavigatorParams& p) { p.retry_period = 0.0; }, "retry_period");
+  bad([&](NavigatorParams& p) { p.retry_period = std::nan(""); }, "retry_period");
   bad([&](NavigatorParams& p) { p.stall_time = nan; }, "stall_time");
   bad([&](NavigatorParams& p) { p.stall_distance = -1.0; }, "stall_distance");
   bad([&](NavigatorParams& p) { p.give_up_length = -1.0; }, "give_up_length");

@@ -223,7 +223,10 @@ def run(args, procs: Processes, barn: Path, out: Path, prefix: Path, env: dict, 
     code, message = start_up({"controller_frequency": 0.0})
     check(code == 2 and "~controller_frequency = " in message and "must be a finite number > 0 (Hz)" in message,
           f"move_base's controller_frequency: exit {code}, output {message.strip()!r}")
-    print("move_base names read, a typo refused with the nearest names", flush=True)
+    code, message = start_up({"patience": 0.0})
+    check(code == 2 and "parameter ~patience = 0: must be a finite number > 0" in message,
+          f"patience 0: exit {code}, output {message.strip()!r}")
+    print("move_base names read, a typo refused with the nearest names, a patience of 0 refused", flush=True)
     code, message = start_up({"rollout_colour_by": "nope"})
     check(code == 2 and "~rollout_colour_by = \"nope\": expected one of total, heading, clearance, velocity, "
           "similarity" in message, f"bad rollout_colour_by: exit {code}, output {message.strip()!r}")
