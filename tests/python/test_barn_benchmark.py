@@ -10,7 +10,6 @@ import json
 
 import numpy as np
 import pytest
-from scipy.ndimage import binary_dilation
 
 import fgdwa
 from fgdwa import FgdwaError, planner_preset
@@ -35,13 +34,22 @@ def test_fgdwa_reaches_the_goal_of_five_worlds(barn, mapping):
         # The executed path ends within the goal radius.
         assert np.hypot(*(run.poses[-1, :2] - np.array(barn.goal))) <= barn.goal_radius + 1e-9
     if mapping == "scan":
+        resolution = BarnSetup().map_resolution
         for run in runs:
-            # The robot's map holds true obstacles; with range noise, a hit may
-            # fall in a cell beside one, never farther.
+            # The robot's map, in its own cells, holds true obstacles: an occupied
+            # cell's centre lies within half its diagonal of a true obstacle, plus
+            # the range noise (3 std) and the odometry's drift over the run.
             assert run.scan_map is not None
-            near = binary_dilation(run.cells != 0, structure=np.ones((3, 3), bool))
-            assert not np.any((run.scan_map != 0) & ~near)
-            assert run.scan_map.sum() > 0
+            rows, cols = run.scan_map.shape
+            x0, x1, y0, y1 = run.scan_extent
+            assert (x1 - x0, y1 - y0) == pytest.approx((cols * resolution, rows * resolution))
+            truth = fgdwa.DistanceField(fgdwa.OccupancyGrid(run.cells.astype(np.uint8), barn.resolution,
+                                                            (run.extent[0], run.extent[2])))
+            r, c = np.nonzero(run.scan_map)
+            assert len(r) > 0
+            centres = np.column_stack([x0 + (c + 0.5) * resolution, y0 + (r + 0.5) * resolution])
+            far = float(np.max(truth.distance(centres)))
+            assert far <= resolution * np.sqrt(0.5) + 3 * 0.03 + 0.1, far
             assert len(run.paths) >= 1
 
 
@@ -50,7 +58,14 @@ def test_scan_map_knows_less_than_the_world(barn):
     run = run_barn_task(task)
     # Obstacles far from the robot's way stay unknown. (With range noise the map
     # also marks free cells just short of obstacles, so count the true ones.)
-    mapped_truth = (run.scan_map != 0) & (run.cells != 0)
+    r, c = np.nonzero(run.scan_map)
+    x0, _, y0, _ = run.scan_extent
+    resolution = task.setup.map_resolution
+    world_col = np.floor((x0 + (c + 0.5) * resolution - run.extent[0]) / barn.resolution).astype(int)
+    world_row = np.floor((y0 + (r + 0.5) * resolution - run.extent[2]) / barn.resolution).astype(int)
+    mapped = np.zeros_like(run.cells, dtype=bool)
+    mapped[world_row, world_col] = True
+    mapped_truth = mapped & (run.cells != 0)
     assert 0 < mapped_truth.sum() < (run.cells != 0).sum()
 
 

@@ -3,8 +3,9 @@ builds a map whose obstacles lie nearer the real ones with matching than
 without, and the correction is reported in every record."""
 
 import numpy as np
+import pytest
 
-from fgdwa import DistanceField, LidarParams, NavigatorParams, OccupancyGrid
+from fgdwa import DistanceField, FgdwaError, LidarParams, NavigatorParams, OccupancyGrid
 from fgdwa.sim.episode import run_episode
 from fgdwa.sim.world import World
 
@@ -62,3 +63,31 @@ def test_the_record_reports_the_correction_and_the_odometry():
     assert abs(record.state.pose.x - 2.0) < 0.05 and abs(record.state.pose.y - 3.0) < 0.05
     assert abs(record.map_to_odom.x) > 0.03
     assert "localise" in record.times
+
+
+def test_the_robot_maps_in_cells_of_its_own_whatever_the_worlds():
+    # The world in 15 cm cells, the robot's map in 5 cm: its occupied cells lie
+    # on the real walls, within half a cell's diagonal and the range noise.
+    room = _room()
+    coarse = OccupancyGrid(np.asarray(room.cells)[::3, ::3].copy(), 0.15, (0.0, 0.0))
+    result = run_episode(World(grid=coarse), (0.6, 3.0, 0.0), (7.4, 3.0), mapping="scan", map_resolution=0.05,
+                         lidar=LidarParams(noise_std=0.01), max_steps=20, body="ideal")
+    assert result.context.scan_map.shape == (40 * 3, 54 * 3)
+    assert result.context.scan_extent == pytest.approx((0.0, 8.1, 0.0, 6.0))
+    rows, cols = np.nonzero(result.context.scan_map)
+    assert len(rows) > 100
+    centres = np.column_stack([(cols + 0.5) * 0.05, (rows + 0.5) * 0.05])
+    assert float(np.max(DistanceField(coarse).distance(centres))) <= 0.05 * np.sqrt(0.5) + 0.03 + 1e-9
+
+
+@pytest.mark.parametrize("value", [0.0, -0.1, 2.0, float("nan"), True, "0.1"])
+def test_a_map_resolution_out_of_bounds_is_refused_by_name(value):
+    with pytest.raises(FgdwaError, match="map_resolution"):
+        run_episode(World(grid=_room()), (0.6, 3.0, 0.0), (7.4, 3.0), mapping="scan", map_resolution=value,
+                    max_steps=1)
+
+
+def test_a_map_resolution_with_the_map_known_is_refused():
+    with pytest.raises(FgdwaError, match="map_resolution: only the map the robot builds"):
+        run_episode(World(grid=_room()), (0.6, 3.0, 0.0), (7.4, 3.0), mapping="known", map_resolution=0.05,
+                    max_steps=1)

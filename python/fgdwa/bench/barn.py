@@ -61,9 +61,10 @@ class BarnSetup:
     The lidar is the Jackal's Hokuyo UST-10LX class: 270 degrees, 0.5 degree
     steps, 10 m, ``noise_std`` Gaussian range noise and a ``dropout`` share of
     beams returning nothing, drawn from the trial's seed. A real scan is never
-    exact, so neither is the default one: the robot's map marks each hit's cell,
-    and a hit that noise puts short of the surface marks the free cell before
-    it, which narrows BARN's gaps as a real sensor would. ``latency`` control
+    exact, so neither is the default one: the robot's map (cells of
+    ``map_resolution``) marks each hit's cell, and a hit that noise puts short of
+    the surface marks the free cell before it, which narrows BARN's gaps as a
+    real sensor would. ``latency`` control
     cycles pass between a scan and its command reaching the wheels.
     """
 
@@ -78,6 +79,9 @@ class BarnSetup:
     body: str = DEFAULT_BODY  # a profile of fgdwa.sim.body.BODY_PROFILES
     # m: the planner's footprint (BARN's box) grows by this on every side; 0.05 covers the Jackal's body
     footprint_padding: float = 0.05
+    # m, the cells of the map the robot builds from its scans (the ROS node's BARN config too), not the world's
+    # 15 cm, whose cells widen every obstacle a noisy hit lands beside by a whole cell and close BARN's gaps
+    map_resolution: float = 0.1
     replan_period: float = 0.5  # s between replans of a blocked path at most
     stall_time: float = 3.0  # s without 0.1 m of progress before a recovery
     # The challenge's time limit ends a run: the navigator keeps recovering until then.
@@ -93,6 +97,10 @@ class BarnSetup:
         padding = self.footprint_padding
         if not (isinstance(padding, (int, float)) and not isinstance(padding, bool) and 0 <= padding <= 1):
             raise FgdwaError(f"BarnSetup.footprint_padding = {short_repr(padding)}: must be a number in [0, 1] (m)")
+        resolution = self.map_resolution
+        if not (isinstance(resolution, (int, float)) and not isinstance(resolution, bool)
+                and 0.01 <= resolution <= 1):
+            raise FgdwaError(f"BarnSetup.map_resolution = {short_repr(resolution)}: must be a number in [0.01, 1] (m)")
         for name in ("lidar_beams", "max_recoveries"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
@@ -182,7 +190,8 @@ def run_jackal(world: World, start, goal, goal_radius: float, time_limit: float,
                          outline=robot.outline, body=setup.body, params=params,
                          max_steps=int(math.floor(time_limit / setup.dt + 1e-9)), goal_tolerance=goal_radius,
                          lidar=setup.lidar(), weight_policy=preset.weight_policy(), seed=seed, mapping=mapping,
-                         navigator=navigator, latency=setup.latency, record_cycles=bool(record))
+                         navigator=navigator, latency=setup.latency, record_cycles=bool(record),
+                         map_resolution=setup.map_resolution if mapping == "scan" else None)
     wall = time.perf_counter() - tic
     if record:
         from fgdwa.plot.recording import write_recording
@@ -205,7 +214,7 @@ def run_barn_task(task: BarnTask) -> Run:
         **episode_columns(result, wall),
     }
     return Run(row=row, cells=task.cells, extent=tuple(world.grid.extent), poses=result.motion.poses,
-               paths=paths_followed(result), scan_map=result.context.scan_map)
+               paths=paths_followed(result), scan_map=result.context.scan_map, scan_extent=result.context.scan_extent)
 
 
 # What names a failed run in the terminal and in summary.json.
@@ -239,6 +248,17 @@ def write_barn_outputs(runs: Sequence[Run], out_dir, mapping: str, meta: Optiona
     return write_run_outputs(runs, out_dir, RUN_FIELDS, {"mapping": mapping, **(meta or {})}, figure)
 
 
+def add_jackal_arguments(parser, setup: BarnSetup) -> None:
+    """The options of the Jackal's footprint and map that `fgdwa barn` and `fgdwa dynabarn` share."""
+    parser.add_argument("--footprint-padding", type=float, default=setup.footprint_padding, metavar="M",
+                        help="grow the planner's footprint (BARN's 0.42 m x 0.33 m box) by this on every side; the "
+                             "referee judges the Jackal's body, 0.508 m x 0.430 m "
+                             f"(default {setup.footprint_padding:g})")
+    parser.add_argument("--map-resolution", type=float, default=setup.map_resolution, metavar="M",
+                        help="cells of the map the robot builds with --map scan, whatever the world's cells "
+                             f"(default {setup.map_resolution:g})")
+
+
 def barn_command(args) -> int:
     """``fgdwa barn``: run, print the table, write the outputs."""
     check_executor_arguments(args)
@@ -247,7 +267,7 @@ def barn_command(args) -> int:
     world_ids = dataset.select_ids(args.worlds)
     planners = check_planners(args.planners)
     setup = BarnSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency, body=args.body,
-                      footprint_padding=args.footprint_padding)
+                      footprint_padding=args.footprint_padding, map_resolution=args.map_resolution)
     tasks = barn_tasks(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup)
     runs, wall, recordings = run_benchmark(tasks, run_barn_task, args, barn_run_name)
     failed = failure_entries(runs, FAILURE_KEYS, recordings)
@@ -294,10 +314,7 @@ def register_barn_commands(subparsers) -> None:
     add_executor_arguments(barn)
     add_output_arguments(barn, "out/barn", "runs.csv, summary.json, failures.png")
     add_record_failures_argument(barn)
-    barn.add_argument("--footprint-padding", type=float, default=BarnSetup.footprint_padding, metavar="M",
-                      help="grow the planner's footprint (BARN's 0.42 m x 0.33 m box) by this on every side; the "
-                           "referee judges the Jackal's body, 0.508 m x 0.430 m "
-                           f"(default {BarnSetup.footprint_padding:g})")
+    add_jackal_arguments(barn, BarnSetup())
     barn.set_defaults(func=lambda args, *_: barn_command(args))
     barn_sub = barn.add_subparsers(dest="barn_command", required=False, metavar="{import}")
     imp = barn_sub.add_parser(

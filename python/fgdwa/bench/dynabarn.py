@@ -29,7 +29,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from fgdwa._core import FgdwaError, OccupancyGrid, robot_preset
-from fgdwa.bench.barn import BarnSetup, check_planners, run_jackal
+from fgdwa.bench.barn import BarnSetup, add_jackal_arguments, check_planners, run_jackal
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments)
 from fgdwa.bench.recordings import (add_record_failures_argument, check_recording_possible, failure_entries,
@@ -147,7 +147,7 @@ def run_dynabarn_task(task: DynabarnTask) -> Run:
                poses=result.motion.poses, paths=paths_followed(result),
                label=f"DynaBARN world {w.world} ({w.difficulty})", routes=[m.route for m in movers],
                discs=[(d.center[0], d.center[1], d.radius) for d in world.discs_at(t)],
-               scan_map=result.context.scan_map)
+               scan_map=result.context.scan_map, scan_extent=result.context.scan_extent)
 
 
 def dynabarn_command(args) -> int:
@@ -158,7 +158,8 @@ def dynabarn_command(args) -> int:
     world_ids = dataset.select_ids(args.worlds)
     planners = check_planners(args.planners)
     setup = dataclasses.replace(DYNABARN_SETUP, noise_std=args.noise, dropout=args.dropout, latency=args.latency,
-                                body=args.body, footprint_padding=args.footprint_padding)
+                                body=args.body, footprint_padding=args.footprint_padding,
+                                map_resolution=args.map_resolution)
     tasks = dynabarn_tasks(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup)
     runs, wall, recordings = run_benchmark(tasks, run_dynabarn_task, args, dynabarn_run_name)
     failed = failure_entries(runs, FAILURE_KEYS, recordings)
@@ -197,7 +198,5 @@ def register_dynabarn_commands(subparsers) -> None:
     add_executor_arguments(p)
     add_output_arguments(p, "out/dynabarn", "runs.csv, summary.json, failures.png")
     add_record_failures_argument(p)
-    p.add_argument("--footprint-padding", type=float, default=DYNABARN_SETUP.footprint_padding, metavar="M",
-                   help="grow the planner's footprint (BARN's box) by this on every side; the referee judges the "
-                        f"Jackal's body (default {DYNABARN_SETUP.footprint_padding:g})")
+    add_jackal_arguments(p, DYNABARN_SETUP)
     p.set_defaults(func=lambda args, *_: dynabarn_command(args))

@@ -32,6 +32,7 @@ class Run:
     poses: np.ndarray  # (steps + 1, 3)
     paths: list  # (cycle, (n, 2) points) per global path followed
     scan_map: Optional[np.ndarray] = None  # scan mode: the robot's map at the end
+    scan_extent: Optional[tuple] = None  # (x0, x1, y0, y1) m, scan_map's; None: the world grid's
     label: str = ""  # names the world in the figure; default "world <id>"
     routes: list = field(default_factory=list)  # (k, 2) waypoints of each moving obstacle's route, closed
     discs: list = field(default_factory=list)  # (x, y, radius) of each moving obstacle when the run ended

@@ -103,7 +103,7 @@ def _draw_run(ax, run) -> None:
     ax.imshow(cells, origin="lower", extent=extent, cmap=CELLS[0], vmin=0, vmax=CELLS[1], interpolation="nearest")
     if run.scan_map is not None:
         seen = np.ma.masked_where(np.asarray(run.scan_map) == 0, run.scan_map)
-        ax.imshow(seen, origin="lower", extent=extent, cmap=SEEN, alpha=0.6, interpolation="nearest")
+        ax.imshow(seen, origin="lower", extent=run.scan_extent or extent, cmap=SEEN, alpha=0.6, interpolation="nearest")
     if run.paths:
         points = np.asarray(run.paths[-1][1])
         ax.plot(points[:, 0], points[:, 1], "--", color="tab:purple", lw=0.8)

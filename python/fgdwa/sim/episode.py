@@ -142,6 +142,7 @@ class NavigationContext:
     key_nodes: Optional[np.ndarray] = None  # (k, 2) its key-node positions
     paths: list = field(default_factory=list)  # (cycle, (n, 2) points) per global path followed, in order
     scan_map: Optional[np.ndarray] = None  # (rows, cols) the robot's map at the end, with mapping="scan"
+    scan_extent: Optional[tuple] = None  # (x0, x1, y0, y1) m, scan_map's
     last_plan: Optional[PlanResult] = None
     last_rollouts: Optional[np.ndarray] = None  # (samples, n_steps, 3)
     last_scan: Optional[object] = None  # the last cycle's Scan, when sensing
@@ -197,6 +198,9 @@ class EpisodeOptions:
     seed: int = 0  # every random draw of the run: lidar noise and dropped beams, actuation noise, odometry drift
     danger_clearance: Optional[float] = None  # m; default footprint radius + 0.3 m
     mapping: str = "known"  # or "scan"
+    # m, the cells of the map the robot builds with mapping "scan" (the ROS node's ~map_resolution), over the
+    # world grid's extent; None: the world grid's own cells
+    map_resolution: Optional[float] = None
     navigator: Optional[NavigatorParams] = None  # default NavigatorParams()
     record_cycles: bool = False  # keep a CycleTrace per cycle
     # The body: a profile of fgdwa.sim.body.BODY_PROFILES ("default": wheels that ramp, command noise,
@@ -328,7 +332,10 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     # One field of what really stands there, for the lidar and the danger-point metric.
     true_field = DistanceField(true_grid) if true_grid is not None else None
     scanner = LaserScanner(lidar, true_field) if lidar is not None else None
-    robot = Navigator(limits, footprint, params, _navigator_map(world, start_pose, goal_point), mapping=mapping,
+    if options.map_resolution is not None and not scanning:
+        raise FgdwaError("map_resolution: only the map the robot builds (mapping 'scan') has cells of its own")
+    layout = _navigator_map(world, start_pose, goal_point, options.map_resolution)
+    robot = Navigator(limits, footprint, params, layout, mapping=mapping,
                       lidar=lidar if lidar is not None else LidarParams(), policy=weight_policy,
                       navigator=navigator_params, terrain=world.terrain, passing_factors=world.passing_factors,
                       window=window)
@@ -482,6 +489,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         key_nodes=None if path is None else path.points[robot.planner.key_nodes],
         paths=paths,
         scan_map=robot.map.cells if scanning else None,
+        scan_extent=tuple(robot.map.extent) if scanning else None,
         last_plan=robot.plan_result if planned else None,
         # The planner keeps its last cycle's rollouts: copied once, not every cycle.
         last_rollouts=robot.planner.rollouts() if planned else None,
@@ -517,10 +525,21 @@ def _trace(record, scan, n_steps: int, scan_map=None) -> CycleTrace:
                       scan_map=scan_map)
 
 
-def _navigator_map(world: World, start, goal) -> OccupancyGrid:
+def _navigator_map(world: World, start, goal, resolution: Optional[float] = None) -> OccupancyGrid:
     """The map the navigator starts from: the world's known grid, or for a
     world without one an empty grid around start and goal (the robot knows
-    nothing of its surroundings then)."""
+    nothing of its surroundings then). With ``resolution`` (mapping "scan"),
+    an empty grid over the world grid's extent in cells of that size: the
+    robot's map need not share the world's cells."""
+    if resolution is not None:
+        if isinstance(resolution, bool) or not isinstance(resolution, (int, float, np.integer, np.floating)) \
+                or not 0.01 <= resolution <= 1.0:
+            raise FgdwaError(f"map_resolution = {short_repr(resolution)}: must be a number in [0.01, 1] (m)")
+        if world.terrain is not None:
+            raise FgdwaError("map_resolution: a world with terrain keeps its grid's cells (the terrain is laid on them)")
+        x0, x1, y0, y1 = world.grid.extent
+        cols, rows = (int(np.ceil(span / resolution - 1e-9)) for span in (x1 - x0, y1 - y0))
+        return OccupancyGrid(np.zeros((rows, cols), dtype=np.uint8), float(resolution), (x0, y0))
     if world.grid is not None:
         return world.grid
     margin, resolution = 10.0, 0.1
