@@ -327,13 +327,14 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
   const std::size_t n_omega = static_cast<std::size_t>(params_.window.n_omega);
   const bool bounds_exact = fixed.lower_bounds_exact(footprint_);
   const bool instant = params_.wheels == WheelModel::Instant;
+  response_ = instant ? 0.0 : params_.response_time;
   start_twist_ = state.twist;
   speed_profiles(state.twist.v, n_omega, instant);
   headings_.resize(std::min(n_omega, n));
   for (std::size_t j = 0; j < headings_.size(); ++j) {
     const double omega = result_.samples[j].omega;
     headings_[j].assign(state.pose.theta, cos_start, sin_start, instant ? omega : state.twist.omega, omega,
-                        limits_.acc_omega, limits_.braking_omega(), params_.dt, n_steps_);
+                        limits_.acc_omega, limits_.braking_omega(), params_.dt, n_steps_, response_);
     rollouts_sharing(state.pose, j, n_omega);
   }
   // Cheap lower bounds first, for every pose of every rollout at once; exact
@@ -452,9 +453,12 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
     result_.free_distance[i] = free_distance;
     // Where the first period leaves the robot, and from there it must be able to stop.
     Twist reached{speed.reached, instant ? cmd.omega : state.twist.omega};
-    ramp_step(reached.omega, cmd.omega, limits_.acc_omega, limits_.braking_omega(), params_.dt);
+    response_step(reached.omega, cmd.omega, limits_.acc_omega, limits_.braking_omega(), response_, params_.dt);
+    // Lagging wheels brake late: they cover about v times the lag before braking bites.
+    const double lag_travel = std::abs(reached.v) * response_;
     const auto admissible = [&](double free) {
-      return detail::is_admissible_unchecked(cmd, reached, speed.first, free, limits_, params_.dt, params_.braking);
+      return free >= lag_travel && detail::is_admissible_unchecked(cmd, reached, speed.first, free - lag_travel, limits_,
+                                                                   params_.dt, params_.braking);
     };
     RejectReason reason = admissible(free_distance) ? RejectReason::None : RejectReason::Collision;
     if (reason == RejectReason::None && impassable_) {
@@ -558,7 +562,8 @@ void LocalPlanner::speed_profiles(double v_now, std::size_t row, bool instant) {
     p.longest = std::abs(target) * params_.dt;
     travel[0] = 0.0;
     for (std::size_t k = 0; k < steps; ++k) {
-      length[k] = (v == target ? target : ramp_step(v, target, limits_.acc_v, limits_.braking_v(), params_.dt)) * params_.dt;
+      length[k] = (v == target ? target : response_step(v, target, limits_.acc_v, limits_.braking_v(), response_, params_.dt)) * params_.dt;
+      if (std::abs(v - target) < 1e-6) v = target;
       if (k == 0) p.reached = v;
       p.longest = std::max(p.longest, std::abs(length[k]));
       travel[k + 1] = travel[k] + std::abs(length[k]);
@@ -584,8 +589,8 @@ double LocalPlanner::half_step_motion(const Twist& twist, double obstacle_speed)
 LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world) const {
   // Where the first period, ramping from the measured twist, leaves the wheels.
   Twist first = params_.wheels == WheelModel::Instant ? result_.samples[i] : start_twist_;
-  ramp_step(first.v, result_.samples[i].v, limits_.acc_v, limits_.braking_v(), params_.dt);
-  ramp_step(first.omega, result_.samples[i].omega, limits_.acc_omega, limits_.braking_omega(), params_.dt);
+  response_step(first.v, result_.samples[i].v, limits_.acc_v, limits_.braking_v(), response_, params_.dt);
+  response_step(first.omega, result_.samples[i].omega, limits_.acc_omega, limits_.braking_omega(), response_, params_.dt);
   const Trajectory& poses = rollouts_[i];
   Escape best{result_.moving_contact[i], -std::numeric_limits<double>::infinity()};
   // A contact in the first period cannot be helped by what follows it.

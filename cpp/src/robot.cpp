@@ -192,7 +192,7 @@ void RolloutHeadings::assign(double start_theta, double cos_start, double sin_st
 }
 
 void RolloutHeadings::assign(double start_theta, double cos_start, double sin_start, double omega_now, double omega,
-                             double rise, double fall, double dt, int n_steps) {
+                             double rise, double fall, double dt, int n_steps, double response) {
   const std::size_t n = static_cast<std::size_t>(std::max(n_steps, 0));
   theta.resize(n);
   cos.resize(n);
@@ -200,9 +200,11 @@ void RolloutHeadings::assign(double start_theta, double cos_start, double sin_st
   max_turn = std::abs(omega * dt);
   double c = cos_start, s = sin_start, heading = wrap_angle(start_theta);
   std::size_t k = 0;
-  // The ramp's steps, each with its own turn.
+  // The ramp's steps, each with its own turn (a lag never quite arrives: a
+  // micro-radian per second off is arrived).
   for (; k < n && omega_now != omega; ++k) {
-    const double turn = ramp_step(omega_now, omega, rise, fall, dt) * dt;
+    const double turn = response_step(omega_now, omega, rise, fall, response, dt) * dt;
+    if (std::abs(omega_now - omega) < 1e-6) omega_now = omega;
     max_turn = std::max(max_turn, std::abs(turn));
     const double cos_turn = std::cos(turn), sin_turn = std::sin(turn);
     const double c_next = c * cos_turn - s * sin_turn;
@@ -273,6 +275,19 @@ double ramp_step(double& value, double target, double rise, double fall, double 
   }
   area += value * (dt - t);
   return area / dt;
+}
+
+double response_step(double& value, double target, double rise, double fall, double response, double dt) {
+  if (response <= 0.0) return ramp_step(value, target, rise, fall, dt);
+  const double keep = std::exp(-dt / response);  // what remains of the gap at the step's end
+  const double mean_keep = response / dt * (1.0 - keep);  // its mean over the step
+  const double lagged = target + (value - target) * keep;
+  double ramped = value;
+  const double ramp_mean = ramp_step(ramped, lagged, rise, fall, dt);
+  const double lag_mean = target + (value - target) * mean_keep;
+  value = ramped;
+  // The acceleration limits hold the wheels back further when the ramp falls short of the lag.
+  return ramped == lagged ? lag_mean : ramp_mean;
 }
 
 void rollout(const Pose2& start, const Twist& current, const Twist& command, const RobotLimits& limits, double dt,

@@ -1366,6 +1366,7 @@ class PlannerParams:
       normalization: how each critic's terms are scaled before weighting: sum (classic DWA), minmax, or none (raw, as Nav2's DWB adds them)
       braking: admissibility's braking rule (Eq. 3): discrete (one period of latency, stepped deceleration) or continuous (the paper's literal form)
       wheels: how a rollout's first steps reach the sampled velocity: ramp (from the measured twist at the acceleration limits, as a robot's wheels do) or instant (at once, as an ideal simulated body does)
+      response_time (s): with wheels ramp: time constant of the first-order lag with which the wheels follow a command on top of the ramp, as the robot's identified response (0: the ramp alone)
       goal_tolerance (m): GoalReached within this distance of the goal
       safety_margin (m): clearance below which a rollout counts as in contact (never more than the robot's own)
       moving_horizon (s): a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: only the braking rule counts movers)
@@ -1387,6 +1388,7 @@ class PlannerParams:
     mover_speed_weight: typing.Any
     moving_horizon: typing.Any
     normalization: typing.Any
+    response_time: typing.Any
     safety_margin: typing.Any
     sim_time: typing.Any
     wheels: typing.Any

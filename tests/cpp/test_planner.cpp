@@ -1207,6 +1207,55 @@ TEST(LocalPlanner, CommandsStayInsideTheLimitsWhateverTheState) {
   EXPECT_EQ(r.command.v, limits.v_max);  // the closest to braking the wheels may be asked for
 }
 
+// Wheels that lag behind a command: the rollouts follow the lag (the first
+// step from rest covers the lag's mean, not the command's v dt), so a robot
+// told its response does not count on a turn or a stop it cannot make.
+TEST(LocalPlanner, RolloutsFollowTheWheelsResponse) {
+  RobotLimits limits;
+  limits.v_max = 1.0;  // speed samples every 0.05 m/s
+  limits.acc_v = limits.brake_v = 100.0;
+  limits.acc_omega = limits.brake_omega = 100.0;
+  PlannerParams params;
+  params.wheels = WheelModel::Ramp;
+  params.dt = 0.1;
+  params.sim_time = 1.0;
+  const FieldClearance open;
+  const RobotState rest{Pose2{}, Twist{}};
+  LocalPlanner prompt(limits, Footprint::circle(0.25), params);
+  params.response_time = 0.1;
+  LocalPlanner lagging(limits, Footprint::circle(0.25), params);
+  prompt.plan(rest, Vec2(3.0, 0.0), open);
+  const PlanResult& r = lagging.plan(rest, Vec2(3.0, 0.0), open);
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    const Twist& s = r.samples[i];
+    if (s.omega != 0.0 || s.v <= 0.0) continue;
+    const double first = lagging.rollouts()[i][0].x;
+    EXPECT_NEAR(first, s.v * (1.0 - (1.0 - std::exp(-1.0))) * params.dt, 1e-9) << "v " << s.v;
+    EXPECT_LT(first, prompt.rollouts()[i][0].x);
+  }
+  // Lagging wheels brake late: 1 m/s toward a wall 0.25 m off the footprint is
+  // admissible to prompt wheels only.
+  const std::vector<std::uint8_t> cells = [] {
+    std::vector<std::uint8_t> c(40 * 40, 0);
+    for (int row = 0; row < 40; ++row) c[static_cast<std::size_t>(row) * 40 + 25] = 1;  // x = 0.5 m
+    return c;
+  }();
+  const FieldClearance wall(std::make_shared<DistanceField>(OccupancyGrid(40, 40, 0.1, Vec2(-2.0, -2.0), cells)));
+  // 0.12 m from the wall's margin at 0.5 m/s: straight on, contact after 0.1 m;
+  // prompt wheels need 0.05 m and 1 mm of braking, lagging ones 0.05 m more.
+  const RobotState moving{Pose2{0.11, 0.0, 0.0}, Twist{0.5, 0.0}};
+  const auto admits_straight = [&](LocalPlanner& planner) {
+    const PlanResult& plan = planner.plan(moving, Vec2(3.0, 0.0), wall);
+    for (std::size_t i = 0; i < plan.samples.size(); ++i)
+      if (plan.samples[i].omega == 0.0 && std::abs(plan.samples[i].v - 0.5) < 1e-9)
+        return plan.reasons[i] == RejectReason::None;
+    ADD_FAILURE() << "no straight sample at 0.5 m/s";
+    return false;
+  };
+  EXPECT_TRUE(admits_straight(prompt));
+  EXPECT_FALSE(admits_straight(lagging));
+}
+
 TEST(Controller, CommandsStayInsideTheLimitsWhateverTheState) {
   RobotLimits limits;
   limits.v_max = 0.8;

@@ -236,5 +236,26 @@ TEST(Window, RampStepMovesAtTheLimitsThenHolds) {
   EXPECT_DOUBLE_EQ(v, -0.5);
 }
 
+// A first-order lag on top of the ramp: with room to accelerate the velocity
+// follows the lag exactly (its end and its mean over the step); where the lag
+// asks for more than the acceleration allows, the ramp holds it back.
+TEST(Window, ResponseStepFollowsTheLagWithinTheLimits) {
+  const double dt = 0.1, tau = 0.1, keep = std::exp(-1.0), mean_keep = 1.0 - std::exp(-1.0);
+  double v = 0.2, ramped = 0.2;
+  EXPECT_DOUBLE_EQ(response_step(v, 1.0, 100.0, 100.0, 0.0, dt), ramp_step(ramped, 1.0, 100.0, 100.0, dt));
+  EXPECT_DOUBLE_EQ(v, ramped);
+  v = 0.2;
+  EXPECT_NEAR(response_step(v, 1.0, 100.0, 100.0, tau, dt), 1.0 - 0.8 * mean_keep, 1e-12);
+  EXPECT_NEAR(v, 1.0 - 0.8 * keep, 1e-12);
+  // Held back by a 2 m/s^2 acceleration: 0.2 m/s more at most.
+  v = 0.2;
+  EXPECT_NEAR(response_step(v, 1.0, 2.0, 4.0, tau, dt), 0.3, 1e-12);
+  EXPECT_NEAR(v, 0.4, 1e-12);
+  // Braking lags too: from 1 m/s toward 0 the wheels still turn after a step.
+  v = 1.0;
+  response_step(v, 0.0, 100.0, 100.0, tau, dt);
+  EXPECT_NEAR(v, keep, 1e-12);
+}
+
 }  // namespace
 }  // namespace fgdwa

@@ -87,6 +87,7 @@ struct PlannerParams {
   Normalization normalization = Normalization::Sum;
   BrakingModel braking = BrakingModel::Discrete;
   WheelModel wheels = WheelModel::Instant;
+  double response_time = 0.0;
   double goal_tolerance = 0.3;
   double safety_margin = 0.02;
   // A robot that brakes is still hit by what moves into it, so standing
@@ -110,6 +111,7 @@ struct PlannerParams {
     v.choice("normalization", &P::normalization, "how each critic's terms are scaled before weighting: sum (classic DWA), minmax, or none (raw, as Nav2's DWB adds them)");
     v.choice("braking", &P::braking, "admissibility's braking rule (Eq. 3): discrete (one period of latency, stepped deceleration) or continuous (the paper's literal form)");
     v.choice("wheels", &P::wheels, "how a rollout's first steps reach the sampled velocity: ramp (from the measured twist at the acceleration limits, as a robot's wheels do) or instant (at once, as an ideal simulated body does)");
+    v.real("response_time", &P::response_time, "s", Bounds::closed(0, 1), "with wheels ramp: time constant of the first-order lag with which the wheels follow a command on top of the ramp, as the robot's identified response (0: the ramp alone)");
     v.real("goal_tolerance", &P::goal_tolerance, "m", Bounds::at_least(0), "GoalReached within this distance of the goal");
     v.real("safety_margin", &P::safety_margin, "m", Bounds::at_least(0), "clearance below which a rollout counts as in contact (never more than the robot's own)");
     v.real("moving_horizon", &P::moving_horizon, "s", Bounds::at_least(0, limits::kMaxHorizon), "a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: only the braking rule counts movers)");
@@ -286,6 +288,7 @@ class LocalPlanner {
   int best_evasion(const ClearanceSource& world) const;
   double margin_ = 0.0;  // this cycle's contact margin (m)
   Twist start_twist_;    // this cycle's measured twist, where every rollout starts
+  double response_ = 0.0;  // s, the wheels' lag the rollouts model (0 with instant wheels)
 
   std::shared_ptr<const TerrainGrid> terrain_;
   PassingFactors passing_factors_ = kDefaultPassingFactors;

@@ -122,6 +122,10 @@ Trajectory rollout(const Pose2& start, const Twist& twist, double dt, int n_step
 // then growing), then holds it. One step of dt: `value` becomes the velocity at
 // the step's end; returns its mean over the step, which a unicycle step uses.
 double ramp_step(double& value, double target, double rise, double fall, double dt);
+// The same for wheels that also follow the command through a first-order lag
+// of time constant `response` (s): the velocity ramps toward where the lag has
+// brought it by the step's end; ramp_step when `response` is 0.
+double response_step(double& value, double target, double rise, double fall, double response, double dt);
 
 // The rollout a planner predicts for `command` from a robot moving at
 // `current`: each step moves with the mean twist of the ramp toward the
@@ -141,8 +145,9 @@ struct RolloutHeadings {
   // The same for a turn rate that ramps from `omega_now` toward `omega`
   // (ramp_step, at `rise` and `fall`) before it holds: the first steps turn by
   // the ramp's mean, `max_turn` becomes the largest |turn| of a step (rad).
+  // `response`: the wheels' first-order lag (response_step), 0 for none.
   void assign(double start_theta, double cos_start, double sin_start, double omega_now, double omega, double rise,
-              double fall, double dt, int n_steps);
+              double fall, double dt, int n_steps, double response = 0.0);
   std::vector<double> theta, cos, sin;  // per pose; theta wrapped to (-pi, pi]
   double max_turn = 0.0;
 };

@@ -77,6 +77,9 @@ class BarnSetup:
     dropout: float = 0.01  # probability a beam returns nothing
     latency: int = 0  # control cycles from a scan to its command reaching the wheels
     body: str = DEFAULT_BODY  # a profile of fgdwa.sim.body.BODY_PROFILES
+    # How the rollouts take a command (PlannerParams.wheels): "ramp", from the measured twist at the
+    # Jackal's accelerations and through the body's lag (planner/response_time), as the wheels do
+    wheels: str = "ramp"
     # m: the planner's footprint (BARN's box) grows by this on every side; 0.05 covers the Jackal's body
     footprint_padding: float = 0.05
     # m, the cells of the map the robot builds from its scans (the ROS node's BARN config too), not the world's
@@ -94,6 +97,8 @@ class BarnSetup:
                 raise FgdwaError(f"BarnSetup.{name} = {short_repr(value)}: must be a finite number > 0")
         check_sensing("BarnSetup", self.noise_std, self.dropout, self.latency)
         body_profile(self.body)
+        if self.wheels not in ("ramp", "instant"):
+            raise FgdwaError(f"BarnSetup.wheels = {short_repr(self.wheels)}: expected 'ramp' or 'instant'")
         padding = self.footprint_padding
         if not (isinstance(padding, (int, float)) and not isinstance(padding, bool) and 0 <= padding <= 1):
             raise FgdwaError(f"BarnSetup.footprint_padding = {short_repr(padding)}: must be a number in [0, 1] (m)")
@@ -180,7 +185,9 @@ def run_jackal(world: World, start, goal, goal_radius: float, time_limit: float,
     Rerun recording (``title``). Returns (result, outcome, wall time in s):
     the challenge knows three outcomes, so running out of steps is a timeout."""
     preset = planner_preset(planner)
-    params = params_with(preset.params, dt=setup.dt, sim_time=setup.sim_time, goal_tolerance=goal_radius)
+    # The planner knows its robot's response, as a user who identified it does.
+    params = params_with(preset.params, dt=setup.dt, sim_time=setup.sim_time, goal_tolerance=goal_radius,
+                         wheels=setup.wheels, response_time=body_profile(setup.body).actuation_lag)
     robot = robot_preset("jackal")
     navigator = setup.navigator()
     if record:
