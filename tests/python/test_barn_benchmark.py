@@ -166,6 +166,12 @@ def test_bad_requests_are_named(barn, barn_file, tmp_path):
         with pytest.raises(FgdwaError, match=field):
             BarnSetup(**{field: value})
     assert BarnSetup(stall_time=4.5, max_recoveries=3).navigator().stall_time == 4.5
+    for field, value in (("map_resolution", 0.0), ("map_resolution", 2.0), ("wheels", "lagging")):
+        with pytest.raises(FgdwaError, match=field):
+            BarnSetup(**{field: value})
+    # Scans are matched to a map given whole, not to one built from them.
+    assert BarnSetup().navigator("known").scan_match.enabled
+    assert not BarnSetup().navigator("scan").scan_match.enabled
     assert main(["barn", "--data", str(barn_file), "--worlds", "0", "--executor", "local", "--scheduler",
                  "tcp://localhost:1", "--out", str(tmp_path)]) == 2
     assert main(["barn", "--data", str(tmp_path / "missing.npz"), "--out", str(tmp_path)]) == 2
