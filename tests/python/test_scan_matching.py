@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from fgdwa import DistanceField, FgdwaError, LidarParams, NavigatorParams, OccupancyGrid
-from fgdwa.sim.episode import run_episode
+from fgdwa.sim.body import body_profile
+from fgdwa.sim.episode import GOAL_MARGIN, default_goal_margin, run_episode
 from fgdwa.sim.world import World
 
 
@@ -91,3 +92,14 @@ def test_a_map_resolution_with_the_map_known_is_refused():
     with pytest.raises(FgdwaError, match="map_resolution: only the map the robot builds"):
         run_episode(World(grid=_room()), (0.6, 3.0, 0.0), (7.4, 3.0), mapping="known", map_resolution=0.05,
                     max_steps=1)
+
+
+def test_a_matched_pose_is_an_estimate_and_the_goal_is_aimed_inside_the_tolerance():
+    # Even on an ideal body the matched pose is a few centimetres off: the
+    # navigator aims 0.1 m inside the referee's tolerance, as with drifting
+    # odometry, not at its edge.
+    matching = NavigatorParams()
+    matching.scan_match.enabled = True
+    assert default_goal_margin(body_profile("ideal"), NavigatorParams()) == 0.0
+    assert default_goal_margin(body_profile("ideal"), matching) == GOAL_MARGIN
+    assert default_goal_margin(body_profile("default"), NavigatorParams()) == GOAL_MARGIN

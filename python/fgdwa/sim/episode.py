@@ -46,7 +46,7 @@ from fgdwa._core import (
 )
 from fgdwa.global_planning import method_params, plan_global
 from fgdwa.mapping import check_mapping
-from fgdwa.sim.body import DEFAULT_BODY, SCAN_SEED_STRIDE, Body, body_settings, check_seed
+from fgdwa.sim.body import DEFAULT_BODY, SCAN_SEED_STRIDE, Body, BodySettings, body_settings, check_seed
 from fgdwa.sim.referee import (DANGER_MARGIN, Contact, collides_during_step, collision_contact,
                                danger_point_clearance, danger_points, falls, path_length, smoothness)
 from fgdwa.sim.world import World
@@ -214,12 +214,19 @@ class EpisodeOptions:
     # The body the referee judges (the true outline); None: the footprint the planner is given.
     outline: Optional[Footprint] = None
     # m the navigator's goal tolerance is tighter than the referee's (at most half of it goes): what a user
-    # whose odometry drifts asks of the robot. None: 0.1 m when the body's odometry drifts, else 0.
+    # whose pose is an estimate asks of the robot. None: 0.1 m when the odometry drifts or scans are matched, else 0.
     goal_margin: Optional[float] = None
 
 
 EPISODE_OPTIONS = tuple(f.name for f in dataclasses.fields(EpisodeOptions))
-GOAL_MARGIN = 0.1  # m, goal_margin's default with a drifting body
+GOAL_MARGIN = 0.1  # m, goal_margin's default with a drifting body or scan matching
+
+
+def default_goal_margin(body: BodySettings, navigator: NavigatorParams) -> float:
+    """goal_margin's default (m): GOAL_MARGIN where the navigator's pose is an
+    estimate that may put the goal a little off where the referee judges it
+    (odometry that drifts, or scans matched to the map), else 0."""
+    return GOAL_MARGIN if max(body.odometry_drift) > 0 or navigator.scan_match.enabled else 0.0
 
 
 def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = None, **settings) -> EpisodeResult:
@@ -308,7 +315,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         raise FgdwaError(f"goal_tolerance = {short_repr(goal_tolerance)}: must be >= 0")
     margin = options.goal_margin
     if margin is None:
-        margin = GOAL_MARGIN if max(settings_of_body.odometry_drift) > 0 else 0.0
+        margin = default_goal_margin(settings_of_body, navigator_params)
     if isinstance(margin, bool) or not isinstance(margin, (int, float, np.integer, np.floating)) \
             or not 0 <= margin <= 10:
         raise FgdwaError(f"goal_margin = {short_repr(margin)}: must be a number in [0, 10] (m)")
