@@ -95,9 +95,9 @@ def test_a_map_resolution_with_the_map_known_is_refused():
 
 
 def test_a_matched_pose_is_an_estimate_and_the_goal_is_aimed_inside_the_tolerance():
-    # Even on an ideal body the matched pose is a few centimetres off: the
+    # Even on an ideal body a matched pose is an estimate, off by a little: the
     # navigator aims 0.1 m inside the referee's tolerance, as with drifting
-    # odometry, not at its edge.
+    # odometry, not at its edge (where a millimetre decides).
     matching = NavigatorParams()
     matching.scan_match.enabled = True
     assert default_goal_margin(body_profile("ideal"), NavigatorParams()) == 0.0
