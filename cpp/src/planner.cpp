@@ -563,7 +563,6 @@ void LocalPlanner::speed_profiles(double v_now, std::size_t row, bool instant) {
     travel[0] = 0.0;
     for (std::size_t k = 0; k < steps; ++k) {
       length[k] = (v == target ? target : response_step(v, target, limits_.acc_v, limits_.braking_v(), response_, params_.dt)) * params_.dt;
-      if (std::abs(v - target) < 1e-6) v = target;
       if (k == 0) p.reached = v;
       p.longest = std::max(p.longest, std::abs(length[k]));
       travel[k + 1] = travel[k] + std::abs(length[k]);

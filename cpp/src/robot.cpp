@@ -200,11 +200,9 @@ void RolloutHeadings::assign(double start_theta, double cos_start, double sin_st
   max_turn = std::abs(omega * dt);
   double c = cos_start, s = sin_start, heading = wrap_angle(start_theta);
   std::size_t k = 0;
-  // The ramp's steps, each with its own turn (a lag never quite arrives: a
-  // micro-radian per second off is arrived).
+  // The ramp's steps, each with its own turn.
   for (; k < n && omega_now != omega; ++k) {
     const double turn = response_step(omega_now, omega, rise, fall, response, dt) * dt;
-    if (std::abs(omega_now - omega) < 1e-6) omega_now = omega;
     max_turn = std::max(max_turn, std::abs(turn));
     const double cos_turn = std::cos(turn), sin_turn = std::sin(turn);
     const double c_next = c * cos_turn - s * sin_turn;
@@ -285,7 +283,8 @@ double response_step(double& value, double target, double rise, double fall, dou
   double ramped = value;
   const double ramp_mean = ramp_step(ramped, lagged, rise, fall, dt);
   const double lag_mean = target + (value - target) * mean_keep;
-  value = ramped;
+  // A lag never quite arrives: within a millionth (per second) it has, and the velocity holds from there.
+  value = std::abs(ramped - target) < 1e-6 ? target : ramped;
   // The acceleration limits hold the wheels back further when the ramp falls short of the lag.
   return ramped == lagged ? lag_mean : ramp_mean;
 }

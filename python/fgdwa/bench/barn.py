@@ -24,8 +24,8 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from fgdwa._core import (FgdwaError, LidarParams, NavigatorParams, OccupancyGrid, RobotLimits, planner_preset, preset_names,
-                         robot_preset)
+from fgdwa._core import (FgdwaError, LidarParams, NavigatorParams, OccupancyGrid, PlannerParams, RobotLimits,
+                         planner_preset, preset_names, robot_preset)
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
                                  check_executor_arguments, check_sensing, planner_list)
 from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
@@ -37,7 +37,7 @@ from fgdwa.io.barn_convert import convert_barn_worlds
 from fgdwa.io.barn_data import BarnDataset, barn_score, describe_world_ids, find_barn_file, load_barn
 from fgdwa.mapping import MAPPING_MODES, check_mapping
 from fgdwa.sim.body import DEFAULT_BODY, body_profile
-from fgdwa.sim.episode import run_episode
+from fgdwa.sim.episode import check_map_resolution, run_episode
 from fgdwa.sim.scenario import params_with
 from fgdwa.sim.world import World
 from fgdwa.file_limits import short_repr
@@ -97,15 +97,14 @@ class BarnSetup:
                 raise FgdwaError(f"BarnSetup.{name} = {short_repr(value)}: must be a finite number > 0")
         check_sensing("BarnSetup", self.noise_std, self.dropout, self.latency)
         body_profile(self.body)
-        if self.wheels not in ("ramp", "instant"):
-            raise FgdwaError(f"BarnSetup.wheels = {short_repr(self.wheels)}: expected 'ramp' or 'instant'")
+        try:
+            params_with(PlannerParams(), wheels=self.wheels)  # the schema's choices, not a copy of them
+        except FgdwaError as error:
+            raise FgdwaError(f"BarnSetup.wheels: {error}") from None
         padding = self.footprint_padding
         if not (isinstance(padding, (int, float)) and not isinstance(padding, bool) and 0 <= padding <= 1):
             raise FgdwaError(f"BarnSetup.footprint_padding = {short_repr(padding)}: must be a number in [0, 1] (m)")
-        resolution = self.map_resolution
-        if not (isinstance(resolution, (int, float)) and not isinstance(resolution, bool)
-                and 0.01 <= resolution <= 1):
-            raise FgdwaError(f"BarnSetup.map_resolution = {short_repr(resolution)}: must be a number in [0.01, 1] (m)")
+        check_map_resolution(self.map_resolution, "BarnSetup.map_resolution")
         for name in ("lidar_beams", "max_recoveries"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:

@@ -532,6 +532,13 @@ def _trace(record, scan, n_steps: int, scan_map=None) -> CycleTrace:
                       scan_map=scan_map)
 
 
+def check_map_resolution(value, name: str = "map_resolution") -> None:
+    """Refuses, naming ``name``, a map cell size that is not a number in [0.01, 1] m."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
+            or not 0.01 <= value <= 1.0:
+        raise FgdwaError(f"{name} = {short_repr(value)}: must be a number in [0.01, 1] (m)")
+
+
 def _navigator_map(world: World, start, goal, resolution: Optional[float] = None) -> OccupancyGrid:
     """The map the navigator starts from: the world's known grid, or for a
     world without one an empty grid around start and goal (the robot knows
@@ -539,9 +546,7 @@ def _navigator_map(world: World, start, goal, resolution: Optional[float] = None
     an empty grid over the world grid's extent in cells of that size: the
     robot's map need not share the world's cells."""
     if resolution is not None:
-        if isinstance(resolution, bool) or not isinstance(resolution, (int, float, np.integer, np.floating)) \
-                or not 0.01 <= resolution <= 1.0:
-            raise FgdwaError(f"map_resolution = {short_repr(resolution)}: must be a number in [0.01, 1] (m)")
+        check_map_resolution(resolution)
         if world.terrain is not None:
             raise FgdwaError("map_resolution: a world with terrain keeps its grid's cells (the terrain is laid on them)")
         x0, x1, y0, y1 = world.grid.extent
