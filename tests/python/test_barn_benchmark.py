@@ -172,6 +172,8 @@ def test_bad_requests_are_named(barn, barn_file, tmp_path):
     # Scans are matched to a map given whole, not to one built from them.
     assert BarnSetup().navigator("known").scan_match.enabled
     assert not BarnSetup().navigator("scan").scan_match.enabled
+    with pytest.raises(FgdwaError, match="mapping"):
+        BarnSetup().navigator("given")
     assert main(["barn", "--data", str(barn_file), "--worlds", "0", "--executor", "local", "--scheduler",
                  "tcp://localhost:1", "--out", str(tmp_path)]) == 2
     assert main(["barn", "--data", str(tmp_path / "missing.npz"), "--out", str(tmp_path)]) == 2

@@ -118,6 +118,7 @@ class BarnSetup:
                            acc_omega=jackal.acc_omega)
 
     def navigator(self, mapping: str = "scan") -> NavigatorParams:
+        check_mapping(mapping)
         params = NavigatorParams(footprint_padding=self.footprint_padding, replan_period=self.replan_period,
                                  stall_time=self.stall_time,
                                  max_recoveries=self.max_recoveries)
