@@ -208,24 +208,30 @@ void Tracker::relabel(Track& t, const Memory& memory) const {
     t.moving = speed >= 0.5 * params_.moving_speed;
 }
 
-const Scan* Tracker::reference_scan(double time) const {
-  // The newest scan at least half a window old.
-  const Scan* reference = nullptr;
-  for (const auto& [t, scan] : scans_)
-    if (t <= time - 0.5 * params_.moving_window + 1e-9) reference = &scan;
+// The newest of `items` (time-ordered pairs) at least half a window old:
+// a slow mover needs that long to leave the free_margin behind. Until one is
+// that old, the oldest before `time`: a fast mover does so within a scan or
+// two, and waiting half a window would leave it a static obstacle for that long.
+template <class Item>
+const Item* Tracker::reference_of(const std::deque<std::pair<double, Item>>& items, double time) const {
+  const Item* reference = nullptr;
+  for (const auto& [t, item] : items) {
+    if (t > time - 0.5 * params_.moving_window + 1e-9) {
+      if (!reference && t < time - 1e-9) reference = &item;
+      break;
+    }
+    reference = &item;
+  }
   return reference;
 }
 
 bool Tracker::displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan,
                                    double time) const {
-  const Scan* earlier = reference_scan(time);
-  if (!earlier) return false;
   // Its leading side where the earlier scan saw through ...
-  if (share_seen_through(*earlier, cluster.points, params_.free_margin)) return true;
+  const Scan* earlier = reference_of(scans_, time);
+  if (earlier && share_seen_through(*earlier, cluster.points, params_.free_margin)) return true;
   // ... or its trailing side, as seen then, where this scan sees through.
-  const std::vector<Vec2>* before = nullptr;
-  for (const auto& [t, points] : memory.shapes)
-    if (t <= time - 0.5 * params_.moving_window + 1e-9) before = &points;
+  const std::vector<Vec2>* before = reference_of(memory.shapes, time);
   return before && share_seen_through(scan, *before, params_.free_margin);
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -323,6 +324,25 @@ TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
             << " m/s (the filter's: " << worst_filter << " m/s)\n";
   EXPECT_LT(worst, 0.05);
   EXPECT_LT(worst_filter, 0.15);
+}
+
+// A disc coming at the sensor at 1.5 m/s from the first scan on, or at 0.7 m/s
+// across it, is labelled moving within five scans: free space is compared with
+// the oldest scan kept until one is half a window old, so a mover is not a
+// static obstacle for the first half second it is seen.
+TEST(Tracker, AMoverSeenFromTheFirstScanIsLabelledWithinFiveScans) {
+  const std::vector<Disc> movers = {Disc{Vec2(4.0, 0.0), 0.5, Vec2(-1.5, 0.0)},
+                                    Disc{Vec2(3.0, -1.0), 0.5, Vec2(0.0, 0.7)}};
+  for (const Disc& mover : movers)
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+      SCOPED_TRACE(::testing::Message() << "velocity " << mover.velocity.transpose() << ", seed " << seed);
+      Tracker tracker;
+      double labelled = std::numeric_limits<double>::infinity();
+      run(tracker, {mover}, 0.4, seed, kStill, [&](double t, const Tracker& tr) {
+        if (std::isinf(labelled) && !tr.moving_discs().empty()) labelled = t;
+      });
+      EXPECT_LE(labelled, 0.4 + 1e-9);
+    }
 }
 
 // A disc walking back and forth: 0.7 s after it turned, the prediction's

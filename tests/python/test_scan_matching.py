@@ -7,7 +7,7 @@ import pytest
 
 from fgdwa import DistanceField, FgdwaError, LidarParams, NavigatorParams, OccupancyGrid
 from fgdwa.sim.body import body_profile
-from fgdwa.sim.episode import GOAL_MARGIN, default_goal_margin, run_episode
+from fgdwa.sim.episode import GOAL_MARGIN_SHARE, default_goal_margin, run_episode
 from fgdwa.sim.world import World
 
 
@@ -96,10 +96,10 @@ def test_a_map_resolution_with_the_map_known_is_refused():
 
 def test_a_matched_pose_is_an_estimate_and_the_goal_is_aimed_inside_the_tolerance():
     # Even on an ideal body a matched pose is an estimate, off by a little: the
-    # navigator aims 0.1 m inside the referee's tolerance, as with drifting
+    # navigator aims inside the referee's tolerance, as with drifting
     # odometry, not at its edge (where a millimetre decides).
     matching = NavigatorParams()
     matching.scan_match.enabled = True
-    assert default_goal_margin(body_profile("ideal"), NavigatorParams()) == 0.0
-    assert default_goal_margin(body_profile("ideal"), matching) == GOAL_MARGIN
-    assert default_goal_margin(body_profile("default"), NavigatorParams()) == GOAL_MARGIN
+    assert default_goal_margin(body_profile("ideal"), NavigatorParams(), 1.0) == 0.0
+    assert default_goal_margin(body_profile("ideal"), matching, 1.0) == GOAL_MARGIN_SHARE
+    assert default_goal_margin(body_profile("default"), NavigatorParams(), 0.4) == 0.4 * GOAL_MARGIN_SHARE

@@ -176,7 +176,8 @@ class Tracker {
   // from the clusters left, then marks tracks lost and removes the long lost.
   //
   // `scan`, the one the clusters came from (unmasked), gives the moving label
-  // its second test: half a moving_window apart, a mover's hits lie where the
+  // its second test: half a moving_window apart (or, until a scan that old is
+  // kept, apart from the oldest kept), a mover's hits lie where the
   // other scan saw through (its leading side in the earlier scan's free
   // space, or its trailing side in the later one's), a static object's never,
   // however its apparent outline changes as the robot drives past. Without
@@ -228,7 +229,8 @@ class Tracker {
   LineFit fit_line(const std::deque<Centre>& centres, double since) const;
   void relabel(Track& track, const Memory& memory) const;
   bool displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan, double time) const;
-  const Scan* reference_scan(double time) const;
+  template <class Item>
+  const Item* reference_of(const std::deque<std::pair<double, Item>>& items, double time) const;
   TrackerParams params_;
   std::vector<Track> tracks_;
   std::vector<Memory> memory_;  // one per track

@@ -214,19 +214,24 @@ class EpisodeOptions:
     # The body the referee judges (the true outline); None: the footprint the planner is given.
     outline: Optional[Footprint] = None
     # m the navigator's goal tolerance is tighter than the referee's (at most half of it goes): what a user
-    # whose pose is an estimate asks of the robot. None: 0.1 m when the odometry drifts or scans are matched, else 0.
+    # whose pose is an estimate asks of the robot. None: half the referee's tolerance when the odometry drifts
+    # or scans are matched, else 0.
     goal_margin: Optional[float] = None
 
 
 EPISODE_OPTIONS = tuple(f.name for f in dataclasses.fields(EpisodeOptions))
-GOAL_MARGIN = 0.1  # m, goal_margin's default with a drifting body or scan matching
+GOAL_MARGIN_SHARE = 0.5  # of the referee's goal tolerance: goal_margin's default with a drifting body or scan matching
 
 
-def default_goal_margin(body: BodySettings, navigator: NavigatorParams) -> float:
-    """goal_margin's default (m): GOAL_MARGIN where the navigator's pose is an
-    estimate that may put the goal a little off where the referee judges it
-    (odometry that drifts, or scans matched to the map), else 0."""
-    return GOAL_MARGIN if max(body.odometry_drift) > 0 or navigator.scan_match.enabled else 0.0
+def default_goal_margin(body: BodySettings, navigator: NavigatorParams, tolerance: float) -> float:
+    """goal_margin's default (m) for a referee's goal ``tolerance`` (m): where the
+    navigator's pose is an estimate (odometry that drifts, or scans matched to
+    the map), the robot aims for the inner half of the goal region, since after
+    tens of metres the estimate may be off by tenths of a metre and a robot
+    that stops on the region's rim believing it has arrived may stand outside
+    it; else 0."""
+    estimated = max(body.odometry_drift) > 0 or navigator.scan_match.enabled
+    return GOAL_MARGIN_SHARE * tolerance if estimated else 0.0
 
 
 def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = None, **settings) -> EpisodeResult:
@@ -315,7 +320,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         raise FgdwaError(f"goal_tolerance = {short_repr(goal_tolerance)}: must be >= 0")
     margin = options.goal_margin
     if margin is None:
-        margin = default_goal_margin(settings_of_body, navigator_params)
+        margin = default_goal_margin(settings_of_body, navigator_params, tolerance)
     if isinstance(margin, bool) or not isinstance(margin, (int, float, np.integer, np.floating)) \
             or not 0 <= margin <= 10:
         raise FgdwaError(f"goal_margin = {short_repr(margin)}: must be a number in [0, 10] (m)")
