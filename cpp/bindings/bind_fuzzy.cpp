@@ -412,4 +412,11 @@ void init_fuzzy(py::module_& m) {
       "The paper's weight controller (Section 2.2.2, Tables 3 and 4): inputs I (obstacle density, "
       "[0, 2]) and D (path deviation, [0, 5] m), outputs beta ([0, 1]) and delta ([0, 5]), S/M/L "
       "uniform triangular partitions, 9 rules.");
+  m.def(
+      "mover_fuzzy_controller", [](IntArg resolution) { return mover_fuzzy_controller(to_resolution(resolution)); },
+      py::arg("resolution") = MamdaniEngine::kDefaultResolution,
+      "The paper's controller with a third input, T ([0, 3] s): the time to the nearest predicted contact with a "
+      "mover. The paper's rules stand; as a contact nears (T 'near' below 3 s, 'imminent' below 1.5 s) rules "
+      "adding the delta term one and two lower fire; beta is the paper's. FuzzyWeights(mover_fuzzy_controller()) runs it.");
+  m.attr("CONTACT_TIME_RANGE") = kContactTimeRange;
 }

@@ -65,7 +65,20 @@ void init_weights(py::module_& m) {
             return p.weights(density, deviation);
           },
           py::arg("density"), py::arg("deviation"),
-          "{critic name: weight} for obstacle density I and path deviation D (m).");
+          "{critic name: weight} for obstacle density I and path deviation D (m).")
+      .def(
+          "weights",
+          [](const WeightPolicy& p, FloatArg density_arg, FloatArg deviation_arg, FloatArg contact_arg) {
+            const double density = to_float(density_arg, "density"), deviation = to_float(deviation_arg, "deviation");
+            const double contact_time = to_float(contact_arg, "contact_time");
+            if (std::isnan(density)) throw Error("density I is NaN");
+            if (std::isnan(deviation)) throw Error("deviation D is NaN");
+            if (std::isnan(contact_time) || contact_time < 0.0) throw Error("contact time T must be >= 0 (s; inf without a mover)");
+            return p.weights(density, deviation, contact_time);
+          },
+          py::arg("density"), py::arg("deviation"), py::arg("contact_time"),
+          "{critic name: weight} for obstacle density I, path deviation D (m) and the time T (s) to the nearest "
+          "predicted contact with a mover (inf: none); a policy that does not read T gives weights(I, D).");
 
   py::class_<FixedWeights, WeightPolicy, std::shared_ptr<FixedWeights>>(
       m, "FixedWeights", "Critics' weights held fixed: FixedWeights(beta, delta) for clearance and similarity, or "
@@ -95,7 +108,8 @@ void init_weights(py::module_& m) {
 
   py::class_<FuzzyWeights, WeightPolicy, std::shared_ptr<FuzzyWeights>>(
       m, "FuzzyWeights",
-      "Critics' weights from a Mamdani engine with inputs I and D, each output mapped to a critic.")
+      "Critics' weights from a Mamdani engine with inputs I and D, and optionally T (the time to the nearest "
+      "predicted contact with a mover), each output mapped to a critic.")
       .def(py::init([](const MamdaniEngine* engine, std::optional<std::map<std::string, std::string>> outputs) {
              if (!engine) {
                if (outputs) throw Error("FuzzyWeights: output_critics needs an engine");
@@ -104,7 +118,8 @@ void init_weights(py::module_& m) {
              return outputs ? std::make_shared<FuzzyWeights>(*engine, *outputs) : std::make_shared<FuzzyWeights>(*engine);
            }),
            py::arg("engine") = nullptr, py::arg("output_critics") = py::none(),
-           "engine: a MamdaniEngine with inputs I and D (default: the paper's); output_critics: {output: critic} "
+           "engine: a MamdaniEngine with inputs I and D, and optionally T (default: the paper's; "
+           "mover_fuzzy_controller() reads T too); output_critics: {output: critic} "
            "(default: beta -> clearance, delta -> similarity).")
       .def_property_readonly("output_critics", &FuzzyWeights::output_critics)
       .def_property_readonly("engine", &FuzzyWeights::engine)

@@ -22,6 +22,28 @@ void Disc::validate() const {
   detail::require_at_most("disc growth", growth, limits::kMaxSpeed);
 }
 
+double Disc::time_to_reach(const Vec2& point, double reach) const {
+  // |d + v t| <= R + g t, squared: a t^2 + b t + c <= 0, with c > 0 when not covered now.
+  const Vec2 d = center - point;
+  const double R = radius + reach;
+  const double c = d.squaredNorm() - R * R;
+  if (c <= 0.0) return 0.0;
+  const double a = velocity.squaredNorm() - growth * growth;
+  const double b = 2.0 * (d.dot(velocity) - R * growth);
+  const double inf = std::numeric_limits<double>::infinity();
+  if (a == 0.0) return b < 0.0 ? -c / b : inf;
+  const double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0) return inf;  // a > 0 here: the parabola stays above 0
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  const double r1 = q / a, r2 = c / q;
+  // a > 0: covered between two roots of one sign; a < 0: from the positive root on.
+  if (a > 0.0) {
+    const double first = std::min(r1, r2);
+    return first > 0.0 ? first : inf;
+  }
+  return std::max(r1, r2);
+}
+
 FieldClearance::FieldClearance(std::shared_ptr<const DistanceField> field, std::vector<Disc> discs)
     : field_(std::move(field)) {
   set_discs(std::move(discs));

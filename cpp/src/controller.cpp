@@ -127,9 +127,20 @@ const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, c
     world_.set_discs(live_);
   }
   if (planner_.global_path()) report_.deviation = planner_.global_path()->deviation(state.pose.position());
+  // Time to contact as both keep their velocities: the mover's relative to the robot's.
+  report_.contact_time = std::numeric_limits<double>::infinity();
+  const Vec2 own = state.twist.v * Vec2(std::cos(state.pose.theta), std::sin(state.pose.theta));
+  for (const Disc& d : discs)
+    if (d.moves()) {
+      Disc relative = d;
+      relative.velocity -= own;
+      report_.contact_time =
+          std::min(report_.contact_time, relative.time_to_reach(state.pose.position(), planner_.footprint().radius()));
+    }
   if (policy_) {
     if (!frame) throw Error("the weight policy reads the obstacle density I: step() needs a scan");
-    const CriticWeights weights = policy_->weights(report_.density, std::isnan(report_.deviation) ? 0.0 : report_.deviation);
+    const CriticWeights weights = policy_->weights(
+        report_.density, std::isnan(report_.deviation) ? 0.0 : report_.deviation, report_.contact_time);
     for (const auto& [critic, weight] : weights)
       if (planner_.has_critic(critic)) planner_.set_weight(critic, weight);
   }

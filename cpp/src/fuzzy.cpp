@@ -514,4 +514,44 @@ MamdaniEngine paper_fuzzy_controller(int resolution) {
                        resolution);
 }
 
+MamdaniEngine mover_fuzzy_controller(int resolution) {
+  const MamdaniEngine paper = paper_fuzzy_controller(resolution);
+  const std::vector<std::string> sml = {"S", "M", "L"};
+  const auto lower = [&](const std::string& term, int by) {
+    const int i = static_cast<int>(std::find(sml.begin(), sml.end(), term) - sml.begin()) - by;
+    return sml[static_cast<std::size_t>(std::max(i, 0))];
+  };
+  // T's terms: "near" rises from nothing at kContactTimeRange to full at half
+  // of it and stays full; "imminent" rises from nothing there to full at 0.
+  // Nested, not a partition, so that each only adds as a contact nears.
+  const double half = 0.5 * kContactTimeRange;
+  FuzzyVariable contact{"T", 0.0, kContactTimeRange,
+                        {{"near", MembershipFunction::trapezoid(0.0, 0.0, half, kContactTimeRange)},
+                         {"imminent", MembershipFunction::triangle(0.0, 0.0, half)}}};
+  // A contact on its way frees the robot from the global path (delta down),
+  // the more the sooner: the path may be where the mover is going, and the
+  // way out is off it. The paper's rules stand whatever T (beta stays theirs
+  // exactly: raising it as well left the robot fewer ways out); each delta
+  // rule gains one adding the term one lower when T is near and one adding
+  // the term two lower when T is imminent. Added, not swapped in: a Mamdani
+  // output whose rules split one term between T's terms would be clipped
+  // lower and drift with T.
+  std::vector<FuzzyRule> rules;
+  for (const FuzzyRule& rule : paper.rules()) {
+    const FuzzyRule delta{rule.antecedents, {rule.consequents[1]}};
+    rules.push_back(FuzzyRule{rule.antecedents, {rule.consequents[0]}});
+    rules.push_back(delta);
+    for (int by = 1; by <= 2; ++by) {
+      const std::string term = lower(delta.consequents[0].term, by);
+      if (term == delta.consequents[0].term) continue;
+      FuzzyRule r = delta;
+      r.antecedents.push_back({"T", by == 1 ? "near" : "imminent"});
+      r.consequents[0].term = term;
+      rules.push_back(std::move(r));
+    }
+  }
+  return MamdaniEngine({paper.inputs()[0], paper.inputs()[1], std::move(contact)}, paper.outputs(), std::move(rules),
+                       resolution);
+}
+
 }  // namespace fgdwa

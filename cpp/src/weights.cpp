@@ -1,6 +1,8 @@
 #include "fgdwa/weights.hpp"
 
 #include <cmath>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "validation.hpp"
@@ -24,13 +26,22 @@ CriticWeights paper_pair(double beta, double delta) {
 
 FixedWeights::FixedWeights(double beta, double delta) : FixedWeights(paper_pair(beta, delta)) {}
 
+CriticWeights WeightPolicy::weights(double density, double deviation, double) const {
+  return weights(density, deviation);
+}
+
 FuzzyWeights::FuzzyWeights() : FuzzyWeights(paper_fuzzy_controller()) {}
 
 FuzzyWeights::FuzzyWeights(MamdaniEngine engine, std::map<std::string, std::string> output_critics)
     : engine_(std::move(engine)), output_critics_(std::move(output_critics)) {
-  if (engine_.n_inputs() != 2) throw Error("fuzzy weights: the engine needs exactly the inputs I and D");
+  const std::size_t n = engine_.n_inputs();
+  if (n < 2 || n > 3) throw Error("fuzzy weights: the engine needs the inputs I and D, and optionally T");
   in_density_ = engine_.input_index("I");
   in_deviation_ = engine_.input_index("D");
+  if (n == 3) {
+    in_contact_time_ = engine_.input_index("T");  // throws naming the inputs when the third is another
+    reads_contact_time_ = true;
+  }
   if (output_critics_.size() != engine_.n_outputs())
     throw Error("fuzzy weights: the engine has " + std::to_string(engine_.n_outputs()) + " outputs, but " +
                 std::to_string(output_critics_.size()) + " are mapped to critics");
@@ -41,11 +52,18 @@ FuzzyWeights::FuzzyWeights(MamdaniEngine engine, std::map<std::string, std::stri
 }
 
 CriticWeights FuzzyWeights::weights(double density, double deviation) const {
-  double in[2];
+  return weights(density, deviation, std::numeric_limits<double>::infinity());
+}
+
+CriticWeights FuzzyWeights::weights(double density, double deviation, double contact_time) const {
+  if (std::isnan(contact_time) || contact_time < 0.0)
+    throw Error("contact time T = " + std::to_string(contact_time) + ": must be >= 0 (s; +inf without a mover)");
+  double in[3];
   in[in_density_] = density;
   in[in_deviation_] = deviation;
+  if (reads_contact_time_) in[in_contact_time_] = contact_time;
   std::vector<double> out(engine_.n_outputs());
-  engine_.evaluate(in, 2, out.data(), out.size());
+  engine_.evaluate(in, engine_.n_inputs(), out.data(), out.size());
   CriticWeights weights;
   for (const auto& [index, critic] : outputs_) weights[critic] = out[index];
   return weights;

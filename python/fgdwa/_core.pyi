@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['AStarParams', 'AStarPlanner', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CriticStats', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MatchStatus', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RecoveryTrigger', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScanMatch', 'ScanMatchParams', 'ScanMatcher', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
+__all__: list[str] = ['AStarParams', 'AStarPlanner', 'CONTACT_TIME_RANGE', 'ClearanceParams', 'ClearanceSource', 'Cluster', 'CollisionWorld', 'Controller', 'CriticConfig', 'CriticSense', 'CriticStats', 'CycleRecord', 'CycleReport', 'DensityReading', 'DetectWindowParams', 'Disc', 'DistanceField', 'DwbGridParams', 'DwbObstacleParams', 'FailureReason', 'FgdwaError', 'FieldClearance', 'FixedWeights', 'Footprint', 'FuzzyRule', 'FuzzyVariable', 'FuzzyWeights', 'GlobalPath', 'GlobalPlan', 'GlobalStatus', 'KeyNodeParams', 'LaserScanner', 'LidarParams', 'LocalPlanner', 'MamdaniEngine', 'MatchStatus', 'MembershipFunction', 'NO_BAND', 'Navigator', 'NavigatorMode', 'NavigatorParams', 'OccupancyGrid', 'OccupancyParams', 'OmplParams', 'OmplPlanner', 'OrientedBox', 'PathProjection', 'PlanResult', 'PlannerParams', 'PlannerPreset', 'Pose2', 'RecoveryTrigger', 'RejectReason', 'RobotLimits', 'RobotPreset', 'RobotState', 'Scan', 'ScanMap', 'ScanMatch', 'ScanMatchParams', 'ScanMatcher', 'ScoredRollout', 'SegmentParams', 'SimilarityParams', 'Status', 'TerrainCost', 'TerrainGrid', 'Track', 'TrackStatus', 'Tracker', 'TrackerParams', 'Twist', 'VelocityWindow', 'WeightPolicy', 'WindowParams', 'angle_difference', 'critic_names', 'dtw', 'dynamic_window', 'inflate', 'mover_fuzzy_controller', 'nearest_names', 'obstacle_density', 'paper_fuzzy_controller', 'path_blocked', 'planner_preset', 'points_field', 'preset_names', 'reference_samples', 'register_python_critic', 'robot_names', 'robot_preset', 'rollout', 'sample_window', 'segment_scan', 'unicycle_step', 'wrap_angle']
 class FgdwaError(ValueError):
     pass
 class Pose2:
@@ -1700,9 +1700,15 @@ class WeightPolicy:
     """
     def __init__(self) -> None:
         ...
+    @typing.overload
     def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex) -> dict[str, float]:
         """
         {critic name: weight} for obstacle density I and path deviation D (m).
+        """
+    @typing.overload
+    def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex, contact_time: typing.SupportsFloat | typing.SupportsIndex) -> dict[str, float]:
+        """
+        {critic name: weight} for obstacle density I, path deviation D (m) and the time T (s) to the nearest predicted contact with a mover (inf: none); a policy that does not read T gives weights(I, D).
         """
     @property
     def name(self) -> str:
@@ -1721,11 +1727,11 @@ class FixedWeights(WeightPolicy):
         ...
 class FuzzyWeights(WeightPolicy):
     """
-    Critics' weights from a Mamdani engine with inputs I and D, each output mapped to a critic.
+    Critics' weights from a Mamdani engine with inputs I and D, and optionally T (the time to the nearest predicted contact with a mover), each output mapped to a critic.
     """
     def __init__(self, engine: MamdaniEngine = None, output_critics: collections.abc.Mapping[str, str] | None = None) -> None:
         """
-        engine: a MamdaniEngine with inputs I and D (default: the paper's); output_critics: {output: critic} (default: beta -> clearance, delta -> similarity).
+        engine: a MamdaniEngine with inputs I and D, and optionally T (default: the paper's; mover_fuzzy_controller() reads T too); output_critics: {output: critic} (default: beta -> clearance, delta -> similarity).
         """
     def __repr__(self) -> str:
         ...
@@ -1855,6 +1861,11 @@ class CycleReport:
     @property
     def command(self) -> Twist:
         ...
+    @property
+    def contact_time(self) -> float:
+        """
+        T (s): when the nearest moving disc would first touch the robot's circle were the robot to stand; inf without one on its way.
+        """
     @property
     def critic_names(self) -> list[str]:
         """
@@ -2882,6 +2893,11 @@ class CycleRecord:
     def command(self) -> Twist:
         ...
     @property
+    def contact_time(self) -> float:
+        """
+        T (s): when the nearest moving disc would first touch the robot's circle were the robot to stand; inf without one on its way.
+        """
+    @property
     def control(self) -> CycleReport:
         """
         The controller's report (CycleReport).
@@ -3082,6 +3098,10 @@ def inflate(grid: OccupancyGrid, inflation_radius: typing.SupportsFloat | typing
     """
     (rows, cols) uint8, 1 where a robot of that radius cannot centre: obstacles, cells nearer than the radius to one, and grade-4 terrain.
     """
+def mover_fuzzy_controller(resolution: typing.SupportsInt | typing.SupportsIndex = 1001) -> MamdaniEngine:
+    """
+    The paper's controller with a third input, T ([0, 3] s): the time to the nearest predicted contact with a mover. The paper's rules stand; as a contact nears (T 'near' below 3 s, 'imminent' below 1.5 s) rules adding the delta term one and two lower fire; beta is the paper's. FuzzyWeights(mover_fuzzy_controller()) runs it.
+    """
 def nearest_names(name: str, known: collections.abc.Sequence[str], count: typing.SupportsInt | typing.SupportsIndex = 3) -> list[str]:
     """
     The names among `known` closest to `name` (edit distance, a dotted or '/'-joined name matched on its last part too), best first: the 'did you mean' of every lookup by name.
@@ -3142,4 +3162,5 @@ def wrap_angle(angle: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
     The angle in (-pi, pi].
     """
+CONTACT_TIME_RANGE: float = 3.0
 NO_BAND: int = -1

@@ -36,6 +36,7 @@ from fgdwa._core import (
     FuzzyVariable,
     MamdaniEngine,
     MembershipFunction,
+    mover_fuzzy_controller,
     paper_fuzzy_controller,
 )
 from fgdwa.file_limits import clip, is_file, load_yaml, read_text, short_repr
@@ -45,6 +46,7 @@ __all__ = [
     "engine_from_yaml",
     "engine_to_dict",
     "paper_controller_config",
+    "mover_fuzzy_controller",
     "paper_fuzzy_controller",
 ]
 

@@ -395,6 +395,70 @@ TEST(WeightPolicy, WeightsComeByCriticName) {
       [] { FuzzyWeights(paper_fuzzy_controller(), {{"beta", "clearance"}, {"gamma", "velocity"}}); }, "gamma");
 }
 
+// With no mover on its way (T at or beyond its domain) the mover-aware
+// controller is the paper's to the bit; the sooner a contact, the less the
+// similarity weighs, never more than the paper's; beta is the paper's.
+TEST(WeightPolicy, TheMoverAwareControllerLowersDeltaAsAContactNears) {
+  const FuzzyWeights mover(mover_fuzzy_controller()), paper;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double I = 0.0; I <= 2.0; I += 0.25)
+    for (double D = 0.0; D <= 5.0; D += 0.5) {
+      SCOPED_TRACE(::testing::Message() << "I " << I << ", D " << D);
+      const CriticWeights p = paper.weights(I, D);
+      EXPECT_EQ(mover.weights(I, D, inf), p);
+      EXPECT_EQ(mover.weights(I, D, kContactTimeRange), p);
+      EXPECT_EQ(mover.weights(I, D), p);
+      double before = p.at("similarity");
+      for (double T = kContactTimeRange; T >= 0.0; T -= 0.25) {
+        const CriticWeights w = mover.weights(I, D, T);
+        EXPECT_DOUBLE_EQ(w.at("clearance"), p.at("clearance")) << "T " << T;
+        EXPECT_LE(w.at("similarity"), before + 1e-9) << "T " << T;
+        before = w.at("similarity");
+      }
+    }
+  // Where the paper's delta is large, an imminent contact brings it down to the domain's middle.
+  EXPECT_GT(paper.weights(0.0, 5.0).at("similarity"), 4.0);
+  EXPECT_NEAR(mover.weights(0.0, 5.0, 0.0).at("similarity"), 2.5, 1e-6);
+  fgdwa::test::expect_error_naming([&] { mover.weights(0.0, 0.0, -1.0); }, "contact time");
+  fgdwa::test::expect_error_naming([&] { mover.weights(0.0, 0.0, std::nan("")); }, "contact time");
+  // A third input other than T is refused by name.
+  fgdwa::test::expect_error_naming(
+      [] {
+        MamdaniEngine e({uniform_partition("I", 0.0, 2.0), uniform_partition("D", 0.0, 5.0), uniform_partition("X", 0.0, 1.0)},
+                        {uniform_partition("beta", 0.0, 1.0), uniform_partition("delta", 0.0, 5.0)},
+                        {FuzzyRule::parse("IF I IS S THEN beta IS S AND delta IS S")});
+        FuzzyWeights w(e);
+      },
+      "T");
+}
+
+// T: when the nearest moving disc would first touch the robot's circle.
+TEST(WeightPolicy, TheControllerReportsTheTimeToTheNearestContact) {
+  PlannerParams params;
+  Controller controller(RobotLimits{}, Footprint::circle(0.25), params);
+  RobotState state;
+  const Vec2 goal(3.0, 0.0);
+  controller.step(state, goal, static_cast<const Scan*>(nullptr), {});
+  EXPECT_TRUE(std::isinf(controller.report().contact_time));
+  // 3 m off, 0.5 m radius, coming at 1 m/s: touches the 0.25 m circle after 2.25 s.
+  controller.step(state, goal, static_cast<const Scan*>(nullptr), {Disc{Vec2(3.0, 0.0), 0.5, Vec2(-1.0, 0.0)}});
+  EXPECT_NEAR(controller.report().contact_time, 2.25, 1e-12);
+  // Going away, or passing 2 m to the side, never; a static disc is no mover.
+  controller.step(state, goal, static_cast<const Scan*>(nullptr),
+                  {Disc{Vec2(3.0, 0.0), 0.5, Vec2(1.0, 0.0)}, Disc{Vec2(3.0, 2.0), 0.5, Vec2(-1.0, 0.0)},
+                   Disc{Vec2(1.0, 0.0), 0.2}});
+  EXPECT_TRUE(std::isinf(controller.report().contact_time));
+  // Growing by 0.5 m/s while standing 2 m off: (2 - 0.5 - 0.25) / 0.5 = 2.5 s; the nearer contact counts.
+  controller.step(state, goal, static_cast<const Scan*>(nullptr),
+                  {Disc{Vec2(0.0, 2.0), 0.5, Vec2::Zero(), 0.5}, Disc{Vec2(3.0, 0.0), 0.5, Vec2(-1.0, 0.0)}});
+  EXPECT_NEAR(controller.report().contact_time, 2.25, 1e-12);
+  controller.step(state, goal, static_cast<const Scan*>(nullptr), {Disc{Vec2(0.0, 2.0), 0.5, Vec2::Zero(), 0.5}});
+  EXPECT_NEAR(controller.report().contact_time, 2.5, 1e-12);
+  // Already touching: 0.
+  controller.step(state, goal, static_cast<const Scan*>(nullptr), {Disc{Vec2(0.5, 0.0), 0.5, Vec2(1.0, 0.0)}});
+  EXPECT_EQ(controller.report().contact_time, 0.0);
+}
+
 TEST(WeightPolicy, TheControllerSetsTheWeightsOfTheCriticsItsPlannerHas) {
   PlannerParams params;
   params.critics = {{"heading", 0.5}, {"clearance", 0.15}, {"velocity", 1.0}};  // no similarity critic

@@ -80,6 +80,40 @@ def test_paper_controller_agrees_with_scikit_fuzzy_on_a_21_by_21_grid():
 
 
 @skfuzzy_warnings
+def test_mover_controller_agrees_with_scikit_fuzzy_and_is_the_papers_without_a_contact():
+    engine = fgdwa.mover_fuzzy_controller()
+    paper = fgdwa.paper_fuzzy_controller()
+    assert [v.name for v in engine.inputs] == ["I", "D", "T"]
+    assert engine.inputs[2].hi == fgdwa.CONTACT_TIME_RANGE
+    simulation = skfuzzy_system(engine)
+    rng = np.random.default_rng(11)
+    worst = 0.0
+    for i, d, t in zip(rng.uniform(0.0, 2.0, 40), rng.uniform(0.0, 5.0, 40), rng.uniform(0.0, 3.0, 40)):
+        ours = engine.evaluate(I=i, D=d, T=t)
+        theirs = skfuzzy_evaluate(simulation, I=i, D=d, T=t)
+        worst = max(worst, *(abs(ours[k] - theirs[k]) for k in ("beta", "delta")))
+        # Beta is the paper's whatever T; delta never above it.
+        assert ours["beta"] == pytest.approx(paper.evaluate(I=i, D=d)["beta"], abs=1e-12)
+        assert ours["delta"] <= paper.evaluate(I=i, D=d)["delta"] + 1e-9
+    assert worst < 1e-3, worst
+    policy = fgdwa.FuzzyWeights(engine)
+    assert policy.weights(1.0, 4.0, math.inf) == fgdwa.FuzzyWeights().weights(1.0, 4.0)
+    assert policy.weights(1.0, 4.0, 0.5)["similarity"] < policy.weights(1.0, 4.0, 2.5)["similarity"]
+    with raises("contact time"):
+        policy.weights(1.0, 4.0, -1.0)
+
+
+def test_episodes_record_the_contact_time():
+    # A disc crossing the robot's way: T is finite while it comes, inf before it is seen and after.
+    world = fgdwa.sim.World(grid=fgdwa.OccupancyGrid(np.zeros((40, 80), dtype=bool), 0.1, (0.0, -2.0)),
+                            discs=[fgdwa.Disc(center=(4.0, -1.5), radius=0.3, velocity=(0.0, 0.5))])
+    result = fgdwa.sim.run_episode(world, (0.5, 0.0, 0.0), (7.5, 0.0), max_steps=60, body="ideal")
+    t = result.trace.contact_time
+    assert t.shape == result.trace.beta.shape
+    assert np.isfinite(t).any() and (t >= 0).all()
+
+
+@skfuzzy_warnings
 def test_mixed_shapes_agree_with_scikit_fuzzy():
     a = fgdwa.FuzzyVariable("a", (-1.0, 1.0), {"neg": MF.trapezoid(-1, -1, -0.6, 0.1), "zero": MF.gaussian(0.1, 0.3),
                                                "pos": MF.triangle(-0.2, 1, 1)})

@@ -25,6 +25,9 @@ struct Disc {
   bool moves() const { return growth > 0.0 || !velocity.isZero(); }
   // Never below 0, for a time past as well.
   double radius_at(double t) const { return std::max(radius + growth * t, 0.0); }
+  // s, the first time ahead (0 if now) at which the disc, grown by `reach`
+  // (m, >= 0), covers `point`; +inf if it never does.
+  double time_to_reach(const Vec2& point, double reach) const;
   void validate() const;
 };
 

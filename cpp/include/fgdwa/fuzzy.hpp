@@ -163,4 +163,12 @@ class MamdaniEngine {
 // the rules of Tables 3 and 4, one per (D, I) pair concluding on both outputs.
 MamdaniEngine paper_fuzzy_controller(int resolution = MamdaniEngine::kDefaultResolution);
 
+// The paper's controller with a third input, T in [0, kContactTimeRange] s:
+// the time to the nearest predicted contact with a mover (docs/algorithms.md,
+// "Fuzzy weights"). The paper's rules stand; as T falls below the range, rules
+// that add the delta term one and then two lower than the paper's fire.
+// Beta is the paper's whatever T.
+inline constexpr double kContactTimeRange = 3.0;  // s
+MamdaniEngine mover_fuzzy_controller(int resolution = MamdaniEngine::kDefaultResolution);
+
 }  // namespace fgdwa

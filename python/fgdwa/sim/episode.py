@@ -130,6 +130,8 @@ class PlannerTrace:
     deviation: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) D, m (nan without path)
     beta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) clearance weight
     delta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) similarity weight (nan without)
+    # (steps,) s, T: when the nearest tracked or known mover would first touch the robot standing (inf: none)
+    contact_time: np.ndarray = field(default_factory=lambda: np.zeros(0))
     cycles: list = field(default_factory=list)  # CycleTrace per cycle, with record_cycles=True
 
 
@@ -366,7 +368,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     commands, twists = [], []
     clearances = [truth.clearance(outline, start_pose, 0.0)]
     statuses, modes, cycle_times, targets = [], [], [], []
-    density, deviation, betas, deltas = [], [], [], []
+    density, deviation, betas, deltas, contact_times = [], [], [], [], []
     paths = []
     path_version = 0
     planned = False  # whether the local planner ran in any cycle
@@ -403,6 +405,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         deviation.append(record.deviation)
         betas.append(record.beta)
         deltas.append(record.delta)
+        contact_times.append(record.contact_time)
         planned = planned or record.planned
         if options.record_cycles:
             changed = scanning and (not cycles or record.new_cells > 0)
@@ -492,6 +495,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
         deviation=np.array(deviation, dtype=float),
         beta=np.array(betas, dtype=float),
         delta=np.array(deltas, dtype=float),
+        contact_time=np.array(contact_times, dtype=float),
         cycles=cycles,
     )
     context = NavigationContext(
