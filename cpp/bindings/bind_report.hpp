@@ -27,8 +27,8 @@ void bind_report_fields(Class& cls, Get report) {
       .def_property_readonly("delta", [report](const T& t) { return report(t).delta; },
                              "Similarity weight used; NaN without that critic.")
       .def_property_readonly("contact_time", [report](const T& t) { return report(t).contact_time; },
-                             "T (s): when the nearest moving disc would first touch the robot's circle were the "
-                             "robot to stand; inf without one on its way.")
+                             "T (s): when the nearest moving disc would first touch the robot's circle, both keeping "
+                             "their velocities; inf without one on its way.")
       .def_property_readonly("sensed_points", [report](const T& t) { return report(t).sensed_points; },
                              "Lidar hits that neither the map nor the known discs explain.")
       .def_property_readonly("live_points", [report](const T& t) { return report(t).live_points; },

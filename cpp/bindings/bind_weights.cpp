@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "convert.hpp"
@@ -58,27 +59,16 @@ void init_weights(py::module_& m) {
       .def_property_readonly("name", &WeightPolicy::name)
       .def(
           "weights",
-          [](const WeightPolicy& p, FloatArg density_arg, FloatArg deviation_arg) {
-            const double density = to_float(density_arg, "density"), deviation = to_float(deviation_arg, "deviation");
-            if (std::isnan(density)) throw Error("density I is NaN");
-            if (std::isnan(deviation)) throw Error("deviation D is NaN");
-            return p.weights(density, deviation);
-          },
-          py::arg("density"), py::arg("deviation"),
-          "{critic name: weight} for obstacle density I and path deviation D (m).")
-      .def(
-          "weights",
           [](const WeightPolicy& p, FloatArg density_arg, FloatArg deviation_arg, FloatArg contact_arg) {
             const double density = to_float(density_arg, "density"), deviation = to_float(deviation_arg, "deviation");
-            const double contact_time = to_float(contact_arg, "contact_time");
             if (std::isnan(density)) throw Error("density I is NaN");
             if (std::isnan(deviation)) throw Error("deviation D is NaN");
-            if (std::isnan(contact_time) || contact_time < 0.0) throw Error("contact time T must be >= 0 (s; inf without a mover)");
-            return p.weights(density, deviation, contact_time);
+            return p.weights(density, deviation, to_float(contact_arg, "contact_time"));
           },
-          py::arg("density"), py::arg("deviation"), py::arg("contact_time"),
+          py::arg("density"), py::arg("deviation"), py::arg("contact_time") = std::numeric_limits<double>::infinity(),
           "{critic name: weight} for obstacle density I, path deviation D (m) and the time T (s) to the nearest "
-          "predicted contact with a mover (inf: none); a policy that does not read T gives weights(I, D).");
+          "predicted contact with a mover (inf, the default: none); a policy that does not read T gives its "
+          "weights(I, D).");
 
   py::class_<FixedWeights, WeightPolicy, std::shared_ptr<FixedWeights>>(
       m, "FixedWeights", "Critics' weights held fixed: FixedWeights(beta, delta) for clearance and similarity, or "

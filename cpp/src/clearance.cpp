@@ -23,6 +23,8 @@ void Disc::validate() const {
 }
 
 double Disc::time_to_reach(const Vec2& point, double reach) const {
+  detail::require_query_point("time_to_reach point", point);
+  detail::require_distance("time_to_reach reach", reach);
   // |d + v t| <= R + g t, squared: a t^2 + b t + c <= 0, with c > 0 when not covered now.
   const Vec2 d = center - point;
   const double R = radius + reach;

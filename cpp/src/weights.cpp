@@ -26,7 +26,15 @@ CriticWeights paper_pair(double beta, double delta) {
 
 FixedWeights::FixedWeights(double beta, double delta) : FixedWeights(paper_pair(beta, delta)) {}
 
-CriticWeights WeightPolicy::weights(double density, double deviation, double) const {
+namespace {
+void require_contact_time(double t) {
+  if (std::isnan(t) || t < 0.0)
+    throw Error(detail::describe("contact time T", t, "must be >= 0 (s; +inf without a mover on its way)"));
+}
+}  // namespace
+
+CriticWeights WeightPolicy::weights(double density, double deviation, double contact_time) const {
+  require_contact_time(contact_time);
   return weights(density, deviation);
 }
 
@@ -38,10 +46,7 @@ FuzzyWeights::FuzzyWeights(MamdaniEngine engine, std::map<std::string, std::stri
   if (n < 2 || n > 3) throw Error("fuzzy weights: the engine needs the inputs I and D, and optionally T");
   in_density_ = engine_.input_index("I");
   in_deviation_ = engine_.input_index("D");
-  if (n == 3) {
-    in_contact_time_ = engine_.input_index("T");  // throws naming the inputs when the third is another
-    reads_contact_time_ = true;
-  }
+  if (n == 3) in_contact_time_ = engine_.input_index("T");  // throws naming the inputs when the third is another
   if (output_critics_.size() != engine_.n_outputs())
     throw Error("fuzzy weights: the engine has " + std::to_string(engine_.n_outputs()) + " outputs, but " +
                 std::to_string(output_critics_.size()) + " are mapped to critics");
@@ -56,12 +61,11 @@ CriticWeights FuzzyWeights::weights(double density, double deviation) const {
 }
 
 CriticWeights FuzzyWeights::weights(double density, double deviation, double contact_time) const {
-  if (std::isnan(contact_time) || contact_time < 0.0)
-    throw Error("contact time T = " + std::to_string(contact_time) + ": must be >= 0 (s; +inf without a mover)");
+  require_contact_time(contact_time);
   double in[3];
   in[in_density_] = density;
   in[in_deviation_] = deviation;
-  if (reads_contact_time_) in[in_contact_time_] = contact_time;
+  if (engine_.n_inputs() == 3) in[in_contact_time_] = contact_time;
   std::vector<double> out(engine_.n_outputs());
   engine_.evaluate(in, engine_.n_inputs(), out.data(), out.size());
   CriticWeights weights;

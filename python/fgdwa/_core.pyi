@@ -1700,15 +1700,9 @@ class WeightPolicy:
     """
     def __init__(self) -> None:
         ...
-    @typing.overload
-    def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex) -> dict[str, float]:
+    def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex, contact_time: typing.SupportsFloat | typing.SupportsIndex = ...) -> dict[str, float]:
         """
-        {critic name: weight} for obstacle density I and path deviation D (m).
-        """
-    @typing.overload
-    def weights(self, density: typing.SupportsFloat | typing.SupportsIndex, deviation: typing.SupportsFloat | typing.SupportsIndex, contact_time: typing.SupportsFloat | typing.SupportsIndex) -> dict[str, float]:
-        """
-        {critic name: weight} for obstacle density I, path deviation D (m) and the time T (s) to the nearest predicted contact with a mover (inf: none); a policy that does not read T gives weights(I, D).
+        {critic name: weight} for obstacle density I, path deviation D (m) and the time T (s) to the nearest predicted contact with a mover (inf, the default: none); a policy that does not read T gives its weights(I, D).
         """
     @property
     def name(self) -> str:
@@ -1864,7 +1858,7 @@ class CycleReport:
     @property
     def contact_time(self) -> float:
         """
-        T (s): when the nearest moving disc would first touch the robot's circle were the robot to stand; inf without one on its way.
+        T (s): when the nearest moving disc would first touch the robot's circle, both keeping their velocities; inf without one on its way.
         """
     @property
     def critic_names(self) -> list[str]:
@@ -2895,7 +2889,7 @@ class CycleRecord:
     @property
     def contact_time(self) -> float:
         """
-        T (s): when the nearest moving disc would first touch the robot's circle were the robot to stand; inf without one on its way.
+        T (s): when the nearest moving disc would first touch the robot's circle, both keeping their velocities; inf without one on its way.
         """
     @property
     def control(self) -> CycleReport:

@@ -457,6 +457,13 @@ TEST(WeightPolicy, TheControllerReportsTheTimeToTheNearestContact) {
   // Already touching: 0.
   controller.step(state, goal, static_cast<const Scan*>(nullptr), {Disc{Vec2(0.5, 0.0), 0.5, Vec2(1.0, 0.0)}});
   EXPECT_EQ(controller.report().contact_time, 0.0);
+  // Bad input is refused by name, by the disc's query and by any policy.
+  const Disc disc{Vec2(3.0, 0.0), 0.5, Vec2(-1.0, 0.0)};
+  fgdwa::test::expect_error_naming([&] { disc.time_to_reach(Vec2(std::nan(""), 0.0), 0.25); }, "time_to_reach point");
+  fgdwa::test::expect_error_naming([&] { disc.time_to_reach(Vec2::Zero(), -0.1); }, "time_to_reach reach");
+  fgdwa::test::expect_error_naming([] { FixedWeights(0.2, 0.5).weights(0.0, 0.0, -1.0); }, "contact time");
+  EXPECT_EQ(FixedWeights(0.2, 0.5).weights(0.0, 0.0, std::numeric_limits<double>::infinity()),
+            FixedWeights(0.2, 0.5).weights(0.0, 0.0));
 }
 
 TEST(WeightPolicy, TheControllerSetsTheWeightsOfTheCriticsItsPlannerHas) {

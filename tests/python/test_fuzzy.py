@@ -101,6 +101,8 @@ def test_mover_controller_agrees_with_scikit_fuzzy_and_is_the_papers_without_a_c
     assert policy.weights(1.0, 4.0, 0.5)["similarity"] < policy.weights(1.0, 4.0, 2.5)["similarity"]
     with raises("contact time"):
         policy.weights(1.0, 4.0, -1.0)
+    with raises("contact time"):
+        fgdwa.FixedWeights(0.2, 0.5).weights(0.0, 0.0, NAN)
 
 
 def test_episodes_record_the_contact_time():

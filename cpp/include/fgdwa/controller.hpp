@@ -50,7 +50,7 @@ struct CycleReport {
   double beta = std::numeric_limits<double>::quiet_NaN();       // clearance weight used; NaN without that critic
   double delta = std::numeric_limits<double>::quiet_NaN();      // similarity weight used; NaN without that critic
   // s, T: when the nearest moving disc, at its predicted velocity and growth,
-  // first touches the robot's circle should the robot stand; +inf without one on its way.
+  // first touches the robot's circle, both keeping their velocities; +inf without one on its way.
   double contact_time = std::numeric_limits<double>::infinity();
   std::size_t sensed_points = 0;                                // lidar hits the map and known discs do not explain
   std::size_t live_points = 0;  // hits near the map's obstacles but short of them: the map sits wrong there

@@ -66,8 +66,7 @@ class FuzzyWeights : public WeightPolicy {
   std::map<std::string, std::string> output_critics_;
   std::vector<std::pair<std::size_t, std::string>> outputs_;  // engine output index -> critic
   std::size_t in_density_, in_deviation_;
-  bool reads_contact_time_ = false;
-  std::size_t in_contact_time_ = 0;
+  std::size_t in_contact_time_ = 0;  // read when the engine has a third input
 };
 
 }  // namespace fgdwa

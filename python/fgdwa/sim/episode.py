@@ -130,7 +130,8 @@ class PlannerTrace:
     deviation: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) D, m (nan without path)
     beta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) clearance weight
     delta: np.ndarray = field(default_factory=lambda: np.zeros(0))  # (steps,) similarity weight (nan without)
-    # (steps,) s, T: when the nearest tracked or known mover would first touch the robot standing (inf: none)
+    # (steps,) s, T: when the nearest tracked or known mover would first touch the robot, both keeping their
+    # velocities (inf: none)
     contact_time: np.ndarray = field(default_factory=lambda: np.zeros(0))
     cycles: list = field(default_factory=list)  # CycleTrace per cycle, with record_cycles=True
 
