@@ -13,18 +13,32 @@ using namespace fgdwa;
 using namespace fgdwa::py_convert;
 
 void init_clearance(py::module_& m) {
-  py::class_<Disc>(m, "Disc", "A disc obstacle moving at constant velocity; radius 0 is a point.")
-      .def(py::init([](py::handle center, FloatArg radius, py::handle velocity, FloatArg growth) {
+  py::class_<Disc>(m, "Disc",
+                   "A disc obstacle moving at constant velocity (after an optional constant acceleration); radius 0 is a point.")
+      .def(py::init([](py::handle center, FloatArg radius, py::handle velocity, FloatArg growth, py::handle acceleration,
+                       FloatArg accel_time) {
              Disc d{to_vec2(center, "center"), to_float(radius, "radius"), to_vec2(velocity, "velocity"),
-                    to_float(growth, "growth")};
+                    to_float(growth, "growth"), to_vec2(acceleration, "acceleration"), to_float(accel_time, "accel_time")};
              d.validate();
              return d;
            }),
            py::arg("center"), py::arg("radius") = 0.0, py::arg("velocity") = py::make_tuple(0.0, 0.0),
-           py::arg("growth") = 0.0, "growth (m/s): radius added per second ahead, for a predicted obstacle.")
+           py::arg("growth") = 0.0, py::arg("acceleration") = py::make_tuple(0.0, 0.0), py::arg("accel_time") = 0.0,
+           "growth (m/s): radius added per second ahead, for a predicted obstacle; acceleration (m/s^2) lasts the "
+           "first accel_time (s), then the velocity reached holds (a mover predicted to turn, slow or reverse).")
       .def_property_readonly("center", [](const Disc& d) { return py::make_tuple(d.center.x(), d.center.y()); })
       .def_readonly("radius", &Disc::radius)
       .def_readonly("growth", &Disc::growth)
+      .def_property_readonly("acceleration",
+                             [](const Disc& d) { return py::make_tuple(d.acceleration.x(), d.acceleration.y()); })
+      .def_readonly("accel_time", &Disc::accel_time)
+      .def(
+          "time_to_reach",
+          [](const Disc& d, py::handle point, FloatArg reach) {
+            return d.time_to_reach(to_vec2(point, "point"), to_float(reach, "reach"));
+          },
+          py::arg("point"), py::arg("reach") = 0.0,
+          "s, the first time ahead at which the disc grown by reach (m) covers point; inf if never.")
       .def(
           "radius_at", [](const Disc& d, FloatArg t) { return d.radius_at(to_time(to_float(t, "t"), "t")); },
           py::arg("t"), "The radius t seconds ahead (for a t in the past, never below 0).")
@@ -38,6 +52,8 @@ void init_clearance(py::module_& m) {
         s << "Disc(center=(" << d.center.x() << ", " << d.center.y() << "), radius=" << d.radius << ", velocity=("
           << d.velocity.x() << ", " << d.velocity.y() << ")";
         if (d.growth > 0.0) s << ", growth=" << d.growth;
+        if (d.accel_time > 0.0)
+          s << ", acceleration=(" << d.acceleration.x() << ", " << d.acceleration.y() << "), accel_time=" << d.accel_time;
         s << ")";
         return s.str();
       });

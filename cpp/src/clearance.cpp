@@ -20,14 +20,18 @@ void Disc::validate() const {
   detail::require_xy("disc velocity", velocity.x(), velocity.y(), limits::kMaxSpeed);
   detail::require_non_negative("disc growth", growth);
   detail::require_at_most("disc growth", growth, limits::kMaxSpeed);
+  detail::require_xy("disc acceleration", acceleration.x(), acceleration.y(), limits::kMaxAcceleration);
+  detail::require_non_negative("disc accel_time", accel_time);
+  detail::require_at_most("disc accel_time", accel_time, limits::kMaxHorizon);
+  if (!(top_speed() <= limits::kMaxSpeed))
+    throw Error(detail::describe("disc speed after accel_time", top_speed(), "at most " + detail::format_number(limits::kMaxSpeed) + " m/s"));
 }
 
-double Disc::time_to_reach(const Vec2& point, double reach) const {
-  detail::require_query_point("time_to_reach point", point);
-  detail::require_distance("time_to_reach reach", reach);
-  // |d + v t| <= R + g t, squared: a t^2 + b t + c <= 0, with c > 0 when not covered now.
-  const Vec2 d = center - point;
-  const double R = radius + reach;
+namespace {
+
+// The first t >= 0 at which |d + v t| <= R + g t (d the centre less the point);
+// +inf if never. Squared: a t^2 + b t + c <= 0, with c > 0 when not covered now.
+double linear_time_to_reach(const Vec2& d, const Vec2& velocity, double R, double growth) {
   const double c = d.squaredNorm() - R * R;
   if (c <= 0.0) return 0.0;
   const double a = velocity.squaredNorm() - growth * growth;
@@ -46,6 +50,39 @@ double Disc::time_to_reach(const Vec2& point, double reach) const {
   return std::max(r1, r2);
 }
 
+}  // namespace
+
+double Disc::time_to_reach(const Vec2& point, double reach) const {
+  detail::require_query_point("time_to_reach point", point);
+  detail::require_distance("time_to_reach reach", reach);
+  const double R = radius + reach;
+  if (accel_time > 0.0 && !acceleration.isZero()) {
+    // The gap |centre - point| - (R + g t) falls no faster than the top
+    // speed plus the growth: stepping by gap / that rate never steps over
+    // a contact.
+    const double rate = top_speed() + growth;
+    const double least_step = accel_time * 1e-5;
+    const auto gap = [&](double t) { return (center_at(t) - point).norm() - (R + growth * t); };
+    for (double before = 0.0, t = 0.0; t < accel_time;) {
+      if (gap(t) <= 0.0) {
+        // Covered at t, not at `before`: the first contact lies between.
+        for (int i = 0; i < 60 && t - before > 1e-12 * accel_time; ++i) {
+          const double middle = 0.5 * (before + t);
+          (gap(middle) <= 0.0 ? t : before) = middle;
+        }
+        return t;
+      }
+      before = t;
+      t += rate > 0.0 ? std::max(gap(t) / rate, least_step) : accel_time;
+    }
+    // From accel_time on it moves at the velocity reached.
+    const double rest = linear_time_to_reach(center_at(accel_time) - point, velocity + accel_time * acceleration,
+                                             R + growth * accel_time, growth);
+    return accel_time + rest;
+  }
+  return linear_time_to_reach(center - point, velocity, R, growth);
+}
+
 FieldClearance::FieldClearance(std::shared_ptr<const DistanceField> field, std::vector<Disc> discs)
     : field_(std::move(field)) {
   set_discs(std::move(discs));
@@ -57,7 +94,7 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
   obstacle_speed_ = 0.0;
   for (const Disc& d : discs) {
     d.validate();
-    obstacle_speed_ = std::max(obstacle_speed_, d.velocity.norm() + d.growth);
+    obstacle_speed_ = std::max(obstacle_speed_, d.top_speed() + d.growth);
   }
   discs_ = std::move(discs);
   static_discs_ = StaticDiscs{};

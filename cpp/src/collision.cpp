@@ -159,7 +159,7 @@ double CollisionWorld::moving_clearance(const Footprint& footprint, const Pose2&
 
 double CollisionWorld::obstacle_speed() const {
   double fastest = 0.0;
-  for (const Disc& d : impl_->discs) fastest = std::max(fastest, d.velocity.norm() + d.growth);
+  for (const Disc& d : impl_->discs) fastest = std::max(fastest, d.top_speed() + d.growth);
   return fastest;
 }
 const std::vector<CellRect>& CollisionWorld::boxes() const { return impl_->boxes; }

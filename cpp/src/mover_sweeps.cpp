@@ -7,7 +7,10 @@
 namespace fgdwa::detail {
 
 SweptDisc sweep_of(const Disc& disc, double horizon) {
-  return SweptDisc{disc.center, disc.center_at(horizon), disc.radius};
+  // An accelerating centre strays from the chord by at most |a| horizon^2 / 8
+  // (its path's second derivative is a or 0).
+  return SweptDisc{disc.center, disc.center_at(horizon),
+                   disc.radius + (disc.accel_time > 0.0 ? disc.acceleration.norm() * horizon * horizon / 8.0 : 0.0)};
 }
 
 double distance_to(const SweptDisc& sweep, const Vec2& p) {

@@ -187,6 +187,42 @@ Tracker::LineFit Tracker::fit_line(const std::deque<Centre>& centres, double sin
   return fit;
 }
 
+// Weighted least squares of p(tau) = p0 + v tau + a tau^2 / 2, tau the time
+// since the newest centre: the acceleration's std from the scatter (never
+// below measurement_std), as the line's.
+Tracker::ParabolaFit Tracker::fit_parabola(const std::deque<Centre>& centres) const {
+  ParabolaFit fit;
+  if (centres.size() < 4) return fit;
+  const double newest = centres.back().time;
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Matrix<double, 3, 2> rhs = Eigen::Matrix<double, 3, 2>::Zero();
+  double w_sum = 0.0;
+  for (const Centre& c : centres) {
+    const double tau = c.time - newest;
+    const Eigen::Vector3d basis(1.0, tau, 0.5 * tau * tau);
+    normal += c.weight * basis * basis.transpose();
+    rhs += c.weight * basis * c.position.transpose();
+    w_sum += c.weight;
+  }
+  const Eigen::LDLT<Eigen::Matrix3d> solver(normal);
+  if (solver.info() != Eigen::Success || !(solver.rcond() > 1e-12)) return fit;
+  const Eigen::Matrix<double, 3, 2> coefficients = solver.solve(rhs);
+  double scatter = 0.0;
+  for (const Centre& c : centres) {
+    const double tau = c.time - newest;
+    const Eigen::Vector3d basis(1.0, tau, 0.5 * tau * tau);
+    scatter += c.weight * (c.position.transpose() - basis.transpose() * coefficients).squaredNorm();
+  }
+  // Two coordinates per centre, three parameters fitted per coordinate.
+  const double n = static_cast<double>(centres.size());
+  const double point_std = std::max(std::sqrt(scatter * n / (w_sum * 2.0 * (n - 3.0))), params_.measurement_std);
+  const Eigen::Matrix3d inverse = solver.solve(Eigen::Matrix3d::Identity());
+  fit.velocity = coefficients.row(1).transpose();
+  fit.acceleration = coefficients.row(2).transpose();
+  fit.acceleration_std = point_std * std::sqrt(std::max(inverse(2, 2), 0.0));
+  return fit;
+}
+
 void Tracker::relabel(Track& t, const Memory& memory) const {
   const double newest = memory.centres.empty() ? 0.0 : memory.centres.back().time;
   const LineFit window = fit_line(memory.centres, -std::numeric_limits<double>::infinity());
@@ -195,6 +231,10 @@ void Tracker::relabel(Track& t, const Memory& memory) const {
   // The centres kept go back one moving_window: a longer prediction window is that one.
   const LineFit recent = fit_line(memory.centres, newest - params_.prediction_window - 1e-9);
   t.predicted_velocity = std::isfinite(recent.speed_std) ? recent.velocity : window.velocity;
+  const ParabolaFit parabola = fit_parabola(memory.centres);
+  t.current_velocity = parabola.velocity;
+  t.acceleration = parabola.acceleration;
+  t.acceleration_std = parabola.acceleration_std;
   if (t.status == TrackStatus::Tentative) {
     t.moving = false;
     return;
@@ -369,9 +409,24 @@ std::vector<Disc> Tracker::moving_discs() const {
     // model's acceleration noise: how far a turn or a reversal may take it
     // from the line. The window fit's own std says only how well the past
     // second's mean velocity is known, a tenth of that or less.
-    discs.push_back(Disc{t.position,
-                         t.radius + std::min(params_.uncertainty_sigmas * t.position_std(), params_.max_uncertainty),
-                         t.predicted_velocity, params_.uncertainty_sigmas * t.speed_std()});
+    const Disc steady{t.position,
+                      t.radius + std::min(params_.uncertainty_sigmas * t.position_std(), params_.max_uncertainty),
+                      t.predicted_velocity, params_.uncertainty_sigmas * t.speed_std()};
+    discs.push_back(steady);
+    // The second hypothesis, where the track's centres bend or slow with
+    // confidence: a mover that turned or braked over the last second is
+    // likelier to go on doing so than to straighten at once.
+    const double a = t.acceleration.norm();
+    if (params_.hypothesis_time > 0.0 && std::isfinite(t.acceleration_std) &&
+        a - params_.acceleration_sigmas * t.acceleration_std > 0.0) {
+      Disc bending = steady;
+      const double v = t.current_velocity.norm();
+      bending.velocity = v > params_.max_speed ? t.current_velocity * (params_.max_speed / v) : t.current_velocity;
+      bending.acceleration = t.acceleration * (std::min(a, params_.max_acceleration) / a);
+
+      bending.accel_time = params_.hypothesis_time;
+      discs.push_back(bending);
+    }
   }
   return discs;
 }

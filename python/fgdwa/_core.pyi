@@ -266,11 +266,11 @@ class DistanceField:
         ...
 class Disc:
     """
-    A disc obstacle moving at constant velocity; radius 0 is a point.
+    A disc obstacle moving at constant velocity (after an optional constant acceleration); radius 0 is a point.
     """
-    def __init__(self, center: typing.Any, radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, velocity: typing.Any = (0.0, 0.0), growth: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, center: typing.Any, radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, velocity: typing.Any = (0.0, 0.0), growth: typing.SupportsFloat | typing.SupportsIndex = 0.0, acceleration: typing.Any = (0.0, 0.0), accel_time: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         """
-        growth (m/s): radius added per second ahead, for a predicted obstacle.
+        growth (m/s): radius added per second ahead, for a predicted obstacle; acceleration (m/s^2) lasts the first accel_time (s), then the velocity reached holds (a mover predicted to turn, slow or reverse).
         """
     def __repr__(self) -> str:
         ...
@@ -280,6 +280,16 @@ class Disc:
         """
         The radius t seconds ahead (for a t in the past, never below 0).
         """
+    def time_to_reach(self, point: typing.Any, reach: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> float:
+        """
+        s, the first time ahead at which the disc grown by reach (m) covers point; inf if never.
+        """
+    @property
+    def accel_time(self) -> float:
+        ...
+    @property
+    def acceleration(self) -> tuple[float, float]:
+        ...
     @property
     def center(self) -> tuple[float, float]:
         ...
@@ -2249,16 +2259,22 @@ class TrackerParams:
       max_speed (m/s): an association implying more speed is rejected
       uncertainty_sigmas: std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead
       max_uncertainty (m): the most the position's uncertainty adds to a disc (a coasting track's grows)
+      hypothesis_time (s): how long a second prediction keeps a moving track's significant acceleration (turning, slowing, reversing) before its velocity holds; 0: constant velocity alone
+      acceleration_sigmas: std devs the fitted acceleration must exceed before the second prediction is made
+      max_acceleration (m/s^2): the most acceleration the second prediction keeps
       max_clusters: clusters an update tracks, the nearest to the scanner first (association costs the cube of the count); the rest stay the scan's points, and new tracks stop at twice this
     """
     __hash__: typing.ClassVar[None] = None
     name: typing.ClassVar[str] = 'tracker'
     accel_std: typing.Any
+    acceleration_sigmas: typing.Any
     confirm_hits: typing.Any
     free_margin: typing.Any
     gate: typing.Any
     gate_sigmas: typing.Any
+    hypothesis_time: typing.Any
     lost_time: typing.Any
+    max_acceleration: typing.Any
     max_clusters: typing.Any
     max_speed: typing.Any
     max_uncertainty: typing.Any
@@ -2312,12 +2328,27 @@ class Track:
     def __repr__(self) -> str:
         ...
     @property
+    def acceleration(self) -> tuple:
+        """
+        m/s^2, the same parabola's; the second prediction keeps it where significant.
+        """
+    @property
+    def acceleration_std(self) -> float:
+        """
+        m/s^2, its std per coordinate (inf until four centres).
+        """
+    @property
     def age(self) -> float:
         ...
     @property
     def covariance(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (4, 4) covariance of (x, y, vx, vy).
+        """
+    @property
+    def current_velocity(self) -> tuple:
+        """
+        m/s, a parabola's through the window's centres, at the last one.
         """
     @property
     def hits(self) -> int:

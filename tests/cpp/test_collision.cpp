@@ -560,3 +560,82 @@ TEST(FieldClearance, MovingClearanceBelowACutoffIsExactThere) {
 
 }  // namespace
 }  // namespace fgdwa
+
+namespace fgdwa {
+namespace {
+
+// An accelerating disc, worked out by hand: from (1, 2) at (1, 0) m/s with
+// (0, 2) m/s^2 for 1 s, it is at (1.5, 2.25) after 0.5 s (2 x 0.5^2 / 2 up),
+// at (2, 3) after 1 s moving at (1, 2) m/s, which holds: (3, 5) after 2 s.
+TEST(Disc, AnAccelerationLastsItsTimeThenTheVelocityReachedHolds) {
+  const Disc d{Vec2(1.0, 2.0), 0.3, Vec2(1.0, 0.0), 0.0, Vec2(0.0, 2.0), 1.0};
+  EXPECT_TRUE(d.center_at(0.5).isApprox(Vec2(1.5, 2.25), 1e-12));
+  EXPECT_TRUE(d.center_at(1.0).isApprox(Vec2(2.0, 3.0), 1e-12));
+  EXPECT_TRUE(d.center_at(2.0).isApprox(Vec2(3.0, 5.0), 1e-12));
+  EXPECT_TRUE(d.center_at(0.0).isApprox(d.center, 1e-12));
+  EXPECT_DOUBLE_EQ(d.top_speed(), 1.0 + 2.0);
+  EXPECT_TRUE(d.moves());
+  EXPECT_TRUE((Disc{Vec2::Zero(), 0.3, Vec2::Zero(), 0.0, Vec2(1.0, 0.0), 0.5}).moves());
+  // Without a time to act in, an acceleration is nothing.
+  EXPECT_FALSE((Disc{Vec2::Zero(), 0.3, Vec2::Zero(), 0.0, Vec2(1.0, 0.0), 0.0}).moves());
+  // The exact world places it there too.
+  const CollisionWorld world(OccupancyGrid(10, 10, 1.0, Vec2(-50.0, -50.0), std::vector<std::uint8_t>(100, 0)), {d});
+  EXPECT_NEAR(world.moving_clearance(Footprint::circle(0.2), Pose2{3.0, 6.0, 0.0}, 2.0), 1.0 - 0.3 - 0.2, 1e-9);
+}
+
+// A disc at rest 5 m off, pulled toward the point at 2 m/s^2, reaches 1 m of
+// it when 5 - t^2 = 1: at 2 s. Pulled for 1 s only, it has 4 m to go at 2 m/s
+// by then and reaches 1 m at 2.5 s.
+TEST(Disc, TimeToReachThroughAnAccelerationAsWorkedOutByHand) {
+  EXPECT_NEAR((Disc{Vec2(5.0, 0.0), 0.0, Vec2::Zero(), 0.0, Vec2(-2.0, 0.0), 10.0}).time_to_reach(Vec2::Zero(), 1.0),
+              2.0, 1e-9);
+  EXPECT_NEAR((Disc{Vec2(5.0, 0.0), 0.0, Vec2::Zero(), 0.0, Vec2(-2.0, 0.0), 1.0}).time_to_reach(Vec2::Zero(), 1.0),
+              2.5, 1e-9);
+  // Braking before it arrives: at 2 m/s braking at 1 m/s^2 it stops after 2 m, 1 m short of 0.5 m away.
+  EXPECT_TRUE(std::isinf(
+      (Disc{Vec2(3.5, 0.0), 0.0, Vec2(-2.0, 0.0), 0.0, Vec2(1.0, 0.0), 2.0}).time_to_reach(Vec2::Zero(), 0.5)));
+}
+
+// Against a fine search of the gap over time, for random discs that turn,
+// brake or reverse: the first contact, never one after it.
+TEST(Disc, TimeToReachThroughAnAccelerationIsTheFirstContact) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int met = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Disc d{Vec2(4.0 * u(rng), 4.0 * u(rng)), 0.3 + 0.2 * u(rng), Vec2(2.0 * u(rng), 2.0 * u(rng)),
+                 0.1 + 0.1 * u(rng), Vec2(3.0 * u(rng), 3.0 * u(rng)), 1.0 + 0.5 * u(rng)};
+    const Vec2 point(u(rng), u(rng));
+    const double reach = 0.25;
+    const double t = d.time_to_reach(point, reach);
+    const auto gap = [&](double s) { return (d.center_at(s) - point).norm() - d.radius_at(s) - reach; };
+    double first = kInf;
+    for (double s = 0.0; s <= 20.0; s += 1e-4)
+      if (gap(s) <= 0.0) {
+        first = s;
+        break;
+      }
+    SCOPED_TRACE(::testing::Message() << "trial " << trial);
+    if (std::isinf(first)) {
+      // Never within 20 s on the search's grid: a later contact only, or none.
+      EXPECT_TRUE(std::isinf(t) || t > 20.0 - 1e-3) << t;
+      continue;
+    }
+    ++met;
+    EXPECT_NEAR(t, first, 1.1e-4);
+    EXPECT_LE(gap(t), 1e-9);
+  }
+  EXPECT_GT(met, 20);  // the trials do reach the point, often enough
+}
+
+TEST(Disc, AnAccelerationOutOfBoundsIsRefusedByName) {
+  const auto with = [](Vec2 a, double time) { return Disc{Vec2::Zero(), 0.3, Vec2::Zero(), 0.0, a, time}; };
+  test::expect_error_naming([&] { with(Vec2(std::nan(""), 0.0), 1.0).validate(); }, "disc acceleration");
+  test::expect_error_naming([&] { with(Vec2(1.0, 0.0), -1.0).validate(); }, "disc accel_time");
+  test::expect_error_naming([&] { with(Vec2(1.0, 0.0), std::nan("")).validate(); }, "disc accel_time");
+  test::expect_error_naming([&] { with(Vec2(9e3, 0.0), 1.0).validate(); }, "disc speed after accel_time");
+  test::expect_error_naming([&] { FieldClearance(nullptr, {with(Vec2(1.0, 0.0), -1.0)}); }, "disc accel_time");
+}
+
+}  // namespace
+}  // namespace fgdwa

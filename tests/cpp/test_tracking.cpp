@@ -374,6 +374,57 @@ TEST(Tracker, ThePredictionFollowsAReversalBeforeTheLabelsWindow) {
   }
 }
 
+// A disc going round a 1.5 m circle at 1.5 m/s (1.5 m/s^2 toward the centre):
+// with hypothesis_time set, its track gets a second prediction that goes on
+// bending, and 0.8 s ahead that one lies a quarter nearer (or more) where the disc will be than
+// the straight one does. A disc going straight mostly gets none, and when it
+// does, with little acceleration. By default there is only the straight one.
+TEST(Tracker, ATurningMoverGetsASecondPredictionThatBends) {
+  const Vec2 pivot(4.0, 0.0);
+  const double r = 1.5, omega = 1.0;  // m, rad/s
+  const auto on_circle = [&](double t) -> Vec2 { return pivot + r * Vec2(std::cos(M_PI + omega * t), std::sin(M_PI + omega * t)); };
+  TrackerParams params;
+  params.hypothesis_time = 1.0;
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  const double seen = 2.0, ahead = 0.8;  // s
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    Tracker tracker(params), plain;
+    std::mt19937_64 rng(seed);
+    for (int k = 0; k <= static_cast<int>(std::lround(seen / kPeriod)); ++k) {
+      const double t = k * kPeriod;
+      const Scan scan = scan_of(scanner, Pose2{}, {Disc{on_circle(t), 0.3}}, t, rng);
+      const auto clusters = segment_scan(scan);
+      tracker.update(clusters, t, &scan);
+      plain.update(clusters, t, &scan);
+    }
+    ASSERT_EQ(plain.moving_discs().size(), 1u);
+    const auto discs = tracker.moving_discs();
+    ASSERT_EQ(discs.size(), 2u);
+    const Track& track = tracker.tracks()[0];
+    EXPECT_NEAR(track.acceleration.norm(), omega * omega * r, 0.6);
+    EXPECT_EQ(discs[1].acceleration, track.acceleration);
+    EXPECT_EQ(discs[1].velocity, track.current_velocity);
+    EXPECT_EQ(discs[1].accel_time, params.hypothesis_time);
+    EXPECT_EQ(discs[1].radius, discs[0].radius);
+    const Vec2 truth = on_circle(seen + ahead);
+    const double straight = (discs[0].center_at(ahead) - truth).norm(), bent = (discs[1].center_at(ahead) - truth).norm();
+    EXPECT_LT(bent, 0.75 * straight) << "straight " << straight << " m off, bent " << bent << " m off";
+  }
+  int second = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Tracker tracker(params);
+    run(tracker, {Disc{Vec2(3.0, -1.5), 0.3, Vec2(0.2, 1.0)}}, 2.0, seed, kStill, [](double, const Tracker&) {});
+    const auto discs = tracker.moving_discs();
+    ASSERT_GE(discs.size(), 1u);
+    if (discs.size() == 2) {
+      ++second;
+      EXPECT_LT(discs[1].acceleration.norm(), 0.6) << "seed " << seed;
+    }
+  }
+  EXPECT_LE(second, 6) << "of 20 straight runs";
+}
+
 // A mover seen only in part (beside something nearer, or at the edge of the
 // field of view) is still labelled: its centres weigh less, not nothing.
 // A static one seen the same way, its centre wobbling twice as much, is not.

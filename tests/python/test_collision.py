@@ -63,3 +63,13 @@ def test_discs_read_back_are_copies_that_outlive_a_replacement():
         world.discs = []
         world.discs = [fgdwa.Disc((5.0, 5.0), 0.1)] * 3000
         assert tuple(kept.center) == (1.0, 1.0) and kept.radius == 0.3
+
+
+def test_an_accelerating_disc_as_worked_out_by_hand():
+    # From rest 5 m off, pulled at 2 m/s^2 for 1 s: at 4 m moving at 2 m/s, then 1 m off at 2.5 s.
+    disc = fgdwa.Disc((5.0, 0.0), 0.0, acceleration=(-2.0, 0.0), accel_time=1.0)
+    assert disc.center_at(0.5) == pytest.approx((4.75, 0.0))
+    assert disc.center_at(2.0) == pytest.approx((2.0, 0.0))
+    assert disc.acceleration == (-2.0, 0.0) and disc.accel_time == 1.0
+    assert disc.time_to_reach((0.0, 0.0), 1.0) == pytest.approx(2.5)
+    assert "accel_time=1" in repr(disc)

@@ -14,19 +14,31 @@ namespace fgdwa {
 
 // A disc obstacle moving at constant velocity; radius 0 is a point (a lidar hit).
 // A predicted obstacle (a track) is less certain the farther ahead it is
-// placed: its radius grows by `growth` every second.
+// placed: its radius grows by `growth` every second. A hypothesis that the
+// mover turns, slows or reverses adds a constant `acceleration` for the first
+// `accel_time` seconds, after which the velocity it reached holds.
 struct Disc {
   Vec2 center = Vec2::Zero();    // m, position now
   double radius = 0.0;           // m
   Vec2 velocity = Vec2::Zero();  // m/s
   double growth = 0.0;           // m/s, radius added per second ahead
-  Vec2 center_at(double t) const { return center + t * velocity; }
+  Vec2 acceleration = Vec2::Zero();  // m/s^2
+  double accel_time = 0.0;           // s, how long the acceleration lasts
+  Vec2 center_at(double t) const {
+    // The acceleration's part: t^2 / 2 up to accel_time, then growing linearly (none for a time past).
+    const double s = std::clamp(t, 0.0, accel_time);
+    return center + t * velocity + (s * (t - 0.5 * s)) * acceleration;
+  }
   // Whether it moves or grows: otherwise it is a static obstacle.
-  bool moves() const { return growth > 0.0 || !velocity.isZero(); }
+  bool moves() const { return growth > 0.0 || !velocity.isZero() || (accel_time > 0.0 && !acceleration.isZero()); }
   // Never below 0, for a time past as well.
   double radius_at(double t) const { return std::max(radius + growth * t, 0.0); }
+  // m/s, the fastest its centre ever moves.
+  double top_speed() const { return velocity.norm() + acceleration.norm() * accel_time; }
   // s, the first time ahead (0 if now) at which the disc, grown by `reach`
-  // (m, >= 0), covers `point`; +inf if it never does.
+  // (m, >= 0), covers `point`; +inf if it never does. Closed form while the
+  // disc does not accelerate; through the acceleration, by steps that pass
+  // over no contact lasting accel_time / 1e5 or longer, then bisection.
   double time_to_reach(const Vec2& point, double reach) const;
   void validate() const;
 };

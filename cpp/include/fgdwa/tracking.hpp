@@ -112,6 +112,9 @@ struct TrackerParams {
   double max_speed = 3.0;
   double uncertainty_sigmas = 2.0;
   double max_uncertainty = 0.3;
+  double hypothesis_time = 0.0;
+  double acceleration_sigmas = 2.0;
+  double max_acceleration = 3.0;
   int max_clusters = 200;
 
   static constexpr const char* kName = "tracker";
@@ -134,6 +137,9 @@ struct TrackerParams {
     v.real("max_speed", &P::max_speed, "m/s", Bounds::positive(kMaxSpeed), "an association implying more speed is rejected");
     v.real("uncertainty_sigmas", &P::uncertainty_sigmas, "", Bounds::at_least(0, 1e3), "std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead");
     v.real("max_uncertainty", &P::max_uncertainty, "m", Bounds::at_least(0), "the most the position's uncertainty adds to a disc (a coasting track's grows)");
+    v.real("hypothesis_time", &P::hypothesis_time, "s", Bounds::at_least(0, kMaxHorizon), "how long a second prediction keeps a moving track's significant acceleration (turning, slowing, reversing) before its velocity holds; 0: constant velocity alone");
+    v.real("acceleration_sigmas", &P::acceleration_sigmas, "", Bounds::at_least(0, 1e3), "std devs the fitted acceleration must exceed before the second prediction is made");
+    v.real("max_acceleration", &P::max_acceleration, "m/s^2", Bounds::positive(limits::kMaxAcceleration), "the most acceleration the second prediction keeps");
     v.integer("max_clusters", &P::max_clusters, "", Bounds::closed(1, 10000), "clusters an update tracks, the nearest to the scanner first (association costs the cube of the count); the rest stay the scan's points, and new tracks stop at twice this");
   }
   void validate() const { validate_params(*this); }
@@ -155,6 +161,12 @@ struct Track {
   // m/s, the same slope over the last prediction_window (the window velocity
   // until it holds three centres): moving_discs' predicted velocity.
   Vec2 predicted_velocity = Vec2::Zero();
+  // A parabola through the window's centres: the velocity at the last one
+  // (m/s), the acceleration (m/s^2) and its std per coordinate (m/s^2;
+  // infinite until four centres). The second prediction uses them.
+  Vec2 current_velocity = Vec2::Zero();
+  Vec2 acceleration = Vec2::Zero();
+  double acceleration_std = std::numeric_limits<double>::infinity();
   int hits = 0;            // associations, the first cluster included
   double last_seen = 0.0;  // s, time of the last association
   double age = 0.0;        // s since the first cluster
@@ -190,11 +202,16 @@ class Tracker {
   double time() const { return time_; }
 
   // Moving tracks, confirmed or lost (still coasting), as discs at the last
-  // update's time with their window velocity; the radius grown by
+  // update's time with their predicted velocity; the radius grown by
   // uncertainty_sigmas position std devs (at most max_uncertainty) and, per
   // second ahead, by uncertainty_sigmas std devs of the filter's speed (Disc::growth):
   // the spread that the model's acceleration noise (accel_std) gives a mover
-  // that may turn or reverse.
+  // that may turn or reverse. A track whose acceleration exceeds
+  // acceleration_sigmas std devs gets a second disc (same place, size and
+  // growth): the hypothesis that it goes on turning, slowing or reversing,
+  // from its current velocity at that acceleration (at most max_acceleration)
+  // for hypothesis_time. The planner keeps clear of both, the worse of the two
+  // at every instant.
   std::vector<Disc> moving_discs() const;
   // Whether `point` lies within `margin` (m) of the grown disc of a confirmed
   // moving track, e.g. a hit the static map should not take.
@@ -227,6 +244,13 @@ class Tracker {
     double speed_std = std::numeric_limits<double>::infinity();
   };
   LineFit fit_line(const std::deque<Centre>& centres, double since) const;
+  // A parabola through all the centres, about the newest.
+  struct ParabolaFit {
+    Vec2 velocity = Vec2::Zero();
+    Vec2 acceleration = Vec2::Zero();
+    double acceleration_std = std::numeric_limits<double>::infinity();
+  };
+  ParabolaFit fit_parabola(const std::deque<Centre>& centres) const;
   void relabel(Track& track, const Memory& memory) const;
   bool displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan, double time) const;
   template <class Item>
