@@ -107,7 +107,7 @@ def test_a_tiny_benchmark_writes_its_outputs(tmp_path, capsys):
     assert [(r["seed"], r["planner"]) for r in rows] == [("0", "fgdwa"), ("0", "dwb"), ("1", "fgdwa"), ("1", "dwb")]
     summary = json.loads((out / "summary.json").read_text())
     assert summary["level"] == "easy" and summary["seeds"] == [0, 1]
-    assert summary["setup"] == {"noise_std": 0.03, "dropout": 0.01, "latency": 0, "body": "default"}
+    assert summary["setup"] == {"noise_std": 0.03, "dropout": 0.01, "latency": 0, "body": "default", "settings": []}
     for stats in summary["planners"].values():
         assert stats["n"] == 2
         assert stats["success"] + stats["collision"] + stats["timeout"] + stats["failed"] == pytest.approx(1.0)

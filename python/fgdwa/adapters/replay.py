@@ -48,6 +48,7 @@ from fgdwa.io.rosbag_reader import (
 )
 from fgdwa.io.table import Table
 from fgdwa.file_limits import short_repr
+from fgdwa.settings import parse_overrides
 
 CYCLE_STATUS = "fgdwa_node: cycle"
 TOLERANCE = 1e-9  # m/s and rad/s: commands this close count as the same
@@ -315,20 +316,6 @@ def write_outputs(cycles: Sequence[ReplayCycle], out_dir, bag: str) -> dict:
 
     plot_replay(cycles, out / "replay.png", title=Path(bag).name)
     return summary
-
-
-def parse_overrides(items: Sequence[str]) -> Dict[str, object]:
-    """``--set planner/dt=0.2`` pairs, values read as JSON (numbers, true/false, strings in quotes)."""
-    out = {}
-    for item in items:
-        if "=" not in item:
-            raise FgdwaError(f"--set {short_repr(item)}: expected NAME=VALUE, e.g. planner/sim_time=1.5")
-        name, text = item.split("=", 1)
-        try:
-            out[name.strip()] = json.loads(text)
-        except json.JSONDecodeError:
-            out[name.strip()] = text
-    return out
 
 
 def replay_command(args) -> int:

@@ -27,6 +27,7 @@ import numpy as np
 from fgdwa._core import (FgdwaError, LidarParams, NavigatorParams, OccupancyGrid, PlannerParams, RobotLimits,
                          planner_preset, preset_names, robot_preset)
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
+                                 add_settings_argument,
                                  check_executor_arguments, check_sensing, planner_list)
 from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
                                     failure_entries, print_failures, run_benchmark)
@@ -39,6 +40,7 @@ from fgdwa.mapping import MAPPING_MODES, check_mapping
 from fgdwa.sim.body import DEFAULT_BODY, body_profile
 from fgdwa.sim.episode import check_map_resolution, run_episode
 from fgdwa.sim.scenario import params_with
+from fgdwa.settings import Settings, benchmark_settings, group_settings
 from fgdwa.sim.world import World
 from fgdwa.file_limits import short_repr
 
@@ -89,6 +91,8 @@ class BarnSetup:
     stall_time: float = 3.0  # s without 0.1 m of progress before a recovery
     # The challenge's time limit ends a run: the navigator keeps recovering until then.
     max_recoveries: int = 1000
+    # Parameters changed by name (fgdwa.settings: ("navigator/tracker/hypothesis_time", 0.5), ...), after the above
+    settings: Settings = ()
 
     def __post_init__(self):
         for name in ("v_max", "dt", "sim_time", "lidar_range", "replan_period", "stall_time"):
@@ -109,6 +113,11 @@ class BarnSetup:
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
                 raise FgdwaError(f"BarnSetup.{name} = {short_repr(value)}: must be an integer >= 1")
+        try:
+            self.navigator()
+            self.planner_params("fgdwa", 0.5)
+        except FgdwaError as error:
+            raise FgdwaError(f"BarnSetup.settings: {error}") from None
 
     def limits(self) -> RobotLimits:
         jackal = robot_preset("jackal").limits
@@ -127,7 +136,14 @@ class BarnSetup:
         # measured worse than odometry alone (250 worlds, seeds 0-1: 241 and 230 successes, 7 collisions,
         # against 247 and 245, 3 collisions), so there the odometry stands.
         params.scan_match.enabled = mapping == "known"
-        return params
+        return params_with(params, **group_settings(self.settings, "navigator"))
+
+    def planner_params(self, planner: str, goal_radius: float) -> PlannerParams:
+        """The preset's parameters as the setup runs them."""
+        # The planner knows its robot's response, as a user who identified it does.
+        setup = dict(dt=self.dt, sim_time=self.sim_time, goal_tolerance=goal_radius, wheels=self.wheels,
+                     response_time=body_profile(self.body).actuation_lag)
+        return params_with(planner_preset(planner).params, **{**setup, **group_settings(self.settings, "planner")})
 
     def lidar(self) -> LidarParams:
         return LidarParams(fov=270.0 * math.pi / 180.0, beams=self.lidar_beams, max_range=self.lidar_range,
@@ -191,9 +207,7 @@ def run_jackal(world: World, start, goal, goal_radius: float, time_limit: float,
     Rerun recording (``title``). Returns (result, outcome, wall time in s):
     the challenge knows three outcomes, so running out of steps is a timeout."""
     preset = planner_preset(planner)
-    # The planner knows its robot's response, as a user who identified it does.
-    params = params_with(preset.params, dt=setup.dt, sim_time=setup.sim_time, goal_tolerance=goal_radius,
-                         wheels=setup.wheels, response_time=body_profile(setup.body).actuation_lag)
+    params = setup.planner_params(planner, goal_radius)
     robot = robot_preset("jackal")
     navigator = setup.navigator(mapping)
     if record:
@@ -280,7 +294,8 @@ def barn_command(args) -> int:
     world_ids = dataset.select_ids(args.worlds)
     planners = check_planners(args.planners)
     setup = BarnSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency, body=args.body,
-                      footprint_padding=args.footprint_padding, map_resolution=args.map_resolution)
+                      footprint_padding=args.footprint_padding, map_resolution=args.map_resolution,
+                      settings=benchmark_settings(args.settings))
     tasks = barn_tasks(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup)
     runs, wall, recordings = run_benchmark(tasks, run_barn_task, args, barn_run_name)
     failed = failure_entries(runs, FAILURE_KEYS, recordings)
@@ -328,6 +343,7 @@ def register_barn_commands(subparsers) -> None:
     add_output_arguments(barn, "out/barn", "runs.csv, summary.json, failures.png")
     add_record_failures_argument(barn)
     add_jackal_arguments(barn, BarnSetup())
+    add_settings_argument(barn)
     barn.set_defaults(func=lambda args, *_: barn_command(args))
     barn_sub = barn.add_subparsers(dest="barn_command", required=False, metavar="{import}")
     imp = barn_sub.add_parser(

@@ -30,7 +30,9 @@ import numpy as np
 
 from fgdwa._core import FgdwaError, OccupancyGrid, robot_preset
 from fgdwa.bench.barn import BarnSetup, add_jackal_arguments, check_planners, run_jackal
+from fgdwa.settings import benchmark_settings
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
+                                 add_settings_argument,
                                  check_executor_arguments)
 from fgdwa.bench.recordings import (add_record_failures_argument, check_recording_possible, failure_entries,
                                     print_failures, run_benchmark)
@@ -159,7 +161,7 @@ def dynabarn_command(args) -> int:
     planners = check_planners(args.planners)
     setup = dataclasses.replace(DYNABARN_SETUP, noise_std=args.noise, dropout=args.dropout, latency=args.latency,
                                 body=args.body, footprint_padding=args.footprint_padding,
-                                map_resolution=args.map_resolution)
+                                map_resolution=args.map_resolution, settings=benchmark_settings(args.settings))
     tasks = dynabarn_tasks(dataset, world_ids, planners, args.mapping, args.trials, args.seed, setup)
     runs, wall, recordings = run_benchmark(tasks, run_dynabarn_task, args, dynabarn_run_name)
     failed = failure_entries(runs, FAILURE_KEYS, recordings)
@@ -199,4 +201,5 @@ def register_dynabarn_commands(subparsers) -> None:
     add_output_arguments(p, "out/dynabarn", "runs.csv, summary.json, failures.png")
     add_record_failures_argument(p)
     add_jackal_arguments(p, DYNABARN_SETUP)
+    add_settings_argument(p)
     p.set_defaults(func=lambda args, *_: dynabarn_command(args))

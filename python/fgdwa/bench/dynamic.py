@@ -22,8 +22,9 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from fgdwa._core import NavigatorParams
+from fgdwa._core import FgdwaError, NavigatorParams, PlannerParams
 from fgdwa.bench.options import (add_executor_arguments, add_output_arguments, add_sensing_arguments,
+                                 add_settings_argument,
                                  check_executor_arguments, check_sensing, planner_list)
 from fgdwa.bench.recordings import (RECORDED_ROLLOUTS, add_record_failures_argument, check_recording_possible,
                                     print_failures, run_benchmark)
@@ -34,7 +35,8 @@ from fgdwa.io.dynamic_fields import (DROPOUT, LEVELS, NOISE_STD, check_field_see
                                      field_name, generate_field, write_field)
 from fgdwa.io.scenario_file import scenario_from_dict
 from fgdwa.sim.body import DEFAULT_BODY, body_profile
-from fgdwa.sim.scenario import run_scenario, trial_variation
+from fgdwa.settings import Settings, benchmark_settings, describe_settings, group_settings
+from fgdwa.sim.scenario import params_with, run_scenario, trial_variation
 
 # A planner label -> (planner preset, NavigatorParams overrides). A variant of a
 # preset is one more row, e.g. "fgdwa-slow-replan": ("fgdwa", {"replan_period": 2.0}).
@@ -64,10 +66,17 @@ class DynamicSetup:
     dropout: float = DROPOUT
     latency: int = 0
     body: str = DEFAULT_BODY  # a profile of fgdwa.sim.body.BODY_PROFILES
+    # Parameters changed by name (fgdwa.settings: ("navigator/tracker/hypothesis_time", 0.5), ...)
+    settings: Settings = ()
 
     def __post_init__(self):
         check_sensing("DynamicSetup", self.noise_std, self.dropout, self.latency)
         body_profile(self.body)
+        try:
+            params_with(NavigatorParams(), **group_settings(self.settings, "navigator"))
+            params_with(PlannerParams(), **group_settings(self.settings, "planner"))
+        except FgdwaError as error:
+            raise FgdwaError(f"DynamicSetup.settings: {error}") from None
 
 
 @dataclass(frozen=True)
@@ -117,7 +126,10 @@ def _episode(task: DynamicTask):
     """The task's scenario and its episode (every cycle kept, with the fan a recording shows, when ``task.record``)."""
     scenario = scenario_from_dict(field_document(task), where=field_name(task.level, task.seed))
     preset, overrides = PLANNER_VARIANTS[task.planner]
-    navigator = NavigatorParams(**overrides)
+    navigator = params_with(NavigatorParams(**overrides), **group_settings(task.setup.settings, "navigator"))
+    planner = group_settings(task.setup.settings, "planner")
+    if planner:
+        scenario = dataclasses.replace(scenario, overrides={**scenario.overrides, **planner})
     if task.record:
         navigator.record_top_k = RECORDED_ROLLOUTS
     return scenario, run_scenario(scenario, preset, task.seed, navigator=navigator, latency=task.setup.latency,
@@ -161,16 +173,21 @@ def run_dynamic(level: str, seeds: Sequence[int], planners: Sequence[str], setup
                      progress=progress)
 
 
-def replay_command(path, planner: str, seed: int, latency: int, body: str = DEFAULT_BODY) -> str:
-    """The ``fgdwa run`` command that replays a run of the field in ``path``."""
+def replay_command(path, planner: str, seed: int, latency: int, body: str = DEFAULT_BODY,
+                   settings: Settings = ()) -> str:
+    """The ``fgdwa run`` command that replays a run of the field in ``path`` (parameters
+    that differ from its defaults named in a comment)."""
     preset, overrides = PLANNER_VARIANTS[planner]
     command = f"fgdwa run {path} --planner {preset} --seed {seed}"
     if latency:
         command += f" --latency {latency}"
     if body != DEFAULT_BODY:
         command += f" --body {body}"
-    if overrides:
-        command += f"  # with NavigatorParams({', '.join(f'{k}={v!r}' for k, v in overrides.items())})"
+    changed = [f"NavigatorParams({', '.join(f'{k}={v!r}' for k, v in overrides.items())})"] if overrides else []
+    if settings:
+        changed.append(describe_settings(settings).strip())
+    if changed:
+        command += "  # with " + " and ".join(changed)
     return command
 
 
@@ -198,7 +215,8 @@ def write_failed_fields(runs: Sequence[Run], out_dir, setup: DynamicSetup) -> li
             written.add(path)
         failed.append({"planner": row["planner"], "seed": row["seed"], "outcome": row["outcome"],
                        "reason": row["reason"], "file": str(path),
-                       "replay": replay_command(path, row["planner"], row["seed"], setup.latency, setup.body)})
+                       "replay": replay_command(path, row["planner"], row["seed"], setup.latency, setup.body,
+                                                setup.settings)})
     return failed
 
 
@@ -209,7 +227,8 @@ def dynamic_command(args) -> int:
     level = check_level(args.level)
     seeds = parse_seeds(args.seeds)
     planners = check_variants(args.planners)
-    setup = DynamicSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency, body=args.body)
+    setup = DynamicSetup(noise_std=args.noise, dropout=args.dropout, latency=args.latency, body=args.body,
+                         settings=benchmark_settings(args.settings))
     tasks = dynamic_tasks(level, seeds, planners, setup)
     runs, wall, recordings = run_benchmark(tasks, run_dynamic_task, args, dynamic_run_name)
     failed = write_failed_fields(runs, args.out, setup)
@@ -254,6 +273,7 @@ def register_dynamic_commands(subparsers) -> None:
                          help=f"comma-separated planner labels (default fgdwa,dwb; known: "
                               f"{', '.join(PLANNER_VARIANTS)})")
     add_sensing_arguments(dynamic, DynamicSetup())
+    add_settings_argument(dynamic)
     add_executor_arguments(dynamic)
     add_output_arguments(dynamic, "out/dynamic", "runs.csv, summary.json, failures.png and fields/")
     add_record_failures_argument(dynamic)

@@ -1,6 +1,7 @@
 """The command-line options the benchmark commands share (``fgdwa barn``,
 ``fgdwa dynamic``, ``fgdwa experiment``): where the runs go (executor,
-scheduler, workers), the outputs, the sensing settings, and the planner list."""
+scheduler, workers), the outputs, the sensing settings, parameters changed by
+name, and the planner list."""
 
 from __future__ import annotations
 
@@ -68,6 +69,13 @@ def add_sensing_arguments(parser, defaults) -> None:
                         help=f"control cycles from a scan to its command reaching the wheels "
                              f"(default {defaults.latency})")
     add_body_argument(parser, defaults.body)
+
+
+def add_settings_argument(parser) -> None:
+    """--set NAME=VALUE (repeatable): a planner or navigator parameter changed for every run (fgdwa.settings)."""
+    parser.add_argument("--set", action="append", default=[], dest="settings", metavar="NAME=VALUE",
+                        help="change a parameter for every run, by its name in docs/parameters.md, e.g. "
+                             "planner/sim_time=1.5 or navigator/tracker/hypothesis_time=0.5 (repeatable)")
 
 
 def check_sensing(owner: str, noise_std, dropout, latency) -> None:
