@@ -58,7 +58,7 @@ def test_a_recording_holds_the_critics_spread_vetoes_stage_times_and_mode_of_eve
     from fgdwa.sim import trial_variation
 
     scenario = resolve_scenario("demo")
-    result = run_scenario(scenario, scenario.planner, 1, max_steps=30, record_cycles=True, mapping="scan",
+    result = run_scenario(scenario, scenario.planner, 1, max_steps=60, record_cycles=True, mapping="scan",
                           navigator=fgdwa.NavigatorParams(record_top_k=12))
     _, world, _ = trial_variation(scenario, 1)
     rrd = write_recording(result, world, scenario.goal, scenario.footprint, tmp_path / "scan.rrd")
@@ -73,6 +73,11 @@ def test_a_recording_holds_the_critics_spread_vetoes_stage_times_and_mode_of_eve
         for c in cycles:
             if len(c.chosen):
                 assert c.critic_stats[j, 0] <= c.chosen_terms[j] <= c.critic_stats[j, 2]
+    # T, the time to the nearest predicted contact, beside I and D, in the cycles that had one.
+    weights = read_recording(rrd, "/weights/**")
+    contact = [t for t in result.trace.contact_time if t != float("inf")]
+    logged = [v for v in _values(weights, "/weights/contact_time:Scalars:scalars") if v is not None]
+    assert contact and logged == contact
     times = read_recording(rrd, "/times/**")
     assert _values(times, "/times/plan_ms:Scalars:scalars") == [1e3 * c.times["plan"] for c in cycles]
     navigator = read_recording(rrd, "/navigator/**")

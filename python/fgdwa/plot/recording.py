@@ -3,7 +3,8 @@ through cycle by cycle: the true map and the robot's own, the true and the
 believed pose with the true outline and the planner's footprint, the scan,
 the movers (true and tracked, with the discs the planner predicted), the
 global paths, the scored rollouts coloured by their total or by any one
-critic's term, the chosen one, and time series of I, D, beta, delta, the mode,
+critic's term, the chosen one, and time series of I, D, T (the time to the
+nearest predicted contact with a mover, while there is one), beta, delta, the mode,
 each critic's raw score and term for the chosen rollout with the spread of its
 terms over every admissible sample, vetoes, reject counts and stage times.
 
@@ -83,7 +84,7 @@ def _blueprint(critics):
         rrb.Horizontal(
             rrb.Spatial2DView(origin="world", name="world", overrides=hidden),
             rrb.Vertical(
-                rrb.TimeSeriesView(origin="weights", name="I, D, beta, delta"),
+                rrb.TimeSeriesView(origin="weights", name="I, D, T, beta, delta"),
                 rrb.Tabs(
                     rrb.TimeSeriesView(origin="critics", name="chosen: each critic's term",
                                        contents=[f"critics/{critic}/term" for critic in critics]),
@@ -146,8 +147,8 @@ def write_recording(result, world, goal, footprint, path, title: str = "fgdwa ru
             why = f"{cycle.mode}" + (f", recovering from {trigger}" if trigger != "None" else "")
             rec.log("log", rr.TextLog(why + (f", gave up: {failure}" if failure != "None" else ""),
                                       level="WARN" if failure != "None" else "INFO"))
-        for name, series in (("density", trace.density), ("deviation", trace.deviation), ("beta", trace.beta),
-                             ("delta", trace.delta)):
+        for name, series in (("density", trace.density), ("deviation", trace.deviation),
+                             ("contact_time", trace.contact_time), ("beta", trace.beta), ("delta", trace.delta)):
             if k < len(series) and np.isfinite(series[k]):
                 rec.log(f"weights/{name}", rr.Scalars(float(series[k])))
         if k < len(trace.cycle_times):
