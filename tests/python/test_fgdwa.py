@@ -3,7 +3,7 @@ import pytest
 
 import fgdwa
 from fgdwa.io.builtin import unknown_beside_path_scenario
-from fgdwa.sim import World, run_episode, run_preset
+from fgdwa.sim import World, run_preset
 
 
 def test_presets_follow_the_paper_tables():

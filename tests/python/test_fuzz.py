@@ -1592,7 +1592,7 @@ def test_local_planner_plan(kw, pose, twist, goal, target, world, path, polygon,
         with np.errstate(invalid="ignore"):
             coincide = np.all(np.diff(path, axis=0) == 0)
         expect(out, finite(path) and not coincide if not (finite(path) and not coincide) else None, "path", "point")
-    (p, p_arg), (t, t_arg), (g, g_arg) = pose, twist, goal
+    (p, _), (t, _), (g, g_arg) = pose, twist, goal
     state = fgdwa.RobotState(fgdwa.Pose2(*p), fgdwa.Twist(*t))
     args = [state, g_arg, source] + ([target[1]] if target is not None else [])
     out = attempt(planner.plan, *args)
@@ -1772,7 +1772,7 @@ def test_controller(pose, twist, goal, set_pose, policy, map_, path, noscan):
                             preset.weight_policy() if policy != "none" else None)
     if path is not None:
         expect(attempt(ctrl.set_global_path, path), None, "path")
-    (p, p_arg), (t, t_arg), (g, g_arg) = pose, twist, goal
+    (p, _), (t, _), (g, g_arg) = pose, twist, goal
     state = fgdwa.RobotState(fgdwa.Pose2(*p), fgdwa.Twist(*t))
     scan, scan_pose = None, p
     if not noscan:

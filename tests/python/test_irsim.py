@@ -390,3 +390,27 @@ def test_a_resolution_too_fine_for_the_world_is_refused_before_any_allocation():
         scan_layout(robot, [(9.0, 9.0)], 0.0001)
     grid = scan_layout(robot, [(9.0, 9.0)], None)
     assert grid.rows * grid.cols <= MAX_SCAN_CELLS
+
+
+def test_giving_up_again_and_again_is_warned_of_every_few_seconds_with_the_count(tmp_path, monkeypatch):
+    """A robot whose goal an obstacle covers gives up over and over; the log says so
+    the first time and then every GIVE_UP_WARNING_PERIOD seconds, not every time."""
+    behavior_config = {"name": "fgdwa", "max_recoveries": 1, "stall_time": 0.5}
+    path = simple_world(tmp_path, [robot(goal=[4, 1, 0], behavior=behavior_config)],
+                        obstacles=[{"shape": {"name": "circle", "radius": 0.6}, "state": [4, 1, 0]}])
+    env = fi.make_env(path, log_level="ERROR")
+    said = []
+    try:
+        r = env.robot_list[0]
+        monkeypatch.setattr(r.logger, "warning", lambda message, *args, **kwargs: said.append(message))
+        steps = 600
+        for _ in range(steps):
+            env.step()
+        failures = fi.behavior_of(r).failures
+    finally:
+        env.end(0)
+    given_up = [m for m in said if "gave up" in m]
+    seconds = steps * 0.1
+    assert failures > seconds / fi.GIVE_UP_WARNING_PERIOD + 1  # more often than it is warned of
+    assert 1 <= len(given_up) <= seconds / fi.GIVE_UP_WARNING_PERIOD + 1
+    assert given_up[0].endswith("(1 time so far)") and f"({failures} times" not in given_up[0]

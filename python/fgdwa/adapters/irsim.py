@@ -89,6 +89,8 @@ KEYS = IRSIM_KEYS + OWN_KEYS + LIMIT_KEYS + PLANNER_KEYS + NAVIGATOR_KEYS
 DEFAULT_RESOLUTION = 0.05
 MAX_SCAN_CELLS = 2_000_000  # a large world gets coarser cells rather than more of them
 MAP_MARGIN = 2.0  # m kept around the world (and the robot and its goals) by a map built from scans
+# s of simulated time between warnings that a robot gave up again.
+GIVE_UP_WARNING_PERIOD = 10.0
 # The navigator stops this fraction inside IR-SIM's goal_threshold, where IR-SIM counts the robot arrived.
 GOAL_TOLERANCE_SHARE = 0.9
 # With arrive_mode "state" the heading counts too: the position is settled within this share, then the robot turns.
@@ -385,6 +387,7 @@ class FgdwaBehavior:
         self.mapping = ""
         self.cycle_times: list = []
         self.failures = 0
+        self._warned = (None, -math.inf)  # the last give-up warned of: (failure, time)
         self._goal: Optional[np.ndarray] = None
         self._time = -math.inf
         self._dt = 0.0
@@ -491,7 +494,12 @@ class FgdwaBehavior:
         if record.mode == NavigatorMode.Failed:
             # IR-SIM has no way to give up: the robot stops and tries again from here.
             self.failures += 1
-            robot.logger.warning(f"{self.name}: fgdwa gave up ({record.failure.name}); trying again")
+            # A robot may give up cycle after cycle (a goal another robot holds): the first time, when the
+            # reason changes, and then every GIVE_UP_WARNING_PERIOD seconds, with the count.
+            if (record.failure.name != self._warned[0] or now - self._warned[1] >= GIVE_UP_WARNING_PERIOD):
+                robot.logger.warning(f"{self.name}: fgdwa gave up ({record.failure.name}); trying again "
+                                     f"({self.failures} time{'s' if self.failures > 1 else ''} so far)")
+                self._warned = (record.failure.name, now)
             self.navigator.set_goal(goal[:2])
             return self._stop(robot)
         command = np.array([[record.command.v], [record.command.omega]])
