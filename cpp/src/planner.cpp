@@ -255,6 +255,11 @@ const PlanResult& LocalPlanner::run_cycle(const RobotState& state, const Vec2& g
     window.v_hi = std::min(window.v_hi, cap);
     window.v_lo = std::min(window.v_lo, window.v_hi);
   }
+  // Near the goal, no faster than the robot can stop on it: braking once inside
+  // the goal region then never carries it out again (the navigator stops
+  // there for good).
+  const double stop_cap = std::sqrt(2.0 * limits_.braking_v() * (goal - state.pose.position()).norm());
+  window.v_hi = std::max(std::min(window.v_hi, stop_cap), window.v_lo);
   sample_window(window, state.twist, params_.window, result_.samples);
   evaluate_rollouts(state, goal, world);
 

@@ -526,6 +526,27 @@ TEST(LocalPlanner, GoalReachedWithinTolerance) {
   EXPECT_EQ(again.admissible_count(), 0);
 }
 
+// Near the goal no faster than the robot can stop on it (sqrt(2 b d)): 0.2 m
+// from it at 0.8 m/s with 1 m/s^2 braking, the cap is 0.63 m/s, below what
+// the window reaches (0.7-0.9 m/s), so the command is the window's slowest;
+// 5 m away the same state keeps its speed.
+TEST(LocalPlanner, NearTheGoalNoFasterThanItCanStopOnIt) {
+  RobotLimits limits;
+  limits.v_max = 1.2;
+  PlannerParams params;
+  params.goal_tolerance = 0.05;
+  LocalPlanner planner(limits, Footprint::circle(0.25), params);
+  const FieldClearance empty;
+  const RobotState state{Pose2{1.0, 1.0, 0.0}, Twist{0.8, 0.0}};
+  const PlanResult& near = planner.plan(state, Vec2(1.2, 1.0), empty);
+  ASSERT_EQ(near.status, Status::Ok);
+  EXPECT_LE(near.command.v, 0.8 - limits.braking_v() * params.dt + 1e-9);
+  for (const Twist& sample : near.samples) EXPECT_LE(sample.v, 0.7 + 1e-9);
+  const PlanResult& far = planner.plan(state, Vec2(6.0, 1.0), empty);
+  ASSERT_EQ(far.status, Status::Ok);
+  EXPECT_GT(far.command.v, 0.8);
+}
+
 TEST(LocalPlanner, ClearanceIsScoredUntilTheRolloutReachesTheGoal) {
   // A wall 0.6 m past the goal: rollouts that pass through the goal run into it later.
   std::vector<std::uint8_t> cells(30 * 40, 0);
