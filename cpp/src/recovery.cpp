@@ -8,12 +8,6 @@
 
 namespace fgdwa {
 
-namespace {
-// Measured speeds below these are standing still: the wheels' noise keeps them off 0.
-constexpr double kAtRestSpeed = 0.05;     // m/s
-constexpr double kAtRestTurnRate = 0.1;   // rad/s
-}  // namespace
-
 const char* to_string(NavigatorMode mode) {
   switch (mode) {
     case NavigatorMode::Following: return "Following";
@@ -94,13 +88,7 @@ RecoveryStep Recovery::step(const RobotState& state, const Vec2& goal, const Fie
   RecoveryStep out;
   const Vec2 position = state.pose.position();
   if (recoveries_ > 0 && (position - origin_).norm() >= params_.progress_reset) recoveries_ = 0;
-  const double to_goal = (goal - position).norm();
-  if (mode_ != NavigatorMode::Failed && to_goal <= goal_tolerance_) mode_ = NavigatorMode::GoalReached;
-  // A robot that braked out of the goal region (it came in on a curve past the
-  // goal) goes back once it has stopped, rather than standing outside it.
-  if (mode_ == NavigatorMode::GoalReached && to_goal > goal_tolerance_ && std::abs(state.twist.v) <= kAtRestSpeed &&
-      std::abs(state.twist.omega) <= kAtRestTurnRate)
-    mode_ = NavigatorMode::Following;
+  if (mode_ != NavigatorMode::Failed && (goal - position).norm() <= goal_tolerance_) mode_ = NavigatorMode::GoalReached;
   // A trigger lasts while its recovery does (and stays with the failure it ended in).
   if (mode_ == NavigatorMode::Following || mode_ == NavigatorMode::Replanning || mode_ == NavigatorMode::GoalReached)
     trigger_ = RecoveryTrigger::None;

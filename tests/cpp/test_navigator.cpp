@@ -8,7 +8,6 @@
 #include <random>
 
 #include "fgdwa/navigator.hpp"
-#include "fgdwa/recovery.hpp"
 #include "fgdwa/presets.hpp"
 #include "test_support.hpp"
 
@@ -737,36 +736,3 @@ TEST(Navigator, ARobotOffTheMapIsGuidedBackOntoItAndToTheGoal) {
     arrived = drive(nav, d, nullptr, rng, scan, 0.15).mode == NavigatorMode::GoalReached;
   EXPECT_TRUE(arrived) << "ended at (" << d.state.pose.x << ", " << d.state.pose.y << ")";
 }
-
-namespace fgdwa {
-namespace {
-
-// Once in the goal region the robot brakes; one that came in on a curve past
-// the goal and stopped outside the region goes back to it instead of standing
-// there believing it has arrived.
-TEST(Recovery, ARobotThatBrakedOutOfTheGoalRegionGoesBack) {
-  const RobotLimits limits;
-  Recovery recovery(limits, Footprint::circle(0.25), NavigatorParams{}, 0.1, 0.05, 0.3);
-  const FieldClearance seen;
-  const Vec2 goal(5.0, 5.0);
-  const auto at = [](double x, double v) { return RobotState{Pose2{x, 5.0, 0.0}, Twist{v, 0.0}}; };
-  recovery.step(at(4.8, 0.8), goal, seen, {}, false);
-  EXPECT_EQ(recovery.mode(), NavigatorMode::GoalReached);
-  // Still braking past the region: it stays, and brakes.
-  const RecoveryStep braking = recovery.step(at(5.4, 0.3), goal, seen, {}, false);
-  EXPECT_EQ(recovery.mode(), NavigatorMode::GoalReached);
-  EXPECT_FALSE(braking.drive);
-  EXPECT_LT(braking.command.v, 0.3);
-  // Stopped 0.4 m past the goal: back to following it.
-  const RecoveryStep back = recovery.step(at(5.4, 0.0), goal, seen, {}, false);
-  EXPECT_EQ(recovery.mode(), NavigatorMode::Following);
-  EXPECT_TRUE(back.drive);
-  // Stopped inside the region, it stays there.
-  recovery.step(at(5.2, 0.0), goal, seen, {}, false);
-  EXPECT_EQ(recovery.mode(), NavigatorMode::GoalReached);
-  recovery.step(at(5.2, 0.0), goal, seen, {}, false);
-  EXPECT_EQ(recovery.mode(), NavigatorMode::GoalReached);
-}
-
-}  // namespace
-}  // namespace fgdwa
