@@ -23,8 +23,9 @@ void Disc::validate() const {
   detail::require_xy("disc acceleration", acceleration.x(), acceleration.y(), limits::kMaxAcceleration);
   detail::require_non_negative("disc accel_time", accel_time);
   detail::require_at_most("disc accel_time", accel_time, limits::kMaxHorizon);
-  if (!(top_speed() <= limits::kMaxSpeed))
-    throw Error(detail::describe("disc speed after accel_time", top_speed(), "at most " + detail::format_number(limits::kMaxSpeed) + " m/s"));
+  // Bounded as the velocity is, coordinate by coordinate.
+  const Vec2 reached = velocity + accel_time * acceleration;
+  detail::require_xy("disc velocity after accel_time", reached.x(), reached.y(), limits::kMaxSpeed);
 }
 
 namespace {

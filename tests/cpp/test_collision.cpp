@@ -633,7 +633,7 @@ TEST(Disc, AnAccelerationOutOfBoundsIsRefusedByName) {
   test::expect_error_naming([&] { with(Vec2(std::nan(""), 0.0), 1.0).validate(); }, "disc acceleration");
   test::expect_error_naming([&] { with(Vec2(1.0, 0.0), -1.0).validate(); }, "disc accel_time");
   test::expect_error_naming([&] { with(Vec2(1.0, 0.0), std::nan("")).validate(); }, "disc accel_time");
-  test::expect_error_naming([&] { with(Vec2(9e3, 0.0), 1.0).validate(); }, "disc speed after accel_time");
+  test::expect_error_naming([&] { with(Vec2(9e3, 0.0), 1.0).validate(); }, "disc velocity after accel_time");
   test::expect_error_naming([&] { FieldClearance(nullptr, {with(Vec2(1.0, 0.0), -1.0)}); }, "disc accel_time");
 }
 

@@ -85,7 +85,7 @@ def test_discs():
         fgdwa.Disc((0, 0), 1.0, acceleration=(NAN, 0.0), accel_time=1.0)
     with raises("accel_time"):
         fgdwa.Disc((0, 0), 1.0, acceleration=(1.0, 0.0), accel_time=-1.0)
-    with raises("speed after accel_time"):
+    with raises("velocity after accel_time"):
         fgdwa.Disc((0, 0), 1.0, acceleration=(9000.0, 0.0), accel_time=1.0)
     with raises("hypothesis_time"):
         fgdwa.TrackerParams(hypothesis_time=-1.0)
