@@ -97,7 +97,7 @@ void init_tracking(py::module_& m) {
                              "m/s, slope of the centres over the last prediction_window; moving_discs use it.")
       .def_readonly("window_speed_std", &Track::window_speed_std)
       .def_property_readonly("current_velocity", [](const Track& t) { return pair(t.current_velocity); },
-                             "m/s, a parabola's through the window's centres, at the last one.")
+                             "m/s, a parabola's through the window's centres, at the last one (fitted while hypothesis_time > 0).")
       .def_property_readonly("acceleration", [](const Track& t) { return pair(t.acceleration); },
                              "m/s^2, the same parabola's; the second prediction keeps it where significant.")
       .def_readonly("acceleration_std", &Track::acceleration_std, "m/s^2, its std per coordinate (inf until four centres).")

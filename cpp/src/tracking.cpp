@@ -231,10 +231,13 @@ void Tracker::relabel(Track& t, const Memory& memory) const {
   // The centres kept go back one moving_window: a longer prediction window is that one.
   const LineFit recent = fit_line(memory.centres, newest - params_.prediction_window - 1e-9);
   t.predicted_velocity = std::isfinite(recent.speed_std) ? recent.velocity : window.velocity;
-  const ParabolaFit parabola = fit_parabola(memory.centres);
-  t.current_velocity = parabola.velocity;
-  t.acceleration = parabola.acceleration;
-  t.acceleration_std = parabola.acceleration_std;
+  // Only the second prediction reads the parabola: without it, no fit each update.
+  if (params_.hypothesis_time > 0.0) {
+    const ParabolaFit parabola = fit_parabola(memory.centres);
+    t.current_velocity = parabola.velocity;
+    t.acceleration = parabola.acceleration;
+    t.acceleration_std = parabola.acceleration_std;
+  }
   if (t.status == TrackStatus::Tentative) {
     t.moving = false;
     return;
@@ -423,7 +426,6 @@ std::vector<Disc> Tracker::moving_discs() const {
       const double v = t.current_velocity.norm();
       bending.velocity = v > params_.max_speed ? t.current_velocity * (params_.max_speed / v) : t.current_velocity;
       bending.acceleration = t.acceleration * (std::min(a, params_.max_acceleration) / a);
-
       bending.accel_time = params_.hypothesis_time;
       discs.push_back(bending);
     }

@@ -2348,7 +2348,7 @@ class Track:
     @property
     def current_velocity(self) -> tuple:
         """
-        m/s, a parabola's through the window's centres, at the last one.
+        m/s, a parabola's through the window's centres, at the last one (fitted while hypothesis_time > 0).
         """
     @property
     def hits(self) -> int:

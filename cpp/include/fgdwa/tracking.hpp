@@ -163,7 +163,8 @@ struct Track {
   Vec2 predicted_velocity = Vec2::Zero();
   // A parabola through the window's centres: the velocity at the last one
   // (m/s), the acceleration (m/s^2) and its std per coordinate (m/s^2;
-  // infinite until four centres). The second prediction uses them.
+  // infinite until four centres). The second prediction uses them; fitted
+  // only while hypothesis_time > 0 (else 0, 0 and inf).
   Vec2 current_velocity = Vec2::Zero();
   Vec2 acceleration = Vec2::Zero();
   double acceleration_std = std::numeric_limits<double>::infinity();
