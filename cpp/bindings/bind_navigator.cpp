@@ -49,7 +49,8 @@ void init_navigator(py::module_& m) {
   trigger_enum
       .value("None_", RecoveryTrigger::None)
       .value("NoProgress", RecoveryTrigger::NoProgress)
-      .value("AllRejected", RecoveryTrigger::AllRejected);
+      .value("AllRejected", RecoveryTrigger::AllRejected)
+      .value("Start", RecoveryTrigger::Start);
   refuse_unnamed_values(trigger_enum);
 
   bind_params<NavigatorParams>(m, "NavigatorParams",

@@ -123,12 +123,18 @@ const CycleRecord& Navigator::step(const RobotState& odometry, const Scan* scan,
 
   // Recovery, then the route the planner drives on.
   tic = Clock::now();
+  if (frame && !scanned_) {
+    scanned_ = true;
+    if (params_.track_moving) recovery_.watch(params_.start_watch_time);
+  }
   const RecoveryStep recovery = recovery_.step(state, goal_, controller_.world(), seen.movers, rejected_all);
   if (recovery.give_up_ahead) route_.give_up_ahead(position, controller_.sensed_points(), world_.map());
   if (recovery.replan) route_.request_replan();
   bool drive = recovery.drive;
   Twist command = recovery.command;
-  if (!route_.update(position, drive && controller_.planner().needs_path(), world_, seen.movers)) {
+  // The start's watch plans the route already: the robot drives on it once the watch ends.
+  const bool watching = recovery_.trigger() == RecoveryTrigger::Start;
+  if (!route_.update(position, (drive || watching) && controller_.planner().needs_path(), world_, seen.movers)) {
     recovery_.fail(FailureReason::NoGlobalPath);
     command = braking_command(limits_, state.twist, dt_);
     drive = false;

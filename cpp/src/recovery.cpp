@@ -5,6 +5,7 @@
 
 #include "fgdwa/planner.hpp"
 #include "fgdwa/window.hpp"
+#include "validation.hpp"
 
 namespace fgdwa {
 
@@ -35,6 +36,7 @@ const char* to_string(RecoveryTrigger trigger) {
     case RecoveryTrigger::None: return "None";
     case RecoveryTrigger::NoProgress: return "NoProgress";
     case RecoveryTrigger::AllRejected: return "AllRejected";
+    case RecoveryTrigger::Start: return "Start";
   }
   return "?";
 }
@@ -67,6 +69,15 @@ void Recovery::reset() {
   trigger_ = RecoveryTrigger::None;
   recoveries_ = 0;
   rejected_cycles_ = 0;
+}
+
+void Recovery::watch(double duration) {
+  detail::require_non_negative("watch duration", duration);
+  const int cycles = cycles_of(duration, dt_);
+  if (cycles < 1 || mode_ != NavigatorMode::Following) return;
+  mode_ = NavigatorMode::Waiting;
+  trigger_ = RecoveryTrigger::Start;
+  wait_cycles_left_ = cycles;
 }
 
 void Recovery::fail(FailureReason reason) {

@@ -2745,10 +2745,13 @@ class RecoveryTrigger:
       NoProgress
     
       AllRejected
+    
+      Start
     """
     AllRejected: typing.ClassVar[RecoveryTrigger]
     NoProgress: typing.ClassVar[RecoveryTrigger]
     None_: typing.ClassVar[RecoveryTrigger]
+    Start: typing.ClassVar[RecoveryTrigger]
     __members__: typing.ClassVar[dict[str, RecoveryTrigger]]
     @typing.overload
     def __eq__(self, other: RecoveryTrigger) -> bool:
@@ -2809,6 +2812,7 @@ class NavigatorParams:
       occupancy: the map built from scans (its range_std is at least the lidar's noise_std)
       scan_match: each scan aligned to the map: the correction from the odometry's frame to the map's
       track_moving: segment and track moving obstacles in the scans (false: every hit is static where it is, the ablation)
+      start_watch_time (s): with track_moving, the robot stands this long from its first scan, while the tracker labels what moves, unless a labelled mover comes at it
       mover_margin (m): added to a tracked mover's radius: room for a mover to change its mind
       route_around_movers: the global path keeps off the floor each mover sweeps over mover_route_horizon (false: movers reach only the local planner)
       mover_route_horizon (s): how far ahead a mover's sweep is closed to the global planner
@@ -2843,6 +2847,7 @@ class NavigatorParams:
     sensed_close_radius: typing.Any
     stall_distance: typing.Any
     stall_time: typing.Any
+    start_watch_time: typing.Any
     track_moving: typing.Any
     tracker: typing.Any
     unknown_cost: typing.Any

@@ -117,7 +117,9 @@ TEST(Navigator, ReplansWhenTheScanShowsThePathBlocked) {
   // A wall across the room, open at the top, that the map built from scans lacks at first.
   const OccupancyGrid truth = room(30, 60, {{0, 30, 22, 1}});
   LidarParams lidar;
-  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), truth, MapMode::Scan, lidar);
+  NavigatorParams params;
+  params.start_watch_time = 0.0;  // plans at the first scan
+  Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), truth, MapMode::Scan, lidar, nullptr, params);
   nav.set_goal(Vec2(5.5, 1.0));
   // A short-sighted first scan sees nothing: the first path is straight (unknown is free).
   const LaserScanner blind(LidarParams{lidar.fov, lidar.beams, 0.5, 0.0}, std::make_shared<DistanceField>(truth));
@@ -147,6 +149,41 @@ TEST(Navigator, ReplansWhenTheScanShowsThePathBlocked) {
     }
   }
   EXPECT_EQ(replanned_at, 3);
+}
+
+TEST(Navigator, StandsWatchingFromItsFirstScanThenDrives) {
+  const OccupancyGrid truth = room(30, 60);
+  const LidarParams lidar;
+  const LaserScanner scanner(lidar, std::make_shared<DistanceField>(truth));
+  std::mt19937_64 rng(0);
+  Scan scan;
+  RobotState moving = at(1.0, 1.5);
+  moving.twist = Twist{0.4, 0.0};  // braked to a stop, within the limits
+  for (const bool track : {true, false}) {
+    NavigatorParams params;
+    params.track_moving = track;
+    params.start_watch_time = 0.45;  // 3 cycles of 0.15 s
+    Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), truth, MapMode::Scan, lidar, nullptr, params);
+    nav.set_goal(Vec2(5.5, 1.5));
+    // Steps without a scan do not start the watch.
+    EXPECT_TRUE(nav.step(moving, nullptr, 0.0).planned);
+    int watched = 0;
+    double t = 0.15;
+    for (int i = 0; i < 6; ++i, t += 0.15) {
+      scanner.scan(moving.pose, {}, 0.0, rng, scan);
+      const CycleRecord& r = nav.step(moving, &scan, t);
+      if (r.mode != NavigatorMode::Waiting) break;
+      ++watched;
+      EXPECT_EQ(r.trigger, RecoveryTrigger::Start);
+      EXPECT_FALSE(r.planned);
+      EXPECT_LT(r.command.v, moving.twist.v);
+      EXPECT_GE(r.command.v, 0.0);
+    }
+    EXPECT_EQ(watched, track ? 3 : 0) << "track_moving " << track;
+    EXPECT_TRUE(nav.record().planned);
+    EXPECT_EQ(nav.record().trigger, RecoveryTrigger::None);
+    EXPECT_GT(nav.record().command.v, 0.0);
+  }
 }
 
 TEST(Navigator, SomethingTheScansFindOnTheGoalIsDrivenUpToNotRefused) {

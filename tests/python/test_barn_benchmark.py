@@ -129,10 +129,13 @@ def test_noise_dropout_and_latency_reach_the_runs(barn, barn_file, tmp_path):
     from fgdwa.cli import main
 
     assert BarnSetup().lidar().noise_std == 0.03 and BarnSetup().lidar().dropout == 0.01
-    setup = BarnSetup(noise_std=0.0, dropout=0.0, latency=2)
+    # The robot drives at its first scan: no watch for movers before it.
+    at_once = (("navigator/start_watch_time", 0.0),)
+    setup = BarnSetup(noise_std=0.0, dropout=0.0, latency=2, settings=at_once)
     assert setup.lidar().noise_std == 0.0 and setup.lidar().dropout == 0.0
     run = run_barn_task(barn_tasks(barn, [0], ["fgdwa"], "known", setup=setup)[0])
-    prompt = run_barn_task(barn_tasks(barn, [0], ["fgdwa"], "known", setup=BarnSetup(noise_std=0.0, dropout=0.0))[0])
+    prompt = run_barn_task(barn_tasks(barn, [0], ["fgdwa"], "known",
+                                      setup=BarnSetup(noise_std=0.0, dropout=0.0, settings=at_once))[0])
     # Two cycles pass before the first command reaches the wheels.
     np.testing.assert_array_equal(run.poses[:3], np.repeat(run.poses[:1], 3, axis=0))
     assert not np.array_equal(prompt.poses[1], prompt.poses[0])
@@ -199,7 +202,9 @@ def test_navigator_replans_when_the_scan_shows_the_path_blocked():
     navigator = _navigator(truth, replan_period=0.15)
     state = fgdwa.RobotState((0.5, 1.0, 0.0), (0.0, 0.0))
     first = navigator.step(state, scanner.scan((0.5, 1.0, 0.0), [], 0.0), 0.0)
-    assert first.path_version == 1 and first.mode == fgdwa.NavigatorMode.Replanning
+    # It stands watching what moves at its first scan, on the route it planned already.
+    assert first.path_version == 1 and first.mode == fgdwa.NavigatorMode.Waiting
+    assert first.trigger == fgdwa.RecoveryTrigger.Start and not first.planned
     # The first scan already shows the wall: the path goes over its top end.
     assert np.max(first.path_points[:, 1]) > 2.2
     assert first.new_cells > 0 and navigator.map.cells.sum() > 0
@@ -210,7 +215,7 @@ def test_navigator_replans_when_the_scan_shows_the_path_blocked():
 def test_navigator_records_the_cycle():
     truth = _wall_world()
     scanner = fgdwa.LaserScanner(fgdwa.LidarParams(), fgdwa.DistanceField(truth))
-    navigator = _navigator(truth, record_top_k=3)
+    navigator = _navigator(truth, record_top_k=3, start_watch_time=0.0)
     record = navigator.step(fgdwa.RobotState((0.5, 1.0, 0.0), (0.0, 0.0)), scanner.scan((0.5, 1.0, 0.0), [], 0.0), 0.0)
     assert record.planned and record.chosen >= 0
     assert len(record.best) == 3 and record.best[0].sample == record.chosen

@@ -73,11 +73,15 @@ def test_fgdwa_passes_unknown_obstacles_and_raises_beta_near_them():
     assert result.summary.outcome == "success"
     assert result.summary.min_clearance > 0.0
     assert len(result.trace.beta) == result.summary.steps
-    crowded = result.trace.density > 0.6  # an unknown block fills part of the detect window
+    # The cycles the planner drove (the first stand watching for movers: no weights).
+    planned = ~np.isnan(result.trace.beta)
+    assert 0 < np.count_nonzero(~planned) <= 3 and not np.any(~planned[3:])
+    beta, density = result.trace.beta[planned], result.trace.density[planned]
+    crowded = density > 0.6  # an unknown block fills part of the detect window
     assert crowded.any() and (~crowded).any()
-    assert result.trace.beta[crowded].mean() > result.trace.beta[~crowded].mean() + 0.1
-    assert np.corrcoef(result.trace.beta, result.trace.density)[0, 1] > 0.8
-    assert np.all((result.trace.delta >= 0.0) & (result.trace.delta <= 5.0))
+    assert beta[crowded].mean() > beta[~crowded].mean() + 0.1
+    assert np.corrcoef(beta, density)[0, 1] > 0.8
+    assert np.all((result.trace.delta[planned] >= 0.0) & (result.trace.delta[planned] <= 5.0))
 
 
 def test_fixed_presets_keep_their_weights():

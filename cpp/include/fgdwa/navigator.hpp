@@ -131,6 +131,7 @@ class Navigator {
   Recovery recovery_;
   bool has_goal_ = false;
   double last_time_ = -std::numeric_limits<double>::infinity();  // s, the last step's: time runs forward
+  bool scanned_ = false;  // a scan has come: the start's watch is set
   Vec2 goal_ = Vec2::Zero();
   int controller_path_version_ = 0;  // the route's path version the controller follows
   ScanFrame frame_;

@@ -44,6 +44,9 @@ struct NavigatorParams {
   // (space-time clearance), count in the detect window's density, can make a
   // stalled robot wait, and their hits stay out of the map built from scans.
   bool track_moving = true;
+  // A mover is labelled after a few scans of it: a robot that drove off at
+  // its first scan would meet one near its start as a static obstacle.
+  double start_watch_time = 0.3;
   double mover_margin = 0.0;
   // The local planner alone cannot lead the robot round a crossing mover: it
   // scores arcs of a second or two against a path that runs through the mover.
@@ -81,6 +84,7 @@ struct NavigatorParams {
     v.group("occupancy", &P::occupancy, "the map built from scans (its range_std is at least the lidar's noise_std)");
     v.group("scan_match", &P::scan_match, "each scan aligned to the map: the correction from the odometry's frame to the map's");
     v.flag("track_moving", &P::track_moving, "segment and track moving obstacles in the scans (false: every hit is static where it is, the ablation)");
+    v.real("start_watch_time", &P::start_watch_time, "s", time, "with track_moving, the robot stands this long from its first scan, while the tracker labels what moves, unless a labelled mover comes at it");
     v.real("mover_margin", &P::mover_margin, "m", distance, "added to a tracked mover's radius: room for a mover to change its mind");
     v.flag("route_around_movers", &P::route_around_movers, "the global path keeps off the floor each mover sweeps over mover_route_horizon (false: movers reach only the local planner)");
     v.real("mover_route_horizon", &P::mover_route_horizon, "s", time, "how far ahead a mover's sweep is closed to the global planner");

@@ -41,6 +41,7 @@ enum class RecoveryTrigger : std::uint8_t {
   None,         // no recovery under way
   NoProgress,   // less than stall_distance of progress in stall_time
   AllRejected,  // the planner rejected every sample for stall_time
+  Start,        // the first scans: the robot watches what moves before it drives (start_watch_time)
 };
 
 const char* to_string(NavigatorMode mode);
@@ -69,6 +70,9 @@ class Recovery {
   // planner rejected every sample.
   RecoveryStep step(const RobotState& state, const Vec2& goal, const FieldClearance& seen,
                     const std::vector<Disc>& movers, bool rejected_all);
+  // The robot stands for `duration` (s, >= 0) in Waiting, as it does for a
+  // mover to pass: it hands over to the planner early if a mover comes at it.
+  void watch(double duration);
   // No path to the goal: the robot stops for good.
   void fail(FailureReason reason);
   // A new global path was adopted while following.
