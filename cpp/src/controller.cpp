@@ -56,15 +56,59 @@ struct Controller::LiveScanTest {
         // A hundredth of a cell for a hit on a cell's edge, which rounding
         // may put on either side of it.
         slack(field ? 0.01 * field->grid().resolution() : 0.0),
-        depth(kLiveNoiseStds * c.range_noise_ + slack) {}
+        depth(kLiveNoiseStds * c.range_noise_ + slack),
+        noise(c.range_noise_) {}
 
-  bool counts(const Vec2& hit, const Vec2& direction) const {
-    if (!field || (hit - pose.position()).norm() > reach) return false;
+  // m, how far beyond beam j's hit, along the beam, the map's obstacle
+  // begins (negative: the hit lies inside it, that far past its edge); NaN
+  // if the edge is not within `depth` either way. To a quarter cell.
+  double map_offset(const ScanFrame& frame, std::size_t j) const {
+    const Vec2& hit = frame.beam_hits()[j];
+    const Vec2& direction = frame.directions()[j];
+    const OccupancyGrid& grid = field->grid();
+    const double step = 0.25 * grid.resolution();
+    const bool inside = grid.occupied_at(hit);
+    for (double s = step; s <= depth; s += step)
+      if (inside != grid.occupied_at(hit + (inside ? -s : s) * direction)) return inside ? -(s - 0.5 * step) : s - 0.5 * step;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  // Whether the map lies beyond beam i's stretch of surface by more than the
+  // noise explains, the noise averaged over the hits within
+  // kLiveSurfaceRadius of beam i's (a map a few centimetres off shows in
+  // their mean, not in one hit); `at` gets beam i's point of the surface.
+  // `offsets` holds map_offset() of every beam (NaN where none).
+  bool surface_counts(const ScanFrame& frame, const std::vector<double>& offsets, std::size_t i, Vec2& at) const {
+    if (std::isnan(offsets[i])) return false;
+    const Vec2& hit = frame.beam_hits()[i];
+    double sum = 0.0;
+    int n = 0;
+    const auto take = [&](std::size_t j) {
+      if (!frame.has_hit(j) || (frame.beam_hits()[j] - hit).norm() > kLiveSurfaceRadius) return false;
+      if (!std::isnan(offsets[j])) sum += offsets[j], ++n;
+      return true;
+    };
+    take(i);
+    for (std::size_t j = i; j-- > 0 && take(j);) {}
+    for (std::size_t j = i + 1; j < frame.size() && take(j); ++j) {}
+    if (n < kLiveSurfaceHits) return false;
+    const double mean = sum / n;
+    if (mean <= kLiveNoiseStds * noise / std::sqrt(static_cast<double>(n)) + slack) return false;
+    // The surface along beam i: the map's edge there, less the mean offset.
+    at = hit + (offsets[i] - mean) * frame.directions()[i];
+    return footprint.signed_distance(pose, at) > 0.0;
+  }
+
+  bool in_reach(const Vec2& hit) const { return field && (hit - pose.position()).norm() <= reach; }
+  bool counts(const Vec2& hit, const Vec2& direction) const { return counts(hit, direction, depth); }
+  // `noise_depth` (m): how far along `direction` noise may have moved `hit`.
+  bool counts(const Vec2& hit, const Vec2& direction, double noise_depth) const {
+    if (!in_reach(hit)) return false;
     // The stretch of the beam the noise may have moved the hit along: a
     // correct map has an obstacle square on it, a beam that grazes a corner
     // and a hit noise carried past one included.
-    const Vec2 far = hit + depth * direction;
-    if (field->grid().occupied_at(far) || field->segment_distance(hit - depth * direction, far) <= slack) return false;
+    const Vec2 far = hit + noise_depth * direction;
+    if (field->grid().occupied_at(far) || field->segment_distance(hit - noise_depth * direction, far) <= slack)
+      return false;
     // Nothing stands inside the robot: a hit there is the robot's own.
     return footprint.signed_distance(pose, hit) > 0.0;
   }
@@ -72,7 +116,7 @@ struct Controller::LiveScanTest {
   const DistanceField* field;
   Pose2 pose;
   const Footprint& footprint;
-  double reach, slack, depth;
+  double reach, slack, depth, noise;
 };
 
 const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, const Scan* scan,
@@ -99,6 +143,10 @@ const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, c
     const double tolerance = 0.5 * resolution + 3.0 * range_noise_;
     const LiveScanTest live{*this, state};
     unexplained_.clear();
+    offsets_.assign(frame->size(), std::numeric_limits<double>::quiet_NaN());
+    if (map_)
+      for (std::size_t i = 0; i < frame->size(); ++i)
+        if (frame->has_hit(i) && live.in_reach(frame->beam_hits()[i])) offsets_[i] = live.map_offset(*frame, i);
     for (std::size_t i = 0; i < frame->size(); ++i) {
       if (!frame->has_hit(i)) continue;
       const Vec2& hit = frame->beam_hits()[i];
@@ -108,7 +156,10 @@ const CycleReport& Controller::step(const RobotState& state, const Vec2& goal, c
       };
       // Most hits lie on the map's obstacles: one table look-up settles them.
       if (map_ && (map_->upper_bound(hit) <= tolerance || map_->distance(hit) <= tolerance)) {
-        if (live.counts(hit, frame->directions()[i]) && !on_disc()) live_.push_back(Disc{hit, 0.0, Vec2::Zero(), 0.0});
+        if (!live.in_reach(hit) || on_disc()) continue;
+        Vec2 surface;
+        if (live.counts(hit, frame->directions()[i])) live_.push_back(Disc{hit, 0.0, Vec2::Zero(), 0.0});
+        else if (live.surface_counts(*frame, offsets_, i, surface)) live_.push_back(Disc{surface, 0.0, Vec2::Zero(), 0.0});
         continue;
       }
       if (!on_disc()) unexplained_.push_back(hit);

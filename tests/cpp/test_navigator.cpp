@@ -734,6 +734,49 @@ TEST(Controller, TheLiveScanCountsWhereTheKnownMapIsShifted) {
   EXPECT_GT(state.pose.x, 2.7);  // it did drive up to the wall
 }
 
+// A map 6 cm off (drift a few metres long) lies within the noise of one hit
+// (4 stds of 3 cm): the hits on the wall's stretch around each, averaged,
+// show it, and the planner gets the wall where the scan puts it. A correct
+// map at that resolution gets next to none.
+TEST(Controller, TheAveragedScanCountsAMapAFewCentimetresOff) {
+  const auto wall = [](int col) {  // 3 m x 6 m in 2 cm cells, a wall 0.2 m thick from x = col * 0.02
+    std::vector<std::uint8_t> cells(150 * 300, 0);
+    for (int row = 0; row < 150; ++row)
+      for (int c = col; c < col + 10; ++c) cells[static_cast<std::size_t>(row) * 300 + c] = 1;
+    return OccupancyGrid(150, 300, 0.02, Vec2(0.0, 0.0), cells);
+  };
+  const OccupancyGrid truth = wall(150);  // x in [3.00, 3.20] m
+  LidarParams lidar;
+  lidar.noise_std = 0.03;
+  lidar.dropout = 0.0;
+  const LaserScanner scanner(lidar, std::make_shared<DistanceField>(truth));
+  const RobotState state{Pose2{2.5, 1.5, 0.0}, Twist{0.0, 0.0}};
+  std::mt19937_64 rng(3);
+  Scan scan;
+  for (const int col : {153, 150}) {  // the map 6 cm off, then right
+    Controller controller(RobotLimits{}, Footprint::circle(0.2), gdwa(), std::make_shared<const DistanceField>(wall(col)));
+    controller.set_global_path(GlobalPath({Vec2(1.0, 1.5), Vec2(2.7, 1.5)}));
+    controller.set_range_noise(lidar.noise_std);
+    std::size_t live = 0;
+    std::vector<double> xs;
+    for (int i = 0; i < 10; ++i) {
+      scanner.scan(state.pose, {}, 0.0, rng, scan);
+      live += controller.step(state, Vec2(2.7, 1.5), &scan).live_points;
+      for (const Disc& d : controller.world().discs()) xs.push_back(d.center.x());
+    }
+    if (col == 150) {
+      EXPECT_LE(live, 2u);
+      continue;
+    }
+    ASSERT_GT(live, 500u);
+    std::sort(xs.begin(), xs.end());
+    // Where the wall stands, within the averaged noise; the few single hits counted lie nearer.
+    EXPECT_NEAR(xs[xs.size() / 2], 3.0, 0.01);
+    const auto within = std::count_if(xs.begin(), xs.end(), [](double x) { return std::abs(x - 3.0) <= 0.02; });
+    EXPECT_GE(static_cast<double>(within), 0.9 * static_cast<double>(xs.size()));
+  }
+}
+
 // A scan that agrees with a correct map adds no live point, noise and all:
 // the along-the-beam test leaves a hit to its map's obstacles unless four
 // noise stds along its beam, either way, hold none (a grazed corner included).

@@ -128,10 +128,15 @@ class Controller {
   // This cycle's hits short of the map's obstacles (LiveScanTest), as points
   // (zero-radius discs), then the known discs: what the planner's world holds.
   std::vector<Disc> live_;
+  std::vector<double> offsets_;  // scratch: each beam's offset from the map (LiveScanTest::map_offset)
   struct LiveScanTest;
   // How many range-noise stds short of the map a hit must lie to count:
   // 4 leaves about one false hit in 30 000 beams.
   static constexpr double kLiveNoiseStds = 4.0;
+  // m: the hits around one whose offsets from the map are averaged, and how
+  // many of them an average needs.
+  static constexpr double kLiveSurfaceRadius = 0.1;
+  static constexpr int kLiveSurfaceHits = 5;
   std::vector<int> order_;         // scratch: admissible samples, best first
   ScanFrame frame_;                // a scan given whole, taken apart
 };
