@@ -23,8 +23,7 @@ def test_a_dead_end_missing_from_the_map_is_seen_and_planned_round():
 def test_a_dead_end_missing_from_the_map_is_left_by_a_recovery():
     # A map that never learns (learn_obstacles=False): only a recovery gets out.
     scenario = dead_end_scenario()
-    # The ideal body: with drifting odometry the map's side walls sit a few centimetres off and the
-    # turn out of the pocket may graze one (an open problem of the live scan test, not of recovery).
+    # The ideal body: what is tested is the recovery, not how the live scan holds a drifted map.
     result = run_scenario(scenario, "fgdwa", seed=0, body="ideal", navigator=NavigatorParams(learn_obstacles=False))
     assert result.summary.outcome == "success"
     # It stalled at the back wall, backed out, and followed a new path round the pocket.
