@@ -50,7 +50,8 @@ void init_navigator(py::module_& m) {
       .value("None_", RecoveryTrigger::None)
       .value("NoProgress", RecoveryTrigger::NoProgress)
       .value("AllRejected", RecoveryTrigger::AllRejected)
-      .value("Start", RecoveryTrigger::Start);
+      .value("Start", RecoveryTrigger::Start)
+      .value("Wandering", RecoveryTrigger::Wandering);
   refuse_unnamed_values(trigger_enum);
 
   bind_params<NavigatorParams>(m, "NavigatorParams",

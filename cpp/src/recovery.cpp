@@ -37,6 +37,7 @@ const char* to_string(RecoveryTrigger trigger) {
     case RecoveryTrigger::NoProgress: return "NoProgress";
     case RecoveryTrigger::AllRejected: return "AllRejected";
     case RecoveryTrigger::Start: return "Start";
+    case RecoveryTrigger::Wandering: return "Wandering";
   }
   return "?";
 }
@@ -60,10 +61,12 @@ Recovery::Recovery(const RobotLimits& limits, const Footprint& footprint, const 
       dt_(dt),
       safety_margin_(safety_margin),
       goal_tolerance_(goal_tolerance),
-      stall_cycles_(cycles_of(params.stall_time, dt)) {}
+      stall_cycles_(cycles_of(params.stall_time, dt)),
+      wander_cycles_(cycles_of(params.wander_time, dt)) {}
 
 void Recovery::reset() {
   recent_.clear();
+  wander_origin_.reset();
   mode_ = NavigatorMode::Following;
   failure_ = FailureReason::None;
   trigger_ = RecoveryTrigger::None;
@@ -164,13 +167,27 @@ bool Recovery::stalled(const RobotState& state, bool rejected_all) {
   if (rejected_cycles_ >= stall_cycles_) {
     rejected_cycles_ = 0;
     recent_.clear();
+    wander_origin_.reset();
     trigger_ = RecoveryTrigger::AllRejected;
     return true;
   }
-  remember_position(state.pose.position());
+  const Vec2 position = state.pose.position();
+  remember_position(position);
+  if (wander_cycles_ > 0) {
+    if (!wander_origin_ || (position - *wander_origin_).norm() > params_.wander_radius) {
+      wander_origin_ = position;
+      wandered_ = 0;
+    } else if (++wandered_ >= wander_cycles_) {
+      wander_origin_.reset();
+      recent_.clear();
+      trigger_ = RecoveryTrigger::Wandering;
+      return true;
+    }
+  }
   if (static_cast<int>(recent_.size()) < stall_cycles_ + 1) return false;
-  if ((state.pose.position() - recent_.front()).norm() >= params_.stall_distance) return false;
+  if ((position - recent_.front()).norm() >= params_.stall_distance) return false;
   recent_.clear();
+  wander_origin_.reset();
   trigger_ = RecoveryTrigger::NoProgress;
   return true;
 }

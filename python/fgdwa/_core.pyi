@@ -2747,11 +2747,14 @@ class RecoveryTrigger:
       AllRejected
     
       Start
+    
+      Wandering
     """
     AllRejected: typing.ClassVar[RecoveryTrigger]
     NoProgress: typing.ClassVar[RecoveryTrigger]
     None_: typing.ClassVar[RecoveryTrigger]
     Start: typing.ClassVar[RecoveryTrigger]
+    Wandering: typing.ClassVar[RecoveryTrigger]
     __members__: typing.ClassVar[dict[str, RecoveryTrigger]]
     @typing.overload
     def __eq__(self, other: RecoveryTrigger) -> bool:
@@ -2808,6 +2811,8 @@ class NavigatorParams:
       wait_radius (m): a known moving obstacle this near at a stall makes the robot wait
       max_recoveries: recoveries in a row without progress before Failed
       progress_reset (m): distance from where the last recovery began that counts as progress
+      wander_time (s): a robot following the path that stays within wander_radius of one point this long has stalled too (0: never)
+      wander_radius (m): how far from where it was the robot must get within wander_time
       record_top_k: best-scored rollouts kept in each CycleRecord
       occupancy: the map built from scans (its range_std is at least the lidar's noise_std)
       scan_match: each scan aligned to the map: the correction from the odometry's frame to the map's
@@ -2853,6 +2858,8 @@ class NavigatorParams:
     unknown_cost: typing.Any
     wait_radius: typing.Any
     wait_time: typing.Any
+    wander_radius: typing.Any
+    wander_time: typing.Any
     @staticmethod
     def schema() -> list:
         """

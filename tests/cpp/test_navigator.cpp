@@ -216,6 +216,30 @@ TEST(Navigator, SomethingTheScansFindOnTheGoalIsDrivenUpToNotRefused) {
   EXPECT_EQ(walled.step(at(1.0, 1.5), nullptr, 0.0).failure, FailureReason::NoGlobalPath);
 }
 
+// Moving to and fro without getting anywhere is a stall too: a robot going
+// round a circle of 0.2 m (never 3 s without 0.1 m of displacement) stays
+// within 0.5 m of one point, and after wander_time a recovery begins.
+TEST(Navigator, WanderingInPlaceIsAStall) {
+  const OccupancyGrid map = room(30, 60);
+  for (const double wander_time : {10.0, 0.0}) {
+    NavigatorParams params;
+    params.wander_time = wander_time;
+    Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+    nav.set_goal(Vec2(5.5, 1.5));
+    int stalled_at = -1;
+    for (int i = 0; i < 100 && stalled_at < 0; ++i) {
+      const double a = 2.0 * 3.141592653589793 * (0.15 * i) / 4.0;  // once round every 4 s
+      const CycleRecord& r = nav.step(at(2.0 + 0.2 * std::cos(a), 1.5 + 0.2 * std::sin(a)), nullptr, 0.15 * i);
+      if (r.trigger != RecoveryTrigger::None) {
+        EXPECT_EQ(r.trigger, RecoveryTrigger::Wandering);
+        stalled_at = i;
+      }
+    }
+    // 10 s of 0.15 s cycles, counted from the first.
+    EXPECT_EQ(stalled_at, wander_time > 0.0 ? 67 : -1) << "wander_time " << wander_time;
+  }
+}
+
 TEST(Navigator, StallBacksUpWithinTheLimitsThenReplansAroundTheGivenUpPath) {
   const OccupancyGrid map = room(30, 60);
   NavigatorParams params;

@@ -34,6 +34,10 @@ struct NavigatorParams {
   double wait_radius = 1.5;
   int max_recoveries = 6;
   double progress_reset = 1.0;
+  // A robot can keep moving and get nowhere (turning to and fro among posts):
+  // as Nav2's progress checker, so much movement in so much time.
+  double wander_time = 10.0;
+  double wander_radius = 0.5;
   int record_top_k = 5;
   OccupancyParams occupancy;
   // Odometry drifts; each scan is aligned to the map before it goes in, and
@@ -80,6 +84,8 @@ struct NavigatorParams {
     v.real("wait_radius", &P::wait_radius, "m", distance, "a known moving obstacle this near at a stall makes the robot wait");
     v.integer("max_recoveries", &P::max_recoveries, "", Bounds::closed(0, limits::kMaxEventCount), "recoveries in a row without progress before Failed");
     v.real("progress_reset", &P::progress_reset, "m", distance, "distance from where the last recovery began that counts as progress");
+    v.real("wander_time", &P::wander_time, "s", time, "a robot following the path that stays within wander_radius of one point this long has stalled too (0: never)");
+    v.real("wander_radius", &P::wander_radius, "m", distance, "how far from where it was the robot must get within wander_time");
     v.integer("record_top_k", &P::record_top_k, "", Bounds::closed(0, limits::kMaxWindowSamples), "best-scored rollouts kept in each CycleRecord");
     v.group("occupancy", &P::occupancy, "the map built from scans (its range_std is at least the lidar's noise_std)");
     v.group("scan_match", &P::scan_match, "each scan aligned to the map: the correction from the odometry's frame to the map's");

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "fgdwa/clearance.hpp"
@@ -42,6 +43,7 @@ enum class RecoveryTrigger : std::uint8_t {
   NoProgress,   // less than stall_distance of progress in stall_time
   AllRejected,  // the planner rejected every sample for stall_time
   Start,        // the first scans: the robot watches what moves before it drives (start_watch_time)
+  Wandering,    // moving, but within wander_radius of one point for wander_time
 };
 
 const char* to_string(NavigatorMode mode);
@@ -119,6 +121,9 @@ class Recovery {
   int recoveries_ = 0;
   int rejected_cycles_ = 0;  // cycles in a row with every sample rejected
   std::deque<Vec2> recent_;  // positions of the last stall_cycles_ + 1 cycles
+  int wander_cycles_;            // wander_time in cycles
+  std::optional<Vec2> wander_origin_;  // where the robot last got wander_radius away from
+  int wandered_ = 0;             // cycles following since then
   Vec2 origin_ = Vec2::Zero();   // where the last recovery began
   double backed_up_ = 0.0;       // m driven back in this recovery
   bool backup_braking_ = false;  // the back-up is stopping
