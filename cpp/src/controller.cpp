@@ -95,7 +95,7 @@ struct Controller::LiveScanTest {
     if (mean <= kLiveNoiseStds * noise / std::sqrt(static_cast<double>(n)) + slack) return false;
     // The surface along beam i: the map's edge there, less the mean offset.
     at = hit + (offsets[i] - mean) * frame.directions()[i];
-    return footprint.signed_distance(pose, at) > 0.0;
+    return outside_robot(at);
   }
 
   bool in_reach(const Vec2& hit) const { return field && (hit - pose.position()).norm() <= reach; }
@@ -109,9 +109,10 @@ struct Controller::LiveScanTest {
     const Vec2 far = hit + noise_depth * direction;
     if (field->grid().occupied_at(far) || field->segment_distance(hit - noise_depth * direction, far) <= slack)
       return false;
-    // Nothing stands inside the robot: a hit there is the robot's own.
-    return footprint.signed_distance(pose, hit) > 0.0;
+    return outside_robot(hit);
   }
+  // Nothing stands inside the robot: a hit there is the robot's own.
+  bool outside_robot(const Vec2& point) const { return footprint.signed_distance(pose, point) > 0.0; }
 
   const DistanceField* field;
   Pose2 pose;

@@ -75,7 +75,7 @@ void Recovery::reset() {
 }
 
 void Recovery::watch(double duration) {
-  detail::require_non_negative("watch duration", duration);
+  detail::require_in_range("watch duration", duration, 0.0, limits::kMaxHorizon);
   const int cycles = cycles_of(duration, dt_);
   if (cycles < 1 || mode_ != NavigatorMode::Following) return;
   mode_ = NavigatorMode::Waiting;
@@ -164,12 +164,16 @@ bool Recovery::stalled(const RobotState& state, bool rejected_all) {
   if (stall_cycles_ < 1) return false;
   // Every sample rejected cycle after cycle is a stall too, wherever the robot drifts.
   rejected_cycles_ = rejected_all ? rejected_cycles_ + 1 : 0;
-  if (rejected_cycles_ >= stall_cycles_) {
-    rejected_cycles_ = 0;
+  // A stall starts its checks over.
+  const auto stall = [&](RecoveryTrigger trigger) {
     recent_.clear();
     wander_origin_.reset();
-    trigger_ = RecoveryTrigger::AllRejected;
+    trigger_ = trigger;
     return true;
+  };
+  if (rejected_cycles_ >= stall_cycles_) {
+    rejected_cycles_ = 0;
+    return stall(RecoveryTrigger::AllRejected);
   }
   const Vec2 position = state.pose.position();
   remember_position(position);
@@ -178,18 +182,12 @@ bool Recovery::stalled(const RobotState& state, bool rejected_all) {
       wander_origin_ = position;
       wandered_ = 0;
     } else if (++wandered_ >= wander_cycles_) {
-      wander_origin_.reset();
-      recent_.clear();
-      trigger_ = RecoveryTrigger::Wandering;
-      return true;
+      return stall(RecoveryTrigger::Wandering);
     }
   }
   if (static_cast<int>(recent_.size()) < stall_cycles_ + 1) return false;
   if ((position - recent_.front()).norm() >= params_.stall_distance) return false;
-  recent_.clear();
-  wander_origin_.reset();
-  trigger_ = RecoveryTrigger::NoProgress;
-  return true;
+  return stall(RecoveryTrigger::NoProgress);
 }
 
 void Recovery::remember_position(const Vec2& position) {

@@ -186,6 +186,17 @@ TEST(Navigator, StandsWatchingFromItsFirstScanThenDrives) {
   }
 }
 
+TEST(Recovery, AWatchOfNoTimeOrOfABadOneIsRefusedOrNone) {
+  Recovery recovery(RobotLimits{}, Footprint::circle(0.2), NavigatorParams{}, 0.1, 0.02, 0.1);
+  for (const double bad : {-0.1, std::nan(""), std::numeric_limits<double>::infinity(), 1e300})
+    EXPECT_THROW(recovery.watch(bad), Error) << bad;
+  recovery.watch(0.04);  // under half a cycle: no watch
+  EXPECT_EQ(recovery.mode(), NavigatorMode::Following);
+  recovery.watch(0.3);
+  EXPECT_EQ(recovery.mode(), NavigatorMode::Waiting);
+  EXPECT_EQ(recovery.trigger(), RecoveryTrigger::Start);
+}
+
 TEST(Navigator, SomethingTheScansFindOnTheGoalIsDrivenUpToNotRefused) {
   // A box standing on the goal (another robot, a person) that only the scans show.
   const OccupancyGrid truth = room(30, 60, {{12, 47, 6, 6}});

@@ -72,7 +72,7 @@ class Recovery {
   // planner rejected every sample.
   RecoveryStep step(const RobotState& state, const Vec2& goal, const FieldClearance& seen,
                     const std::vector<Disc>& movers, bool rejected_all);
-  // The robot stands for `duration` (s, >= 0) in Waiting, as it does for a
+  // The robot stands for `duration` (s, in [0, 3600]) in Waiting, as it does for a
   // mover to pass: it hands over to the planner early if a mover comes at it.
   void watch(double duration);
   // No path to the goal: the robot stops for good.
@@ -121,7 +121,7 @@ class Recovery {
   int recoveries_ = 0;
   int rejected_cycles_ = 0;  // cycles in a row with every sample rejected
   std::deque<Vec2> recent_;  // positions of the last stall_cycles_ + 1 cycles
-  int wander_cycles_;            // wander_time in cycles
+  int wander_cycles_ = 0;        // wander_time in cycles
   std::optional<Vec2> wander_origin_;  // where the robot last got wander_radius away from
   int wandered_ = 0;             // cycles following since then
   Vec2 origin_ = Vec2::Zero();   // where the last recovery began
