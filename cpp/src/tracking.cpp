@@ -44,6 +44,9 @@ constexpr double kOccludedStdFactor = 4.0;
 // window, so one stray reading does not do it.
 constexpr double kDisplacedShare = 0.2;
 constexpr std::size_t kDisplacedUpdates = 3;
+// Std devs by which the prediction window's slope must depart from the moving
+// window's before the prediction takes it.
+constexpr double kChangeSigmas = 1.0;
 
 // Whether `scan` saw through `p`: its beam toward p and both neighbours
 // reached more than `margin` past it (or had no hit within max range, which
@@ -70,6 +73,31 @@ bool share_seen_through(const Scan& scan, const std::vector<Vec2>& points, doubl
   std::size_t through = 0;
   for (const Vec2& p : points) through += seen_through(scan, p, margin);
   return through >= 2 && static_cast<double>(through) >= kDisplacedShare * static_cast<double>(points.size());
+}
+
+// The centre of a circle of `radius` through `points`, by Gauss-Newton from
+// `start`: a partly hidden disc's own fit takes the arc it sees for the whole
+// object, its radius too small and its centre pulled toward the hits. Damped,
+// so that an arc too short to fix the centre along it leaves it near `start`.
+Vec2 fixed_radius_centre(const std::vector<Vec2>& points, double radius, Vec2 centre) {
+  const double damping = 1e-3 * static_cast<double>(points.size());
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    Eigen::Matrix2d normal = damping * Eigen::Matrix2d::Identity();
+    Vec2 rhs = Vec2::Zero();
+    for (const Vec2& p : points) {
+      const Vec2 d = p - centre;
+      const double reach = d.norm();
+      if (!(reach > 1e-9)) continue;
+      const Vec2 u = d / reach;
+      normal += u * u.transpose();
+      rhs += u * (reach - radius);
+    }
+    const Vec2 step = normal.ldlt().solve(rhs);
+    if (!step.allFinite()) break;
+    centre += step;
+    if (step.cwiseAbs().maxCoeff() < 1e-5) break;
+  }
+  return centre;
 }
 
 }  // namespace
@@ -139,7 +167,8 @@ void Tracker::correct(Track& t, const Cluster& cluster, double time) {
   t.covariance = I_KH * t.covariance * I_KH.transpose() + r2 * K * K.transpose();
   const double speed = t.velocity.norm();
   if (speed > params_.max_speed) t.velocity *= params_.max_speed / speed;
-  t.radius += kRadiusSmoothing * (cluster.radius - t.radius);
+  // A partly hidden object's arc says little of its size.
+  if (!cluster.occluded) t.radius += kRadiusSmoothing * (cluster.radius - t.radius);
   ++t.hits;
   t.last_seen = time;
   t.status = t.hits >= params_.confirm_hits ? TrackStatus::Confirmed : TrackStatus::Tentative;
@@ -230,7 +259,14 @@ void Tracker::relabel(Track& t, const Memory& memory) const {
   t.window_speed_std = window.speed_std;
   // The centres kept go back one moving_window: a longer prediction window is that one.
   const LineFit recent = fit_line(memory.centres, newest - params_.prediction_window - 1e-9);
-  t.predicted_velocity = std::isfinite(recent.speed_std) ? recent.velocity : window.velocity;
+  // The recent centres' slope where it departs from the window's by more than
+  // their noise (a turn, a reversal, a change of pace); the whole window's,
+  // steadier, where it does not (a mover going straight, a static object the
+  // noise once labelled moving).
+  const bool changed = std::isfinite(recent.speed_std) &&
+                       (recent.velocity - window.velocity).norm() >
+                           kChangeSigmas * std::hypot(recent.speed_std, window.speed_std);
+  t.predicted_velocity = changed ? recent.velocity : window.velocity;
   // Only the second prediction reads the parabola: without it, no fit each update.
   if (params_.hypothesis_time > 0.0) {
     const ParabolaFit parabola = fit_parabola(memory.centres);
@@ -278,11 +314,46 @@ bool Tracker::displaces_free_space(const Memory& memory, const Cluster& cluster,
   return before && share_seen_through(scan, *before, params_.free_margin);
 }
 
-void Tracker::update(const std::vector<Cluster>& clusters, double time, const Scan* scan) {
+// An occluded cluster that a known track's disc may explain is refitted with
+// that track's radius (the larger of the two), the centre kept behind the
+// hits and within the radius of the cluster's own: what the gate, the filter
+// and the velocity fits then read is the object's centre, not the visible
+// arc's.
+const std::vector<Cluster>& Tracker::refit_occluded(const std::vector<Cluster>& clusters, const Scan* scan) {
+  if (!scan) return clusters;
+  const Vec2 origin = scan->pose.position();
+  bool any = false;
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    const Cluster& cluster = clusters[c];
+    if (!cluster.occluded) continue;
+    const Track* owner = nullptr;
+    double nearest = params_.gate;
+    for (const Track& t : tracks_) {
+      if (t.status == TrackStatus::Tentative) continue;
+      const double d = (t.position - cluster.center).norm();
+      if (d <= nearest) nearest = d, owner = &t;
+    }
+    if (!owner || owner->radius <= cluster.radius) continue;
+    const Vec2 centre = fixed_radius_centre(cluster.points, owner->radius, cluster.center);
+    Vec2 mean = Vec2::Zero();
+    for (const Vec2& p : cluster.points) mean += p;
+    mean /= static_cast<double>(cluster.points.size());
+    if (!((centre - cluster.center).norm() <= owner->radius) ||
+        (centre - origin).norm() <= (mean - origin).norm())
+      continue;
+    if (!any) refitted_ = clusters;
+    any = true;
+    refitted_[c].center = centre;
+    refitted_[c].radius = owner->radius;
+  }
+  return any ? refitted_ : clusters;
+}
+
+void Tracker::update(const std::vector<Cluster>& given, double time, const Scan* scan) {
   detail::require_finite("tracker time", time);
   if (time < time_)
     throw Error(detail::describe("tracker time", time, "must not be before the last update's " + std::to_string(time_)));
-  for (std::size_t i = 0; i < clusters.size(); ++i) clusters[i].validate("cluster[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < given.size(); ++i) given[i].validate("cluster[" + std::to_string(i) + "]");
   if (scan) {
     detail::require_finite("scan pose x", scan->pose.x);
     detail::require_finite("scan pose y", scan->pose.y);
@@ -292,6 +363,7 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time, const Sc
   }
   predict(std::isnan(time_) ? 0.0 : time - time_);
   time_ = time;
+  const std::vector<Cluster>& clusters = refit_occluded(given, scan);
   // Occluded centres weigh less in the moving test: a partly hidden object's
   // centre shifts as it is uncovered.
   if (scan) has_scans_ = true;
@@ -387,6 +459,10 @@ void Tracker::update(const std::vector<Cluster>& clusters, double time, const Sc
     Track& t = tracks_[i];
     const double unseen = time - t.last_seen;
     if (unseen > 2.0 * params_.lost_time) continue;
+    // A track this scan missed, whose predicted centre it saw through, is not
+    // where it was predicted: kept, it would stand as a phantom for up to
+    // 2 lost_time (the object, if near, has started a track of its own).
+    if (unseen > 0.0 && scan && seen_through(*scan, t.position, params_.free_margin)) continue;
     if (unseen > params_.lost_time) t.status = TrackStatus::Lost;
     if (kept != i) {
       tracks_[kept] = std::move(t);

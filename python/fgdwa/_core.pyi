@@ -2254,7 +2254,7 @@ class TrackerParams:
       moving_speed (m/s): a confirmed track whose window speed, less moving_sigmas std, exceeds this is moving
       moving_sigmas: std devs taken off the window speed before comparing it with moving_speed
       moving_window (s): the window speed is the slope of a line fitted to the centres this far back
-      prediction_window (s): the predicted velocity is the slope of the centres this far back (no farther than moving_window)
+      prediction_window (s): the predicted velocity is the slope of the centres this far back (no farther than moving_window) where it departs from moving_window's by more than 1 std, else moving_window's
       free_margin (m): a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
       max_speed (m/s): an association implying more speed is rejected
       uncertainty_sigmas: std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead

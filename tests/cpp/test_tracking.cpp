@@ -301,7 +301,7 @@ const auto kStill = [](double) { return Pose2{}; };
 
 TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
   const Disc mover{Vec2(3.0, -1.0), 0.3, Vec2(0.1, 0.49)};  // 0.5 m/s
-  double worst = 0.0, worst_filter = 0.0;
+  double worst = 0.0, worst_filter = 0.0, worst_window = 0.0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     Tracker tracker;
     run(tracker, {mover}, 1.0, seed, kStill, [](double, const Tracker&) {});
@@ -314,6 +314,7 @@ TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
     ASSERT_EQ(discs.size(), 1u);
     EXPECT_GT(discs[0].radius, t.radius);  // grown by the position's uncertainty
     EXPECT_EQ(discs[0].velocity, t.predicted_velocity);
+    worst_window = std::max(worst_window, (t.window_velocity - mover.velocity).norm());
     // Ahead it spreads as the filter's speed uncertainty does: room for a turn or a reversal.
     EXPECT_DOUBLE_EQ(discs[0].growth, tracker.params().uncertainty_sigmas * t.speed_std());
     EXPECT_GT(discs[0].growth, 0.1);
@@ -321,8 +322,11 @@ TEST(Tracker, FollowsAMoverAtItsSpeedWithinASecond) {
     worst_filter = std::max(worst_filter, (t.velocity - mover.velocity).norm());
   }
   std::cout << "0.5 m/s disc after 1 s at 10 Hz, 3 cm noise, worst over 5 seeds: velocity error " << worst
-            << " m/s (the filter's: " << worst_filter << " m/s)\n";
+            << " m/s (the filter's: " << worst_filter << " m/s, the label's 1 s line's: " << worst_window << " m/s)\n";
+  // Going straight, the last 0.3 s of centres do not depart from the second's
+  // line by more than their noise: the prediction keeps the steadier slope.
   EXPECT_LT(worst, 0.05);
+  EXPECT_LT(worst_window, 0.05);
   EXPECT_LT(worst_filter, 0.15);
 }
 
@@ -346,7 +350,7 @@ TEST(Tracker, AMoverSeenFromTheFirstScanIsLabelledWithinFiveScans) {
 }
 
 // A disc walking back and forth: 0.7 s after it turned, the prediction's
-// 0.6 s window holds only the way back, while the label's 1 s window still
+// 0.3 s window holds only the way back, while the label's 1 s window still
 // straddles the turn (its slope about half the speed).
 TEST(Tracker, ThePredictionFollowsAReversalBeforeTheLabelsWindow) {
   const LaserScanner scanner(noisy_lidar(), nullptr);
@@ -409,7 +413,9 @@ TEST(Tracker, ATurningMoverGetsASecondPredictionThatBends) {
     EXPECT_EQ(discs[1].radius, discs[0].radius);
     const Vec2 truth = on_circle(seen + ahead);
     const double straight = (discs[0].center_at(ahead) - truth).norm(), bent = (discs[1].center_at(ahead) - truth).norm();
-    EXPECT_LT(bent, 0.75 * straight) << "straight " << straight << " m off, bent " << bent << " m off";
+    // The straight line, through only the last 0.3 s of centres, is already
+    // bent part of the way.
+    EXPECT_LT(bent, 0.85 * straight) << "straight " << straight << " m off, bent " << bent << " m off";
   }
   int second = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -645,6 +651,78 @@ TEST(Tracker, TracksAreConfirmedThenLostThenRemoved) {
   EXPECT_TRUE(tracker.tracks().empty());
   tracker.update({cluster_at(at)}, 0.0);  // time may start over after reset
   EXPECT_GT(tracker.tracks()[0].id, second);  // ids are never reused
+}
+
+// A mover that vanishes where the scan sees through its predicted centre is
+// dropped by that scan; one hidden behind something nearer coasts as before.
+TEST(Tracker, AMissedTrackIsDroppedWhereTheScanSeesThroughIt) {
+  const Disc mover{Vec2(3.0, -1.0), 0.4, Vec2(0.0, 1.0)};
+  const Disc screen{Vec2(1.5, 0.0), 0.5};  // hides the mover from about t = 0.6 s
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  for (const bool hidden : {false, true}) {
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+      SCOPED_TRACE(::testing::Message() << (hidden ? "hidden" : "vanished") << ", seed " << seed);
+      Tracker tracker;
+      std::mt19937_64 rng(seed);
+      double t = 0.0;
+      for (; t < 0.45; t += kPeriod) {
+        const Scan scan = scan_of(scanner, Pose2{}, {mover}, t, rng);
+        tracker.update(segment_scan(scan), t, &scan);
+      }
+      ASSERT_EQ(tracker.moving_discs().size(), 1u);
+      const int id = tracker.tracks()[0].id;
+      // Gone (a wrapped animation's jump), or behind the screen.
+      const std::vector<Disc> scene = hidden ? std::vector<Disc>{screen, mover} : std::vector<Disc>{};
+      const Scan scan = scan_of(scanner, Pose2{}, scene, t, rng);
+      tracker.update(segment_scan(scan), t, &scan);
+      const Track* kept = nullptr;
+      for (const Track& track : tracker.tracks())
+        if (track.id == id) kept = &track;
+      if (hidden) {
+        ASSERT_NE(kept, nullptr);
+        EXPECT_LT(kept->last_seen, t);  // coasting
+      } else {
+        EXPECT_EQ(kept, nullptr);
+        EXPECT_TRUE(tracker.moving_discs().empty());
+      }
+    }
+  }
+}
+
+// A mover passing behind something nearer is seen as an arc: fitted on its
+// own, a smaller disc pulled toward the hits. The tracker refits it with the
+// track's radius, so its centre stays within centimetres and its radius holds.
+TEST(Tracker, AnOccludedMoverIsRefittedWithItsTracksRadius) {
+  const Disc mover{Vec2(4.0, -1.5), 0.5, Vec2(0.0, 0.8)};
+  const Disc screen{Vec2(2.0, 0.0), 0.25};  // cuts the mover's near side from about y = -0.6 to 0.6
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  double worst_raw = 0.0, worst_track = 0.0;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    Tracker tracker;
+    std::mt19937_64 rng(seed);
+    double radius_before = 0.0;
+    for (int k = 0; k <= 35; ++k) {
+      const double t = k * kPeriod;
+      const Disc now{mover.center_at(t), mover.radius};
+      const Scan scan = scan_of(scanner, Pose2{}, {screen, mover}, t, rng);
+      const auto clusters = segment_scan(scan);
+      tracker.update(clusters, t, &scan);
+      const Track* track = nearest_track(tracker, now.center);
+      ASSERT_NE(track, nullptr);
+      if (t < 0.9) radius_before = track->radius;
+      const Cluster& seen = nearest_cluster(clusters, now.center);
+      // Half hidden or more: the screen covers the mover's centre line.
+      if (!seen.occluded || std::abs(now.center.y()) > 0.3 || t < 0.9) continue;
+      worst_raw = std::max(worst_raw, (seen.center - now.center).norm());
+      worst_track = std::max(worst_track, (track->position - now.center).norm());
+      EXPECT_NEAR(track->radius, radius_before, 1e-12);
+    }
+  }
+  std::cout << "half-hidden 0.5 m disc: worst centre error " << worst_raw << " m fitted alone, " << worst_track
+            << " m tracked\n";
+  EXPECT_GT(worst_raw, 0.1);
+  EXPECT_LT(worst_track, 0.08);
 }
 
 TEST(Tracker, AssignmentIsGloballyOptimal) {

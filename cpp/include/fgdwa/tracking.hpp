@@ -106,8 +106,9 @@ struct TrackerParams {
   double moving_window = 1.0;
   // Shorter than the label's window, so that a turn or a reversal reaches the
   // prediction sooner; the label keeps the longer one, which a slow mover
-  // needs to show its displacement above the noise.
-  double prediction_window = 0.6;
+  // needs to show its displacement above the noise, and the prediction too
+  // while the recent slope does not depart from it (four centres at 10 Hz).
+  double prediction_window = 0.3;
   double free_margin = 0.1;
   double max_speed = 3.0;
   double uncertainty_sigmas = 2.0;
@@ -132,7 +133,7 @@ struct TrackerParams {
     v.real("moving_speed", &P::moving_speed, "m/s", Bounds::at_least(0, kMaxSpeed), "a confirmed track whose window speed, less moving_sigmas std, exceeds this is moving");
     v.real("moving_sigmas", &P::moving_sigmas, "", Bounds::at_least(0, 1e3), "std devs taken off the window speed before comparing it with moving_speed");
     v.real("moving_window", &P::moving_window, "s", Bounds::positive(kMaxHorizon), "the window speed is the slope of a line fitted to the centres this far back");
-    v.real("prediction_window", &P::prediction_window, "s", Bounds::positive(kMaxHorizon), "the predicted velocity is the slope of the centres this far back (no farther than moving_window)");
+    v.real("prediction_window", &P::prediction_window, "s", Bounds::positive(kMaxHorizon), "the predicted velocity is the slope of the centres this far back (no farther than moving_window) where it departs from moving_window's by more than 1 std, else moving_window's");
     v.real("free_margin", &P::free_margin, "m", Bounds::positive(), "a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it");
     v.real("max_speed", &P::max_speed, "m/s", Bounds::positive(kMaxSpeed), "an association implying more speed is rejected");
     v.real("uncertainty_sigmas", &P::uncertainty_sigmas, "", Bounds::at_least(0, 1e3), "std devs of position added to a moving disc's radius, and of the filter's speed to its growth per second ahead");
@@ -151,15 +152,16 @@ struct Track {
   Vec2 position = Vec2::Zero();  // m, at the last update
   Vec2 velocity = Vec2::Zero();  // m/s, the filter's: follows turns within a few scans, noisier
   Eigen::Matrix4d covariance = Eigen::Matrix4d::Identity();  // of (x, y, vx, vy)
-  double radius = 0.0;     // m, smoothed over the clusters taken
+  double radius = 0.0;     // m, smoothed over the unoccluded clusters taken
   bool moving = false;     // confirmed, fast enough with confidence, and displacing free space (with hysteresis)
   // m/s, slope of a line through the centres (occluded ones weighing less) of the last
   // moving_window (as of the last association): steadier than `velocity`,
   // half a window late through turns. The moving label uses it.
   Vec2 window_velocity = Vec2::Zero();
   double window_speed_std = 0.0;  // m/s, its std (infinite until three centres)
-  // m/s, the same slope over the last prediction_window (the window velocity
-  // until it holds three centres): moving_discs' predicted velocity.
+  // m/s, moving_discs' predicted velocity: the same slope over the last
+  // prediction_window where it departs from window_velocity by more than 1 std
+  // of the two, else window_velocity.
   Vec2 predicted_velocity = Vec2::Zero();
   // A parabola through the window's centres: the velocity at the last one
   // (m/s), the acceleration (m/s^2) and its std per coordinate (m/s^2;
@@ -224,6 +226,7 @@ class Tracker {
   double measurement_variance(const Cluster& cluster) const;
   void predict(double dt);
   void correct(Track& track, const Cluster& cluster, double time);
+  const std::vector<Cluster>& refit_occluded(const std::vector<Cluster>& clusters, const Scan* scan);
   // What a track remembers of its clusters.
   // A cluster centre as the window speed weighs it: an occluded one counts
   // 1 / kOccludedStdFactor^2 of an unoccluded one.
@@ -263,6 +266,7 @@ class Tracker {
   bool has_scans_ = false;                      // scans were given: the moving label needs free-space evidence
   std::vector<int> cluster_tracks_;
   std::vector<std::size_t> taken_;  // scratch: the clusters an update tracks
+  std::vector<Cluster> refitted_;   // scratch: an update's clusters, occluded ones refitted
   double time_;
   int next_id_ = 0;
 };
