@@ -319,6 +319,9 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
   const double start_clearance = clearance_now - margin;
   const double obstacle_travel = fixed.obstacle_speed() * params_.dt;
   const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
+  moving_horizon_ = params_.moving_horizon;
+  if (moving_world && params_.moving_reach > 0.0)
+    moving_horizon_ = std::min(moving_horizon_, params_.moving_reach / world.obstacle_speed());
   const double moving_at_start = moving_world ? world.moving_clearance(footprint_, state.pose, 0.0) : inf;
   const std::size_t steps = static_cast<std::size_t>(n_steps_);
   bounds_.resize(n * steps);
@@ -506,7 +509,7 @@ double LocalPlanner::first_moving_contact(const Twist& cmd, const Trajectory& po
     const double t = (k + 1) * params_.dt;
     const double c = world.moving_clearance_below(footprint_, poses[static_cast<std::size_t>(k)], t, cutoff);
     closest = std::min(closest, c);
-    if (t - params_.dt < params_.moving_horizon) {
+    if (t - params_.dt < moving_horizon_) {
       escape = c;
       if (std::isinf(contact) && c - margin <= half_step) contact = t;
     }

@@ -1380,6 +1380,7 @@ class PlannerParams:
       goal_tolerance (m): GoalReached within this distance of the goal
       safety_margin (m): clearance below which a rollout counts as in contact (never more than the robot's own)
       moving_horizon (s): a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: only the braking rule counts movers)
+      moving_reach (m): the rejection's horizon is at most the time the fastest mover (speed plus growth) takes to travel this far (0: moving_horizon alone)
       mover_caution_radius (m): while a moving obstacle is this near the footprint, the velocity critic's weight is scaled by mover_speed_weight
       mover_speed_weight: the velocity critic's weight factor beside a mover (1: no change)
       heading_target: what the heading critic aims at: goal (DWA) or key_nodes (GDWA: the first key node of the global path not yet reached)
@@ -1397,6 +1398,7 @@ class PlannerParams:
     mover_caution_radius: typing.Any
     mover_speed_weight: typing.Any
     moving_horizon: typing.Any
+    moving_reach: typing.Any
     normalization: typing.Any
     response_time: typing.Any
     safety_margin: typing.Any

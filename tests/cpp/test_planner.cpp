@@ -934,6 +934,36 @@ TEST(LocalPlanner, AnEvasionTakesTheSampleAfterWhichTheRobotGetsAwayBest) {
   EXPECT_GT(better_than_latest_arc, 0);
 }
 
+// A disc coming straight at the standing robot meets it 0.85 s ahead. At
+// 1 m/s the rejection's horizon is moving_horizon (1 s): standing still is
+// rejected. At 3 m/s it is what the disc takes to travel moving_reach (2 m,
+// 0.67 s): standing still is admissible and left to the clearance critic;
+// with moving_reach 0 it is rejected again.
+TEST(LocalPlanner, AmongFastMoversTheRejectionLooksLessFarAhead) {
+  const Footprint footprint = Footprint::circle(0.25);
+  const RobotState state{Pose2{}, Twist{}};
+  const auto standing_reason = [&](double speed, double reach) {
+    PlannerParams params;
+    params.moving_reach = reach;
+    LocalPlanner planner(RobotLimits{}, footprint, params);
+    const double meet = 0.85, radius = 0.3;
+    // Contact as the planner counts it: within the margin plus half a step's travel.
+    const double gap = footprint.radius() + radius + params.safety_margin + 0.5 * params.dt * speed;
+    const Disc disc{Vec2(0.0, gap + speed * meet), radius, Vec2(0.0, -speed)};
+    const FieldClearance world(nullptr, {disc});
+    const PlanResult& r = planner.plan(state, Vec2(5.0, 0.0), world);
+    for (std::size_t i = 0; i < r.samples.size(); ++i)
+      if (r.samples[i].v == 0.0 && r.samples[i].omega == 0.0) {
+        return r.reasons[i];
+      }
+    ADD_FAILURE() << "no standing sample";
+    return RejectReason::None;
+  };
+  EXPECT_EQ(standing_reason(1.0, 2.0), RejectReason::Moving);
+  EXPECT_NE(standing_reason(3.0, 2.0), RejectReason::Moving);
+  EXPECT_EQ(standing_reason(3.0, 0.0), RejectReason::Moving);
+}
+
 // In open space nothing is rejected and every rollout is free for good.
 TEST(LocalPlanner, OpenSpaceAdmitsEverySample) {
   LocalPlanner planner(RobotLimits{}, Footprint::circle(0.25));

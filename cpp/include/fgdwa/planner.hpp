@@ -93,6 +93,10 @@ struct PlannerParams {
   // A robot that brakes is still hit by what moves into it, so standing
   // still is judged against moving obstacles too.
   double moving_horizon = 1.0;
+  // A constant-velocity prediction is trusted over so many metres of the
+  // fastest mover's travel: among fast movers the rejection looks less far
+  // ahead, and the clearance critic weighs what lies beyond.
+  double moving_reach = 2.0;
   // A mover may turn or reverse; a slower robot keeps the time to answer it.
   double mover_caution_radius = 2.0;
   double mover_speed_weight = 0.5;
@@ -115,6 +119,7 @@ struct PlannerParams {
     v.real("goal_tolerance", &P::goal_tolerance, "m", Bounds::at_least(0), "GoalReached within this distance of the goal");
     v.real("safety_margin", &P::safety_margin, "m", Bounds::at_least(0), "clearance below which a rollout counts as in contact (never more than the robot's own)");
     v.real("moving_horizon", &P::moving_horizon, "s", Bounds::at_least(0, limits::kMaxHorizon), "a rollout predicted to meet a moving obstacle this soon is rejected, standing still included (0: only the braking rule counts movers)");
+    v.real("moving_reach", &P::moving_reach, "m", Bounds::at_least(0, limits::kMaxHorizon), "the rejection's horizon is at most the time the fastest mover (speed plus growth) takes to travel this far (0: moving_horizon alone)");
     v.real("mover_caution_radius", &P::mover_caution_radius, "m", Bounds::at_least(0), "while a moving obstacle is this near the footprint, the velocity critic's weight is scaled by mover_speed_weight");
     v.real("mover_speed_weight", &P::mover_speed_weight, "", Bounds::closed(0, 1), "the velocity critic's weight factor beside a mover (1: no change)");
     v.choice("heading_target", &P::heading_target, "what the heading critic aims at: goal (DWA) or key_nodes (GDWA: the first key node of the global path not yet reached)");
@@ -243,7 +248,8 @@ class LocalPlanner {
   std::vector<double> lengths_;  // rows x steps
   std::vector<double> travel_;   // rows x (steps + 1), from 0
   std::vector<SpeedProfile> profiles_;
-  std::vector<double> escape_;  // per sample: clearance to the movers at the end of moving_horizon
+  std::vector<double> escape_;  // per sample: clearance to the movers at the end of the horizon
+  double moving_horizon_ = 0.0;  // s, this cycle's: moving_horizon, shortened by moving_reach
   // The velocity critic's index (none: past the end), and the weights this
   // cycle scores with (its weight scaled while a mover is near).
   std::size_t speed_critic_ = std::numeric_limits<std::size_t>::max();
