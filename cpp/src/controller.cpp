@@ -99,16 +99,13 @@ struct Controller::LiveScanTest {
   }
 
   bool in_reach(const Vec2& hit) const { return field && (hit - pose.position()).norm() <= reach; }
-  bool counts(const Vec2& hit, const Vec2& direction) const { return counts(hit, direction, depth); }
-  // `noise_depth` (m): how far along `direction` noise may have moved `hit`.
-  bool counts(const Vec2& hit, const Vec2& direction, double noise_depth) const {
-    if (!in_reach(hit)) return false;
+  // Whether one hit in reach lies short of the map by more than the noise.
+  bool counts(const Vec2& hit, const Vec2& direction) const {
     // The stretch of the beam the noise may have moved the hit along: a
     // correct map has an obstacle square on it, a beam that grazes a corner
     // and a hit noise carried past one included.
-    const Vec2 far = hit + noise_depth * direction;
-    if (field->grid().occupied_at(far) || field->segment_distance(hit - noise_depth * direction, far) <= slack)
-      return false;
+    const Vec2 far = hit + depth * direction;
+    if (field->grid().occupied_at(far) || field->segment_distance(hit - depth * direction, far) <= slack) return false;
     return outside_robot(hit);
   }
   // Nothing stands inside the robot: a hit there is the robot's own.

@@ -318,10 +318,11 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
   margin_ = margin;
   const double start_clearance = clearance_now - margin;
   const double obstacle_travel = fixed.obstacle_speed() * params_.dt;
-  const bool moving_world = params_.moving_horizon > 0.0 && world.obstacle_speed() > 0.0;
+  mover_speed_ = world.obstacle_speed();
+  const bool moving_world = params_.moving_horizon > 0.0 && mover_speed_ > 0.0;
   moving_horizon_ = params_.moving_horizon;
   if (moving_world && params_.moving_reach > 0.0)
-    moving_horizon_ = std::min(moving_horizon_, params_.moving_reach / world.obstacle_speed());
+    moving_horizon_ = std::min(moving_horizon_, params_.moving_reach / mover_speed_);
   const double moving_at_start = moving_world ? world.moving_clearance(footprint_, state.pose, 0.0) : inf;
   const std::size_t steps = static_cast<std::size_t>(n_steps_);
   bounds_.resize(n * steps);
@@ -496,7 +497,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
 double LocalPlanner::first_moving_contact(const Twist& cmd, const Trajectory& poses, const ClearanceSource& world,
                                           double margin, int last, double at_start, double fixed_clearance,
                                           double& closest, double& escape) const {
-  const double half_step = half_step_motion(cmd, world.obstacle_speed());
+  const double half_step = half_step_motion(cmd, mover_speed_);
   double contact = std::numeric_limits<double>::infinity();
   closest = at_start;
   escape = closest;
@@ -622,7 +623,7 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
         // Only whether the fixed world's clearance reaches the margin
         // matters: a source may settle that from its bounds (the same
         // answer, clearance_below being exact below its cutoff).
-        if (c - moving_margin <= half_step_motion(twist, world.obstacle_speed()) ||
+        if (c - moving_margin <= half_step_motion(twist, mover_speed_) ||
             fixed.clearance_below(footprint_, pose, t, margin_ + 1e-9) - margin_ <= 0.0) {
           contact = t;
           break;

@@ -76,9 +76,9 @@ bool share_seen_through(const Scan& scan, const std::vector<Vec2>& points, doubl
 }
 
 // The centre of a circle of `radius` through `points`, by Gauss-Newton from
-// `start`: a partly hidden disc's own fit takes the arc it sees for the whole
+// `centre`: a partly hidden disc's own fit takes the arc it sees for the whole
 // object, its radius too small and its centre pulled toward the hits. Damped,
-// so that an arc too short to fix the centre along it leaves it near `start`.
+// so that an arc too short to fix the centre along it leaves it near where it began.
 Vec2 fixed_radius_centre(const std::vector<Vec2>& points, double radius, Vec2 centre) {
   const double damping = 1e-3 * static_cast<double>(points.size());
   for (int iteration = 0; iteration < 10; ++iteration) {

@@ -250,6 +250,7 @@ class LocalPlanner {
   std::vector<SpeedProfile> profiles_;
   std::vector<double> escape_;  // per sample: clearance to the movers at the end of the horizon
   double moving_horizon_ = 0.0;  // s, this cycle's: moving_horizon, shortened by moving_reach
+  double mover_speed_ = 0.0;     // m/s, this cycle's world's fastest obstacle (speed plus growth)
   // The velocity critic's index (none: past the end), and the weights this
   // cycle scores with (its weight scaled while a mover is near).
   std::size_t speed_critic_ = std::numeric_limits<std::size_t>::max();
