@@ -58,6 +58,9 @@ def test_a_bound_broken_names_the_full_path_and_the_unit():
         params.tracker.gate = 0.0
     with pytest.raises(fgdwa.FgdwaError, match="navigator.max_recoveries: expected an integer, got float"):
         params.max_recoveries = 1.5
+    for value, why in ((-1.0, r"-1: must be >= 0"), (math.nan, r"nan: must be finite"), (1e300, r"1e\+300: must be <= 3600")):
+        with pytest.raises(fgdwa.FgdwaError, match=rf"^planner\.moving_reach = {why} \(m\)$"):
+            fgdwa.PlannerParams(moving_reach=value)
 
 
 def test_an_unknown_name_says_did_you_mean():
