@@ -145,6 +145,46 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
   }
 }
 
+// The hit at which to cut `points` (in beam order, counterclockwise about the
+// sensor and within half a turn of it), 0 for none. An object's near side
+// is convex toward the sensor; where two side by side meet, the hits fall
+// back behind the near side of the whole run (the chain of hits no hit lies
+// in front of). The cut goes at the deepest hit whose deeper neighbour lies
+// more than `threshold` (m) behind as well: two hits, so that noise on one
+// cannot cut a wall. `depth` is scratch.
+std::size_t deepest_notch(const std::vector<Vec2>& points, double threshold, std::vector<double>& depth) {
+  const std::size_t m = points.size();
+  if (m < 5) return 0;
+  const auto cross = [](const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); };
+  // The near side: a hit stays on it while it lies in front of (on the
+  // sensor's side of) the line from the one before it to the next hit.
+  std::vector<std::size_t> hull;
+  hull.reserve(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    while (hull.size() >= 2) {
+      const Vec2& a = points[hull[hull.size() - 2]];
+      if (cross(points[i] - a, points[hull.back()] - a) > 0.0) break;
+      hull.pop_back();
+    }
+    hull.push_back(i);
+  }
+  depth.assign(m, 0.0);
+  for (std::size_t h = 0; h + 1 < hull.size(); ++h) {
+    const Vec2& a = points[hull[h]];
+    const Vec2 edge = points[hull[h + 1]] - a;
+    const double length = edge.norm();
+    if (length <= 0.0) continue;
+    for (std::size_t j = hull[h] + 1; j < hull[h + 1]; ++j) depth[j] = -cross(edge, points[j] - a) / length;
+  }
+  std::size_t best = 0;
+  double best_depth = threshold;
+  for (std::size_t j = 1; j + 1 < m; ++j) {
+    const double supported = std::min(depth[j], std::max(depth[j - 1], depth[j + 1]));
+    if (supported > best_depth) best = j, best_depth = supported;
+  }
+  return best;
+}
+
 // The `count` clusters nearest `origin` (by their centres; ties to the lower
 // beam), still in beam order.
 std::vector<Cluster> nearest_clusters(std::vector<Cluster> clusters, const Vec2& origin, std::size_t count) {
@@ -183,11 +223,17 @@ std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& p
 
   const Vec2 origin = scan.pose.position();
   std::vector<Cluster> clusters;
+  std::vector<std::vector<int>> beams;  // each cluster's hits' beam indices
   Cluster current;
+  std::vector<int> current_beams;
   double previous_range = 0.0;
-  const auto close = [&](bool keep) {
-    if (keep && !current.points.empty()) clusters.push_back(std::move(current));
+  const auto close = [&]() {
+    if (!current.points.empty()) {
+      clusters.push_back(std::move(current));
+      beams.push_back(std::move(current_beams));
+    }
     current = Cluster{};
+    current_beams.clear();
   };
   for (std::size_t i = 0; i < n; ++i) {
     const double r = scan.ranges[i];
@@ -195,13 +241,12 @@ std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& p
     const Vec2& p = frame.beam_hits()[i];
     if (!current.points.empty() &&
         (p - current.points.back()).norm() > params.base_gap + params.range_gap_factor * std::max(r, previous_range))
-      close(true);
-    if (current.points.empty()) current.first_beam = static_cast<int>(i);
+      close();
     current.points.push_back(p);
-    current.last_beam = static_cast<int>(i);
+    current_beams.push_back(static_cast<int>(i));
     previous_range = r;
   }
-  close(true);
+  close();
 
   // A full circle's last beam neighbours its first: one object across the seam.
   const bool full_circle = scan.angle_increment * static_cast<double>(n) >= 2.0 * M_PI - 1e-9;
@@ -212,8 +257,9 @@ std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& p
     if ((first.points.front() - last.points.back()).norm() <=
         params.base_gap + params.range_gap_factor * std::max(range_first, range_last)) {
       last.points.insert(last.points.end(), first.points.begin(), first.points.end());
-      last.last_beam = first.last_beam;  // first_beam > last_beam: it wraps
+      beams.back().insert(beams.back().end(), beams.front().begin(), beams.front().end());
       clusters.erase(clusters.begin());
+      beams.erase(beams.begin());
     }
   }
 
@@ -227,11 +273,50 @@ std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& p
     }
     return scan.ranges[static_cast<std::size_t>(next)] < range;
   };
+  // Clusters cut at their notches: each piece's beams, and whether a cut
+  // bounds it before its first hit or after its last.
+  struct Piece {
+    Cluster cluster;
+    std::vector<int> beams;
+    bool cut_before = false, cut_after = false;
+  };
+  std::vector<Piece> pieces;
+  std::vector<double> depth;
+  for (std::size_t k = 0; k < clusters.size(); ++k) {
+    std::vector<Piece> work;
+    work.push_back(Piece{std::move(clusters[k]), std::move(beams[k])});
+    while (!work.empty()) {
+      Piece piece = std::move(work.back());
+      work.pop_back();
+      const std::vector<int>& b = piece.beams;
+      const int span = (b.back() - b.front() + static_cast<int>(n)) % static_cast<int>(n);
+      const std::size_t cut = static_cast<double>(span) * scan.angle_increment < M_PI
+                                  ? deepest_notch(piece.cluster.points, params.notch_depth, depth)
+                                  : 0;
+      if (cut == 0) {
+        pieces.push_back(std::move(piece));
+        continue;
+      }
+      // The notch's hit belongs to neither side.
+      Piece before, after;
+      before.cluster.points.assign(piece.cluster.points.begin(), piece.cluster.points.begin() + static_cast<std::ptrdiff_t>(cut));
+      before.beams.assign(b.begin(), b.begin() + static_cast<std::ptrdiff_t>(cut));
+      after.cluster.points.assign(piece.cluster.points.begin() + static_cast<std::ptrdiff_t>(cut) + 1, piece.cluster.points.end());
+      after.beams.assign(b.begin() + static_cast<std::ptrdiff_t>(cut) + 1, b.end());
+      before.cut_before = piece.cut_before, before.cut_after = true;
+      after.cut_before = true, after.cut_after = piece.cut_after;
+      work.push_back(std::move(after));
+      work.push_back(std::move(before));
+    }
+  }
   std::vector<Cluster> kept;
   FitScratch scratch;
-  for (Cluster& c : clusters) {
+  for (Piece& piece : pieces) {
+    Cluster& c = piece.cluster;
     if (static_cast<int>(c.points.size()) < params.min_points) continue;
-    c.occluded = hides(c.first_beam, -1, (c.points.front() - origin).norm()) ||
+    c.first_beam = piece.beams.front();
+    c.last_beam = piece.beams.back();
+    c.occluded = piece.cut_before || piece.cut_after || hides(c.first_beam, -1, (c.points.front() - origin).norm()) ||
                  hides(c.last_beam, +1, (c.points.back() - origin).norm());
     c.box = principal_box(c.points);
     if (2.0 * c.box.half_extents.maxCoeff() > params.max_size) continue;

@@ -2090,6 +2090,7 @@ class SegmentParams:
       max_size (m): clusters whose oriented box is longer (walls) are not tracked
       min_radius (m): smallest fitted disc radius (the largest is max_size / 2)
       range_noise (m): range noise std the disc fit assumes when weighing hits against the apparent width
+      notch_depth (m): a cluster is cut where two neighbouring hits lie this far behind the line over them from hits on either side (objects side by side, each convex toward the sensor)
       max_clusters: clusters kept per scan, the nearest to the scanner; farther ones are dropped (the tracker's work grows with their cube)
     """
     __hash__: typing.ClassVar[None] = None
@@ -2099,6 +2100,7 @@ class SegmentParams:
     max_size: typing.Any
     min_points: typing.Any
     min_radius: typing.Any
+    notch_depth: typing.Any
     range_gap_factor: typing.Any
     range_noise: typing.Any
     @staticmethod

@@ -68,7 +68,7 @@ Vec2 centroid(const Cluster& c) {
 
 // ---------------------------------------------------------------- segmentation
 
-TEST(Segment, DiscsApartAreTwoClustersDiscsTouchingOne) {
+TEST(Segment, DiscsApartAreTwoClustersDiscsTouchingAreCutAtTheirNotch) {
   const LaserScanner scanner(LidarParams{}, nullptr);
   std::mt19937_64 rng(1);
   // Surfaces 0.4 m apart at 3 m: more than the 0.24 m gap there.
@@ -80,11 +80,62 @@ TEST(Segment, DiscsApartAreTwoClustersDiscsTouchingOne) {
   for (const Cluster& c : two) {
     EXPECT_LE(c.first_beam, c.last_beam);
     EXPECT_EQ(static_cast<int>(c.points.size()), c.last_beam - c.first_beam + 1);
+    EXPECT_FALSE(c.occluded);
   }
-  // 0.1 m apart: one object as far as the lidar can tell.
+  // 0.1 m apart: no beam passes between them, but each bulges toward the
+  // sensor and the hits fall back where they meet.
   const std::vector<Disc> touching = {Disc{Vec2(3.0, -0.35), 0.3, Vec2::Zero()},
                                       Disc{Vec2(3.0, 0.35), 0.3, Vec2::Zero()}};
-  EXPECT_EQ(segment_scan(scan_of(scanner, Pose2{}, touching, 0.0, rng)).size(), 1u);
+  const Scan scan = scan_of(scanner, Pose2{}, touching, 0.0, rng);
+  const auto cut = segment_scan(scan);
+  ASSERT_EQ(cut.size(), 2u);
+  for (const Disc& d : touching) {
+    const Cluster& c = nearest_cluster(cut, d.center);
+    EXPECT_LT((c.center - d.center).norm(), 0.05);
+    EXPECT_TRUE(c.occluded);  // the cut side may hide part of it
+  }
+  EXPECT_LT(cut[0].last_beam, cut[1].first_beam);
+  SegmentParams deep;
+  deep.notch_depth = 1.0;
+  EXPECT_EQ(segment_scan(scan, deep).size(), 1u);
+}
+
+TEST(Segment, MoversTouchingOrAgainstAWallAreCutFromEachOther) {
+  // A 10 m wall across the view at x = 4, two movers of 0.5 m radius touching
+  // in front of it, and a third against it: one run of hits far longer than
+  // max_size, which would drop them all.
+  std::vector<std::uint8_t> cells(100 * 60, 0);
+  for (int r = 0; r < 100; ++r) cells[r * 60 + 55] = 1;
+  const auto world = std::make_shared<const DistanceField>(OccupancyGrid(100, 60, 0.1, Vec2(-1.5, -5.0), cells));
+  const LaserScanner scanner(noisy_lidar(), world);
+  const std::vector<Disc> movers = {Disc{Vec2(2.5, -0.52), 0.5, Vec2::Zero()}, Disc{Vec2(2.5, 0.52), 0.5, Vec2::Zero()},
+                                    Disc{Vec2(3.45, 1.8), 0.5, Vec2::Zero()}};
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    std::mt19937_64 rng(seed);
+    const auto clusters = segment_scan(scan_of(scanner, Pose2{}, movers, 0.0, rng));
+    ASSERT_EQ(clusters.size(), 3u) << "seed " << seed;
+    for (const Disc& d : movers) EXPECT_LT((nearest_cluster(clusters, d.center).center - d.center).norm(), 0.15);
+  }
+}
+
+TEST(Segment, ANoisyWallOrCornerIsNotCutIntoObjects) {
+  // A straight wall and a box's convex corner, 3 cm of range noise: no notch
+  // anywhere, however many hits.
+  std::vector<std::uint8_t> cells(80 * 80, 0);
+  for (int r = 0; r < 30; ++r) cells[r * 80 + 30] = 1;  // x = 1.5 .. 1.6, y = -4 .. -1
+  for (int r = 50; r < 70; ++r)
+    for (int c = 50; c < 70; ++c) cells[r * 80 + c] = 1;  // a 2 m box, corner toward the sensor
+  const auto world = std::make_shared<const DistanceField>(OccupancyGrid(80, 80, 0.1, Vec2(-1.5, -4.0), cells));
+  const LaserScanner scanner(noisy_lidar(), world);
+  SegmentParams lenient;
+  lenient.max_size = 20.0;
+  for (std::uint64_t seed = 0; seed < 50; ++seed) {
+    std::mt19937_64 rng(seed);
+    Scan scan = scan_of(scanner, Pose2{-1.0, 0.0, 0.0}, {}, 0.0, rng);
+    SegmentParams whole = lenient;
+    whole.notch_depth = 1e3;
+    EXPECT_EQ(segment_scan(scan, lenient).size(), segment_scan(scan, whole).size()) << "seed " << seed;
+  }
 }
 
 TEST(Segment, WallsAreDroppedBySize) {

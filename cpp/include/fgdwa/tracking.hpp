@@ -31,6 +31,7 @@ struct SegmentParams {
   double max_size = 1.6;
   double min_radius = 0.05;
   double range_noise = 0.03;
+  double notch_depth = 0.15;
   int max_clusters = 128;
 
   static constexpr const char* kName = "segment";
@@ -43,6 +44,7 @@ struct SegmentParams {
     v.real("max_size", &P::max_size, "m", Bounds::positive(), "clusters whose oriented box is longer (walls) are not tracked");
     v.real("min_radius", &P::min_radius, "m", Bounds::positive(), "smallest fitted disc radius (the largest is max_size / 2)");
     v.real("range_noise", &P::range_noise, "m", Bounds::positive(), "range noise std the disc fit assumes when weighing hits against the apparent width");
+    v.real("notch_depth", &P::notch_depth, "m", Bounds::positive(), "a cluster is cut where two neighbouring hits lie this far behind the line over them from hits on either side (objects side by side, each convex toward the sensor)");
     v.integer("max_clusters", &P::max_clusters, "", Bounds::closed(1, limits::kMaxBeams), "clusters kept per scan, the nearest to the scanner; farther ones are dropped (the tracker's work grows with their cube)");
   }
   // min_radius <= max_size / 2.
@@ -77,7 +79,9 @@ struct Cluster {
 
 // Cuts the finite hits of `scan` into clusters of neighbouring hits, in beam
 // order; beams whose `mask` entry is 0 are skipped (e.g. hits on walls the map
-// already holds) when a mask of scan.ranges.size() entries is given. Clusters
+// already holds) when a mask of scan.ranges.size() entries is given. A cluster
+// is cut at a notch deeper than notch_depth (two movers touching, a mover
+// against a wall), the side of each cut occluded. Clusters
 // with fewer than min_points hits or longer than max_size are dropped, and so
 // are all but the max_clusters nearest. A scan covering the full circle joins
 // the cluster across its seam.
