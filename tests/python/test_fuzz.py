@@ -1200,7 +1200,8 @@ def test_scan_density_and_segmentation(args, pose, set_pose, half, radius, base)
 
 @st.composite
 def segment_kwargs(draw):
-    kw = dict(base_gap=0.15, range_gap_factor=0.03, min_points=3, max_size=1.6, min_radius=0.05, range_noise=0.03)
+    kw = dict(base_gap=0.15, range_gap_factor=0.03, min_points=3, max_size=1.6, min_radius=0.05, range_noise=0.03,
+              notch_depth=0.15)
     for name in sorted(draw(st.sets(st.sampled_from(sorted(kw)), max_size=2))):
         kw[name] = draw(hi_(0, 8) if name == "min_points" else hf(0.0, 2.0))
     return kw
@@ -1210,7 +1211,8 @@ def segment_valid(kw):
     return (within(kw["base_gap"], 0.0, MAX_LENGTH) and kw["base_gap"] > 0 and within(kw["range_gap_factor"], 0.0, 1e3)
             and 1 <= kw["min_points"] <= MAX_BEAMS and within(kw["max_size"], 0.0, MAX_LENGTH) and kw["max_size"] > 0
             and within(kw["min_radius"], 0.0, INF) and kw["min_radius"] > 0 and kw["min_radius"] <= kw["max_size"] / 2
-            and within(kw["range_noise"], 0.0, MAX_LENGTH) and kw["range_noise"] > 0)
+            and within(kw["range_noise"], 0.0, MAX_LENGTH) and kw["range_noise"] > 0
+            and within(kw["notch_depth"], 0.0, MAX_LENGTH) and kw["notch_depth"] > 0)
 
 
 @fuzz(200)
