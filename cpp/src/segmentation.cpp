@@ -151,15 +151,20 @@ void fit_disc(Cluster& cluster, const Vec2& origin, double increment, const Segm
 // back behind the near side of the whole run (the chain of hits no hit lies
 // in front of). The cut goes at the deepest hit whose deeper neighbour lies
 // more than `threshold` (m) behind as well: two hits, so that noise on one
-// cannot cut a wall. `depth` is scratch.
-std::size_t deepest_notch(const std::vector<Vec2>& points, double threshold, std::vector<double>& depth) {
+// cannot cut a wall.
+struct NotchScratch {
+  std::vector<std::size_t> hull;
+  std::vector<double> depth;
+};
+std::size_t deepest_notch(const std::vector<Vec2>& points, double threshold, NotchScratch& scratch) {
   const std::size_t m = points.size();
   if (m < 5) return 0;
   const auto cross = [](const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); };
   // The near side: a hit stays on it while it lies in front of (on the
   // sensor's side of) the line from the one before it to the next hit.
-  std::vector<std::size_t> hull;
-  hull.reserve(m);
+  std::vector<std::size_t>& hull = scratch.hull;
+  std::vector<double>& depth = scratch.depth;
+  hull.clear();
   for (std::size_t i = 0; i < m; ++i) {
     while (hull.size() >= 2) {
       const Vec2& a = points[hull[hull.size() - 2]];
@@ -280,10 +285,9 @@ std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& p
     std::vector<int> beams;
     bool cut_before = false, cut_after = false;
   };
-  std::vector<Piece> pieces;
-  std::vector<double> depth;
+  std::vector<Piece> pieces, work;
+  NotchScratch notch;
   for (std::size_t k = 0; k < clusters.size(); ++k) {
-    std::vector<Piece> work;
     work.push_back(Piece{std::move(clusters[k]), std::move(beams[k])});
     while (!work.empty()) {
       Piece piece = std::move(work.back());
@@ -291,7 +295,7 @@ std::vector<Cluster> segment_scan(const ScanFrame& frame, const SegmentParams& p
       const std::vector<int>& b = piece.beams;
       const int span = (b.back() - b.front() + static_cast<int>(n)) % static_cast<int>(n);
       const std::size_t cut = static_cast<double>(span) * scan.angle_increment < M_PI
-                                  ? deepest_notch(piece.cluster.points, params.notch_depth, depth)
+                                  ? deepest_notch(piece.cluster.points, params.notch_depth, notch)
                                   : 0;
       if (cut == 0) {
         pieces.push_back(std::move(piece));
