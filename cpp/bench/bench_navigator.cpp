@@ -21,8 +21,9 @@
 // cost of matching is the difference to arg 1. A table of medians and 95th percentiles
 // follows the benchmarks (the targets: a median <= 0.5 ms for the circle robot
 // and <= 1 ms for the Jackal; before those, 1 ms and 2 ms with the map built from
-// scans and matched to it, with a 99th percentile <= 3 ms),
-// then each median next to its arithmetic floor (bench_floor.hpp).
+// scans and matched to it, with a 99th percentile <= 3 ms), then the
+// slowest 1 % of cycles taken apart by stage (how many replanned, how many
+// evaded), then each median next to its arithmetic floor (bench_floor.hpp).
 //
 //   build/cmake/cpp/bench/bench_navigator      (about 10 s)
 #include <benchmark/benchmark.h>
@@ -170,6 +171,18 @@ std::map<std::string, Stages>& stages() {
   return all;
 }
 
+// Per configuration, each cycle's stage times, whether it replanned and whether
+// the planner evaded (every sample met a mover): what the slowest cycles spend their time on.
+struct CycleStages {
+  StageTimes times;
+  bool replanned = false;
+  bool evaded = false;
+};
+std::map<std::string, std::vector<CycleStages>>& cycle_stages() {
+  static std::map<std::string, std::vector<CycleStages>> all;
+  return all;
+}
+
 void BM_NavigatorStep(benchmark::State& bench, const std::string& robot, int movers) {
   const MapMode mode = bench.range(0) ? MapMode::Scan : MapMode::Known;
   NavigatorParams params;
@@ -189,6 +202,7 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot, int mov
                            (movers > 4 ? ", " + std::to_string(movers) + " movers" : "");
   std::vector<double>& times = samples()[name];
   Stages& sum = stages()[name];
+  std::vector<CycleStages>& each = cycle_stages()[name];
   int path_version = 0;
   for (auto _ : bench) {
     const double seconds = loop.step();
@@ -202,6 +216,8 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot, int mov
     sum.perception += r.times.perception;
     sum.plan += r.times.plan;
     sum.replans += r.path_version != path_version;
+    each.push_back(CycleStages{r.times, r.path_version != path_version,
+                               r.planned && loop.navigator->plan_result().status == Status::Evading});
     path_version = r.path_version;
     ++sum.cycles;
     if (r.planned) {
@@ -243,6 +259,37 @@ int main(int argc, char** argv) {
                 1e3 * fgdwa::percentile(times, 0.99), 1e3 * *std::max_element(times.begin(), times.end()),
                 1e3 * s.localise / n, 1e3 * s.tracking / n, 1e3 * s.map / n,
                 1e3 * s.global / n, 1e3 * s.perception / n, 1e3 * s.plan / n, s.replans);
+  }
+  // The cycles above the 99th percentile: the mean of each stage over them, and how many replanned.
+  std::printf("\nThe slowest 1 %% of cycles (ms):\n");
+  std::printf("%-40s %7s %7s | mean per stage: %6s %6s %6s %6s %6s %6s | %s %s\n", "robot map", "cycles", "mean",
+              "locate", "track", "map", "global", "percep", "plan", "replanned", "evaded");
+  for (const auto& [name, times] : fgdwa::samples()) {
+    if (times.empty()) continue;
+    const std::vector<fgdwa::CycleStages>& each = fgdwa::cycle_stages()[name];
+    const double p99 = fgdwa::percentile(times, 0.99);
+    fgdwa::StageTimes sum;
+    double total = 0.0;
+    int count = 0, replanned = 0, evaded = 0;
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      if (times[i] <= p99) continue;
+      const fgdwa::StageTimes& t = each[i].times;
+      sum.localise += t.localise;
+      sum.tracking += t.tracking;
+      sum.map += t.map;
+      sum.global += t.global;
+      sum.perception += t.perception;
+      sum.plan += t.plan;
+      total += times[i];
+      ++count;
+      replanned += each[i].replanned;
+      evaded += each[i].evaded;
+    }
+    if (count == 0) continue;
+    const double n = count;
+    std::printf("%-40s %7d %7.3f | %22.3f %6.3f %6.3f %6.3f %6.3f %6.3f | %9d %6d\n", name.c_str(), count,
+                1e3 * total / n, 1e3 * sum.localise / n, 1e3 * sum.tracking / n, 1e3 * sum.map / n,
+                1e3 * sum.global / n, 1e3 * sum.perception / n, 1e3 * sum.plan / n, replanned, evaded);
   }
   // The floor counts a cycle's planning (every rollout stepped and bounded,
   // the DTW of the admissible ones) and the scan's beams marked in the map:
