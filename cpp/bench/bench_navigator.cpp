@@ -157,9 +157,24 @@ std::map<std::string, std::vector<double>>& samples() {
   return all;
 }
 
-// Per configuration, the summed stage times (map, global, perception, plan) and the cycles that replanned.
+void add(StageTimes& sum, const StageTimes& t) {
+  sum.localise += t.localise;
+  sum.tracking += t.tracking;
+  sum.map += t.map;
+  sum.global += t.global;
+  sum.perception += t.perception;
+  sum.plan += t.plan;
+}
+
+// The mean of each stage over n cycles, in ms, as the tables' stage columns.
+void print_stage_means(const StageTimes& sum, double n) {
+  std::printf("%22.3f %6.3f %6.3f %6.3f %6.3f %6.3f", 1e3 * sum.localise / n, 1e3 * sum.tracking / n, 1e3 * sum.map / n,
+              1e3 * sum.global / n, 1e3 * sum.perception / n, 1e3 * sum.plan / n);
+}
+
+// Per configuration, the summed stage times and the cycles that replanned.
 struct Stages {
-  double localise = 0, tracking = 0, map = 0, global = 0, perception = 0, plan = 0;
+  StageTimes times;
   int replans = 0;
   // For the floor: the cycles, and over those that planned, the samples and
   // the admissible ones; a rollout's poses, a pose's operations, the beams.
@@ -209,12 +224,7 @@ void BM_NavigatorStep(benchmark::State& bench, const std::string& robot, int mov
     bench.SetIterationTime(seconds);
     times.push_back(seconds);
     const CycleRecord& r = loop.navigator->record();
-    sum.localise += r.times.localise;
-    sum.tracking += r.times.tracking;
-    sum.map += r.times.map;
-    sum.global += r.times.global;
-    sum.perception += r.times.perception;
-    sum.plan += r.times.plan;
+    add(sum.times, r.times);
     sum.replans += r.path_version != path_version;
     each.push_back(CycleStages{r.times, r.path_version != path_version,
                                r.planned && loop.navigator->plan_result().status == Status::Evading});
@@ -254,11 +264,11 @@ int main(int argc, char** argv) {
     if (times.empty()) continue;
     const fgdwa::Stages& s = fgdwa::stages()[name];
     const double n = static_cast<double>(times.size());
-    std::printf("%-40s %7zu %7.3f %7.3f %7.3f %7.3f | %22.3f %6.3f %6.3f %6.3f %6.3f %6.3f | %d\n", name.c_str(),
-                times.size(), 1e3 * fgdwa::percentile(times, 0.5), 1e3 * fgdwa::percentile(times, 0.95),
-                1e3 * fgdwa::percentile(times, 0.99), 1e3 * *std::max_element(times.begin(), times.end()),
-                1e3 * s.localise / n, 1e3 * s.tracking / n, 1e3 * s.map / n,
-                1e3 * s.global / n, 1e3 * s.perception / n, 1e3 * s.plan / n, s.replans);
+    std::printf("%-40s %7zu %7.3f %7.3f %7.3f %7.3f | ", name.c_str(), times.size(),
+                1e3 * fgdwa::percentile(times, 0.5), 1e3 * fgdwa::percentile(times, 0.95),
+                1e3 * fgdwa::percentile(times, 0.99), 1e3 * *std::max_element(times.begin(), times.end()));
+    fgdwa::print_stage_means(s.times, n);
+    std::printf(" | %d\n", s.replans);
   }
   // The cycles above the 99th percentile: the mean of each stage over them, and how many replanned.
   std::printf("\nThe slowest 1 %% of cycles (ms):\n");
@@ -273,23 +283,16 @@ int main(int argc, char** argv) {
     int count = 0, replanned = 0, evaded = 0;
     for (std::size_t i = 0; i < times.size(); ++i) {
       if (times[i] <= p99) continue;
-      const fgdwa::StageTimes& t = each[i].times;
-      sum.localise += t.localise;
-      sum.tracking += t.tracking;
-      sum.map += t.map;
-      sum.global += t.global;
-      sum.perception += t.perception;
-      sum.plan += t.plan;
+      fgdwa::add(sum, each[i].times);
       total += times[i];
       ++count;
       replanned += each[i].replanned;
       evaded += each[i].evaded;
     }
     if (count == 0) continue;
-    const double n = count;
-    std::printf("%-40s %7d %7.3f | %22.3f %6.3f %6.3f %6.3f %6.3f %6.3f | %9d %6d\n", name.c_str(), count,
-                1e3 * total / n, 1e3 * sum.localise / n, 1e3 * sum.tracking / n, 1e3 * sum.map / n,
-                1e3 * sum.global / n, 1e3 * sum.perception / n, 1e3 * sum.plan / n, replanned, evaded);
+    std::printf("%-40s %7d %7.3f | ", name.c_str(), count, 1e3 * total / count);
+    fgdwa::print_stage_means(sum, count);
+    std::printf(" | %9d %6d\n", replanned, evaded);
   }
   // The floor counts a cycle's planning (every rollout stepped and bounded,
   // the DTW of the admissible ones) and the scan's beams marked in the map:
