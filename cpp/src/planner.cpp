@@ -605,6 +605,12 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
   if (!(result_.moving_contact[i] > params_.dt) || poses.empty()) return best;
   const ClearanceSource& fixed = world.static_part();
   const double moving_margin = std::max(margin_, 0.0);  // as first_moving_contact counts it
+  // No footprint point moves farther than the path driven plus the
+  // circumscribed radius times the angle turned, so from the first pose's
+  // clearance the fixed world cannot come within the margin before the two
+  // have used up the room: those steps need no look-up (the same answer).
+  const double room_at_first = fixed.clearance(footprint_, poses[0], params_.dt) - margin_ - 1e-9;
+  const double reach = footprint_.radius();
   const int n_targets = kEscapeTargets;
   for (int a = 0; a < n_targets; ++a) {
     const double v_target = limits_.v_min + (limits_.v_max - limits_.v_min) * a / (n_targets - 1);
@@ -613,10 +619,12 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
       Pose2 pose = poses[0];
       Twist twist = first;
       double contact = std::numeric_limits<double>::infinity(), room = std::numeric_limits<double>::infinity();
+      double moved = 0.0;  // the most any footprint point has moved from poses[0]
       for (int k = 1; k < n_steps_; ++k) {
         twist.v = ramp(twist.v, v_target, limits_.acc_v, limits_.braking_v(), params_.dt);
         twist.omega = ramp(twist.omega, omega_target, limits_.acc_omega, limits_.braking_omega(), params_.dt);
         pose = unicycle_step(pose, twist, params_.dt);
+        moved += (std::abs(twist.v) + reach * std::abs(twist.omega)) * params_.dt;
         const double t = (k + 1) * params_.dt;
         const double c = world.moving_clearance(footprint_, pose, t);
         room = std::min(room, c);
@@ -624,7 +632,7 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
         // matters: a source may settle that from its bounds (the same
         // answer, clearance_below being exact below its cutoff).
         if (c - moving_margin <= half_step_motion(twist, mover_speed_) ||
-            fixed.clearance_below(footprint_, pose, t, margin_ + 1e-9) - margin_ <= 0.0) {
+            (moved >= room_at_first && fixed.clearance_below(footprint_, pose, t, margin_ + 1e-9) - margin_ <= 0.0)) {
           contact = t;
           break;
         }
