@@ -92,7 +92,7 @@ struct Controller::LiveScanTest {
     for (std::size_t j = i + 1; j < frame.size() && take(j); ++j) {}
     if (n < kLiveSurfaceHits) return false;
     const double mean = sum / n;
-    if (mean <= kLiveNoiseStds * noise / std::sqrt(static_cast<double>(n)) + slack) return false;
+    if (mean <= kLiveMeanStds * noise / std::sqrt(static_cast<double>(n)) + slack) return false;
     // The surface along beam i: the map's edge there, less the mean offset.
     at = hit + (offsets[i] - mean) * frame.directions()[i];
     return outside_robot(at);
