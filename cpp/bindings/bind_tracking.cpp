@@ -114,6 +114,7 @@ void init_tracking(py::module_& m) {
       .def_readonly("moving", &Track::moving)
       .def_readonly("hits", &Track::hits)
       .def_readonly("last_seen", &Track::last_seen)
+      .def_readonly("last_fast", &Track::last_fast, "s, the last association at which a moving track's window speed held its label (moving_hold counts from it)")
       .def_readonly("age", &Track::age)
       .def_property_readonly("position_std", &Track::position_std)
       .def_property_readonly("speed_std", &Track::speed_std)

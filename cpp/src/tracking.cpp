@@ -280,11 +280,18 @@ void Tracker::relabel(Track& t, const Memory& memory) const {
   }
   if (t.status == TrackStatus::Lost) return;
   const double speed = t.window_velocity.norm();
-  if (!t.moving)
+  const bool fast = speed >= 0.5 * params_.moving_speed;
+  if (!t.moving) {
     t.moving = speed - params_.moving_sigmas * t.window_speed_std > params_.moving_speed &&
                (!has_scans_ || memory.displaced.size() >= kDisplacedUpdates);
-  else
-    t.moving = speed >= 0.5 * params_.moving_speed;
+    if (t.moving) t.moving_since = t.last_fast = newest;
+    return;
+  }
+  // Held only by a label earned over a whole window: noise that once passed
+  // for motion does not stand as a mover for moving_hold more.
+  const bool earned = t.last_fast - t.moving_since >= params_.moving_window - 1e-9;
+  t.moving = fast || (earned && newest - t.last_fast < params_.moving_hold - 1e-9);
+  if (fast) t.last_fast = newest;
 }
 
 // The newest of `items` (time-ordered pairs) at least half a window old:

@@ -2258,6 +2258,7 @@ class TrackerParams:
       moving_speed (m/s): a confirmed track whose window speed, less moving_sigmas std, exceeds this is moving
       moving_sigmas: std devs taken off the window speed before comparing it with moving_speed
       moving_window (s): the window speed is the slope of a line fitted to the centres this far back
+      moving_hold (s): a track labelled moving for a whole moving_window keeps its label this long after its window speed fell below half moving_speed: what paused (a robot waiting, a disc turning back) may go on
       prediction_window (s): the predicted velocity is the slope of the centres this far back (no farther than moving_window) where it departs from moving_window's by more than 1 std, else moving_window's
       free_margin (m): a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it
       max_speed (m/s): an association implying more speed is rejected
@@ -2283,6 +2284,7 @@ class TrackerParams:
     max_speed: typing.Any
     max_uncertainty: typing.Any
     measurement_std: typing.Any
+    moving_hold: typing.Any
     moving_sigmas: typing.Any
     moving_speed: typing.Any
     moving_window: typing.Any
@@ -2360,6 +2362,11 @@ class Track:
     @property
     def id(self) -> int:
         ...
+    @property
+    def last_fast(self) -> float:
+        """
+        s, the last association at which a moving track's window speed held its label (moving_hold counts from it)
+        """
     @property
     def last_seen(self) -> float:
         ...

@@ -400,6 +400,45 @@ TEST(Tracker, AMoverSeenFromTheFirstScanIsLabelledWithinFiveScans) {
     }
 }
 
+// A disc walks at 0.5 m/s for 2 s, then stands. Without a hold it is static
+// again about a second after it stopped (when its window no longer moves);
+// with moving_hold 2 s it stays a mover, nearly at rest, for 2 s more.
+TEST(Tracker, AMoverThatStopsKeepsItsLabelForMovingHold) {
+  const LaserScanner scanner(noisy_lidar(), nullptr);
+  const Vec2 start(3.0, -1.0), velocity(0.0, 0.5);
+  const double stop = 2.0;  // s
+  const auto centre = [&](double t) { return start + std::min(t, stop) * velocity; };
+  for (const double hold : {0.0, 2.0}) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      SCOPED_TRACE(::testing::Message() << "moving_hold " << hold << ", seed " << seed);
+      TrackerParams params;
+      params.moving_hold = hold;
+      Tracker tracker(params);
+      std::mt19937_64 rng(seed);
+      double last_labelled = -1.0;
+      for (int k = 0; k <= 60; ++k) {
+        const double t = k * kPeriod;
+        const Scan scan = scan_of(scanner, Pose2{}, {Disc{centre(t), 0.3}}, t, rng);
+        tracker.update(segment_scan(scan), t, &scan);
+        ASSERT_EQ(tracker.tracks().size(), 1u) << "t = " << t;
+        if (tracker.tracks()[0].moving) last_labelled = t;
+        if (t > stop + 1.5 && tracker.tracks()[0].moving) {
+          const auto discs = tracker.moving_discs();
+          ASSERT_EQ(discs.size(), 1u);
+          EXPECT_LT(discs[0].velocity.norm(), 0.2) << "t = " << t;
+        }
+      }
+      EXPECT_GE(last_labelled, stop + 0.5);
+      if (hold == 0.0) {
+        EXPECT_LE(last_labelled, stop + 1.2);
+      } else {
+        EXPECT_GE(last_labelled, stop + 2.5);
+        EXPECT_LE(last_labelled, stop + 3.2);
+      }
+    }
+  }
+}
+
 // A disc walking back and forth: 0.7 s after it turned, the prediction's
 // 0.3 s window holds only the way back, while the label's 1 s window still
 // straddles the turn (its slope about half the speed).

@@ -1323,7 +1323,7 @@ def test_scan_map(kw, layout, seed, marks, set_pose, keep, far):
 # Tracking
 # =============================================================================================
 TRACKER_DEFAULTS = dict(gate=1.0, gate_sigmas=4.0, accel_std=1.5, measurement_std=0.03, confirm_hits=3, lost_time=0.5,
-                        moving_speed=0.1, moving_sigmas=2.0, moving_window=1.0, free_margin=0.1, max_speed=3.0,
+                        moving_speed=0.1, moving_sigmas=2.0, moving_window=1.0, moving_hold=2.0, free_margin=0.1, max_speed=3.0,
                         uncertainty_sigmas=2.0, max_uncertainty=0.3, prediction_window=0.6)
 
 
@@ -1334,6 +1334,7 @@ def tracker_valid(k):
             and pos(k["measurement_std"], MAX_LENGTH) and 1 <= k["confirm_hits"] <= 10**6
             and pos(k["lost_time"], MAX_HORIZON) and nonneg(k["moving_speed"], MAX_SPEED)
             and nonneg(k["moving_sigmas"], 1e3) and pos(k["moving_window"], MAX_HORIZON)
+            and nonneg(k["moving_hold"], MAX_HORIZON)
             and pos(k["free_margin"], MAX_LENGTH) and pos(k["max_speed"], MAX_SPEED)
             and nonneg(k["uncertainty_sigmas"], 1e3) and nonneg(k["max_uncertainty"], MAX_LENGTH)
             and pos(k["prediction_window"], MAX_HORIZON))

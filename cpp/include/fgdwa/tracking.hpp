@@ -108,6 +108,7 @@ struct TrackerParams {
   double moving_speed = 0.1;
   double moving_sigmas = 2.0;
   double moving_window = 1.0;
+  double moving_hold = 2.0;
   // Shorter than the label's window, so that a turn or a reversal reaches the
   // prediction sooner; the label keeps the longer one, which a slow mover
   // needs to show its displacement above the noise, and the prediction too
@@ -137,6 +138,7 @@ struct TrackerParams {
     v.real("moving_speed", &P::moving_speed, "m/s", Bounds::at_least(0, kMaxSpeed), "a confirmed track whose window speed, less moving_sigmas std, exceeds this is moving");
     v.real("moving_sigmas", &P::moving_sigmas, "", Bounds::at_least(0, 1e3), "std devs taken off the window speed before comparing it with moving_speed");
     v.real("moving_window", &P::moving_window, "s", Bounds::positive(kMaxHorizon), "the window speed is the slope of a line fitted to the centres this far back");
+    v.real("moving_hold", &P::moving_hold, "s", Bounds::at_least(0, kMaxHorizon), "a track labelled moving for a whole moving_window keeps its label this long after its window speed fell below half moving_speed: what paused (a robot waiting, a disc turning back) may go on");
     v.real("prediction_window", &P::prediction_window, "s", Bounds::positive(kMaxHorizon), "the predicted velocity is the slope of the centres this far back (no farther than moving_window) where it departs from moving_window's by more than 1 std, else moving_window's");
     v.real("free_margin", &P::free_margin, "m", Bounds::positive(), "a hit counts as in space an earlier scan saw free when that scan's beams reached this far past it");
     v.real("max_speed", &P::max_speed, "m/s", Bounds::positive(kMaxSpeed), "an association implying more speed is rejected");
@@ -176,6 +178,8 @@ struct Track {
   double acceleration_std = std::numeric_limits<double>::infinity();
   int hits = 0;            // associations, the first cluster included
   double last_seen = 0.0;  // s, time of the last association
+  double moving_since = 0.0;  // s, the association at which the track was last labelled moving
+  double last_fast = 0.0;  // s, the last association at which a moving track's window speed held its label
   double age = 0.0;        // s since the first cluster
   // m, std along the position's most uncertain direction.
   double position_std() const;
