@@ -1323,8 +1323,8 @@ def test_scan_map(kw, layout, seed, marks, set_pose, keep, far):
 # Tracking
 # =============================================================================================
 TRACKER_DEFAULTS = dict(gate=1.0, gate_sigmas=4.0, accel_std=1.5, measurement_std=0.03, confirm_hits=3, lost_time=0.5,
-                        moving_speed=0.1, moving_sigmas=2.0, moving_window=1.0, moving_hold=2.0, free_margin=0.1, max_speed=3.0,
-                        uncertainty_sigmas=2.0, max_uncertainty=0.3, prediction_window=0.6)
+                        moving_speed=0.1, moving_sigmas=2.0, moving_window=1.0, moving_hold=2.0, free_margin=0.1,
+                        max_speed=3.0, uncertainty_sigmas=2.0, max_uncertainty=0.3, prediction_window=0.6)
 
 
 def tracker_valid(k):
