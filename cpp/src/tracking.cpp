@@ -44,34 +44,48 @@ constexpr double kOccludedStdFactor = 4.0;
 // window, so one stray reading does not do it.
 constexpr double kDisplacedShare = 0.2;
 constexpr std::size_t kDisplacedUpdates = 3;
+// Std devs of a hit's range noise the other scan's beams must have seen
+// through it by, across their lines of sight.
+constexpr double kLateralSigmas = 2.0;
 // Std devs by which the prediction window's slope must depart from the moving
 // window's before the prediction takes it.
 constexpr double kChangeSigmas = 1.0;
 
-// Whether `scan` saw through `p`: its beam toward p and both neighbours
-// reached more than `margin` past it (or had no hit within max range, which
-// lies beyond). The neighbours count because two scans' beams do not line up
-// and an edge beam of one may slip past an object the other's hits.
-bool seen_through(const Scan& scan, const Vec2& p, double margin) {
+// Whether `scan` saw through `p`, a hit another scan took from `from`: every
+// beam passing within the hit's lateral noise of p (and at least its own and
+// both neighbours) reached more than `margin` past it (or had no hit within
+// max range, which lies beyond). The neighbours count because two scans'
+// beams do not line up. The hit's range noise (`noise`, along its own beam)
+// falls across this scan's beams as far as the two lines of sight part: a
+// static face this scan saw edge-on is hit from the side later, and its noisy
+// hits lie beside the face, where this scan's beams grazed past.
+bool seen_through(const Scan& scan, const Vec2& p, const Vec2& from, double margin, double noise) {
   if (!(scan.angle_increment > 0.0)) return false;
   const Vec2 d = p - scan.pose.position();
-  const double reach = d.norm() + margin;
+  const double range = d.norm();
+  const double reach = range + margin;
   double offset = angle_difference(std::atan2(d.y(), d.x()), scan.pose.theta) - scan.angle_min;
   if (offset < 0.0) offset += 2.0 * M_PI;
   const long beam = std::lround(offset / scan.angle_increment);
   const long n = static_cast<long>(scan.ranges.size());
-  for (long j = beam - 1; j <= beam + 1; ++j) {
-    if (j < 0 || j >= n) return false;
+  const Vec2 e = p - from;
+  const double sight = range * e.norm();
+  const double lateral = sight > 1e-12 ? noise * std::abs(d.x() * e.y() - d.y() * e.x()) / sight : 0.0;
+  const double band = range > lateral ? std::asin(lateral / range) : M_PI;
+  const long half = std::max(1L, static_cast<long>(std::ceil(band / scan.angle_increment)));
+  if (beam - half < 0 || beam + half >= n) return false;
+  for (long j = beam - half; j <= beam + half; ++j) {
     const double r = scan.ranges[static_cast<std::size_t>(j)];
     if (std::isfinite(r) ? r <= reach : reach >= scan.max_range) return false;
   }
   return true;
 }
 
-// Whether enough of `points` lie where `scan` saw through.
-bool share_seen_through(const Scan& scan, const std::vector<Vec2>& points, double margin) {
+// Whether enough of `points` (hits taken from `from`) lie where `scan` saw through.
+bool share_seen_through(const Scan& scan, const std::vector<Vec2>& points, const Vec2& from, double margin,
+                        double noise) {
   std::size_t through = 0;
-  for (const Vec2& p : points) through += seen_through(scan, p, margin);
+  for (const Vec2& p : points) through += seen_through(scan, p, from, margin, noise);
   return through >= 2 && static_cast<double>(through) >= kDisplacedShare * static_cast<double>(points.size());
 }
 
@@ -314,11 +328,13 @@ const Item* Tracker::reference_of(const std::deque<std::pair<double, Item>>& ite
 bool Tracker::displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan,
                                    double time) const {
   // Its leading side where the earlier scan saw through ...
+  const double noise = kLateralSigmas * params_.measurement_std;
   const Scan* earlier = reference_of(scans_, time);
-  if (earlier && share_seen_through(*earlier, cluster.points, params_.free_margin)) return true;
+  if (earlier && share_seen_through(*earlier, cluster.points, scan.pose.position(), params_.free_margin, noise))
+    return true;
   // ... or its trailing side, as seen then, where this scan sees through.
-  const std::vector<Vec2>* before = reference_of(memory.shapes, time);
-  return before && share_seen_through(scan, *before, params_.free_margin);
+  const Shape* before = reference_of(memory.shapes, time);
+  return before && share_seen_through(scan, before->points, before->from, params_.free_margin, noise);
 }
 
 // An occluded cluster that a known track's disc may explain is refitted with
@@ -381,7 +397,7 @@ void Tracker::update(const std::vector<Cluster>& given, double time, const Scan*
         Centre{time, cluster.center, cluster.occluded ? 1.0 / (kOccludedStdFactor * kOccludedStdFactor) : 1.0});
     if (scan) {
       if (displaces_free_space(memory, cluster, *scan, time)) memory.displaced.push_back(time);
-      memory.shapes.emplace_back(time, cluster.points);
+      memory.shapes.emplace_back(time, Shape{scan->pose.position(), cluster.points});
     }
     while (!memory.centres.empty() && memory.centres.front().time < oldest) memory.centres.pop_front();
     while (!memory.shapes.empty() && memory.shapes.front().first < oldest) memory.shapes.pop_front();
@@ -469,7 +485,7 @@ void Tracker::update(const std::vector<Cluster>& given, double time, const Scan*
     // A track this scan missed, whose predicted centre it saw through, is not
     // where it was predicted: kept, it would stand as a phantom for up to
     // 2 lost_time (the object, if near, has started a track of its own).
-    if (unseen > 0.0 && scan && seen_through(*scan, t.position, params_.free_margin)) continue;
+    if (unseen > 0.0 && scan && seen_through(*scan, t.position, scan->pose.position(), params_.free_margin, 0.0)) continue;
     if (unseen > params_.lost_time) t.status = TrackStatus::Lost;
     if (kept != i) {
       tracks_[kept] = std::move(t);

@@ -243,10 +243,15 @@ class Tracker {
     Vec2 position;  // m
     double weight;
   };
+  // The hits of a cluster taken and where the scan took them from.
+  struct Shape {
+    Vec2 from;                 // m
+    std::vector<Vec2> points;  // m
+  };
   struct Memory {
-    Vec2 seen_position;                                        // m, after its last association
-    std::deque<Centre> centres;                                // the clusters' centres within moving_window
-    std::deque<std::pair<double, std::vector<Vec2>>> shapes;   // (s, m) hits of the clusters taken, within moving_window
+    Vec2 seen_position;                            // m, after its last association
+    std::deque<Centre> centres;                    // the clusters' centres within moving_window
+    std::deque<std::pair<double, Shape>> shapes;   // (s, -) the clusters taken within moving_window
     std::deque<double> displaced;                              // s, updates whose hits displaced free space
   };
   // A line through the centres since `since` (s): its slope and that slope's
