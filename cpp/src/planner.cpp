@@ -297,6 +297,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
   result_.min_clearance.resize(n);
   result_.moving_contact.resize(n);
   escape_.assign(n, -std::numeric_limits<double>::infinity());
+  shallowest_.assign(n, -std::numeric_limits<double>::infinity());
   result_.free_distance.resize(n);
   const double inf = std::numeric_limits<double>::infinity();
   // A start already in contact is not held against the first step, so the robot can still leave.
@@ -483,7 +484,8 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
       double closest = std::numeric_limits<double>::infinity();
       const Twist fastest{speed.longest / params_.dt, max_turn / params_.dt};
       result_.moving_contact[i] = first_moving_contact(fastest, poses, world, std::max(margin, 0.0), last,
-                                                       moving_at_start, result_.min_clearance[i], closest, escape_[i]);
+                                                       moving_at_start, result_.min_clearance[i], closest, escape_[i],
+                                                       shallowest_[i]);
       // An evasion must not trade the mover for a wall.
       escape_[i] = std::min(escape_[i], result_.min_clearance[i]);
       result_.min_clearance[i] = std::min(result_.min_clearance[i], closest);
@@ -496,11 +498,12 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
 
 double LocalPlanner::first_moving_contact(const Twist& cmd, const Trajectory& poses, const ClearanceSource& world,
                                           double margin, int last, double at_start, double fixed_clearance,
-                                          double& closest, double& escape) const {
+                                          double& closest, double& escape, double& shallowest) const {
   const double half_step = half_step_motion(cmd, mover_speed_);
   double contact = std::numeric_limits<double>::infinity();
   closest = at_start;
   escape = closest;
+  shallowest = closest;
   if (closest - margin <= 0.0) contact = 0.0;
   // A clearance from here up decides no contact (a nanometre over, for the
   // sums' rounding) and, taken the least of with fixed_clearance, changes
@@ -512,6 +515,7 @@ double LocalPlanner::first_moving_contact(const Twist& cmd, const Trajectory& po
     closest = std::min(closest, c);
     if (t - params_.dt < moving_horizon_) {
       escape = c;
+      shallowest = std::min(shallowest, c);
       if (std::isinf(contact) && c - margin <= half_step) contact = t;
     }
   }
@@ -600,9 +604,12 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
   response_step(first.v, result_.samples[i].v, limits_.acc_v, limits_.braking_v(), response_, params_.dt);
   response_step(first.omega, result_.samples[i].omega, limits_.acc_omega, limits_.braking_omega(), response_, params_.dt);
   const Trajectory& poses = rollouts_[i];
+  // A contact in the first period cannot be helped by what follows it: of
+  // those ways into a mover the shallowest is the least harm, not the one
+  // that comes out farthest beyond it (straight through an oncoming disc).
+  if (!(result_.moving_contact[i] > params_.dt) || poses.empty())
+    return Escape{result_.moving_contact[i], shallowest_[i]};
   Escape best{result_.moving_contact[i], -std::numeric_limits<double>::infinity()};
-  // A contact in the first period cannot be helped by what follows it.
-  if (!(result_.moving_contact[i] > params_.dt) || poses.empty()) return best;
   const ClearanceSource& fixed = world.static_part();
   const double moving_margin = std::max(margin_, 0.0);  // as first_moving_contact counts it
   // No footprint point moves farther than the path driven plus the

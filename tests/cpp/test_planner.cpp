@@ -934,6 +934,49 @@ TEST(LocalPlanner, AnEvasionTakesTheSampleAfterWhichTheRobotGetsAwayBest) {
   EXPECT_GT(better_than_latest_arc, 0);
 }
 
+// A disc already at the robot and coming on: every sample meets it in the
+// first period, so no continuation helps. The planner drives the sample that
+// goes least deep into it over the horizon, not the one that would come out
+// farthest beyond it: driving at it, through it, ends farthest away.
+TEST(LocalPlanner, WhenEveryWayMeetsAMoverAtOnceTheShallowestWins) {
+  PlannerParams params;
+  const Footprint footprint = Footprint::circle(0.2);
+  LocalPlanner planner(RobotLimits{}, footprint, params);
+  for (const double lateral : {-0.1, 0.0, 0.1}) {
+    SCOPED_TRACE(::testing::Message() << "disc " << lateral << " m to the side");
+    const Disc disc{Vec2(0.45, lateral), 0.24, Vec2(-0.2, 0.0)};
+    const FieldClearance world(nullptr, {disc});
+    const RobotState state{Pose2{}, Twist{0.3, 0.0}};
+    const PlanResult& r = planner.plan(state, Vec2(5.0, 0.0), world);
+    ASSERT_EQ(r.status, Status::Evading);
+    ASSERT_GE(r.best_index, 0);
+    // The least clearance to the disc from the start through the horizon, brute force.
+    const auto deepest = [&](std::size_t i) {
+      double low = world.moving_clearance(footprint, state.pose, 0.0);
+      for (int k = 0; (k + 1) * params.dt - params.dt < params.moving_horizon - 1e-9; ++k)
+        low = std::min(low, world.moving_clearance(footprint, planner.rollouts()[i][static_cast<std::size_t>(k)],
+                                                   (k + 1) * params.dt));
+      return low;
+    };
+    double shallowest = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < r.samples.size(); ++i) {
+      ASSERT_EQ(r.reasons[i], RejectReason::Moving);
+      ASSERT_LE(r.moving_contact[i], params.dt);
+      shallowest = std::max(shallowest, deepest(i));
+    }
+    const auto chosen = static_cast<std::size_t>(r.best_index);
+    EXPECT_NEAR(deepest(chosen), shallowest, 1e-9);
+    // Straight through it at the fastest speed sampled goes deeper.
+    std::size_t through = 0;
+    for (std::size_t i = 1; i < r.samples.size(); ++i)
+      if (std::make_pair(r.samples[i].v, -std::abs(r.samples[i].omega)) >
+          std::make_pair(r.samples[through].v, -std::abs(r.samples[through].omega)))
+        through = i;
+    EXPECT_GT(deepest(chosen), deepest(through) + 0.03)
+        << "chose (" << r.samples[chosen].v << ", " << r.samples[chosen].omega << ")";
+  }
+}
+
 // A disc coming straight at the standing robot meets it 0.85 s ahead. At
 // 1 m/s the rejection's horizon is moving_horizon (1 s): standing still is
 // rejected. At 3 m/s it is what the disc takes to travel moving_reach (2 m,

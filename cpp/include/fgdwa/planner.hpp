@@ -249,6 +249,7 @@ class LocalPlanner {
   std::vector<double> travel_;   // rows x (steps + 1), from 0
   std::vector<SpeedProfile> profiles_;
   std::vector<double> escape_;  // per sample: clearance to the movers at the end of the horizon
+  std::vector<double> shallowest_;  // per sample: its least clearance to the movers within the horizon
   double moving_horizon_ = 0.0;  // s, this cycle's: moving_horizon, shortened by moving_reach
   double mover_speed_ = 0.0;     // m/s, this cycle's world's fastest obstacle (speed plus growth)
   // The velocity critic's index (none: past the end), and the weights this
@@ -270,10 +271,11 @@ class LocalPlanner {
   // clearance to them at the last pose within moving_horizon. Both are exact
   // below `fixed_clearance` (the rollout's least clearance to the fixed
   // world, which the caller takes the least of with each) and elsewhere at
-  // least that.
+  // least that. `shallowest`: its least clearance to them over the start and
+  // the poses up to the last within moving_horizon, exact when it meets them.
   double first_moving_contact(const Twist& cmd, const Trajectory& poses, const ClearanceSource& world,
                               double margin, int last, double at_start, double fixed_clearance, double& closest,
-                              double& escape) const;
+                              double& escape, double& shallowest) const;
   // A contact between two poses a period apart leaves one of them within half
   // the relative motion of the step: the robot's drive and turn at `twist` and
   // the obstacles' travel at `obstacle_speed` (m/s).
