@@ -51,15 +51,11 @@ constexpr double kLateralSigmas = 2.0;
 // window's before the prediction takes it.
 constexpr double kChangeSigmas = 1.0;
 
-// Whether `scan` saw through `p`, a hit another scan took from `from`: every
-// beam passing within the hit's lateral noise of p (and at least its own and
-// both neighbours) reached more than `margin` past it (or had no hit within
-// max range, which lies beyond). The neighbours count because two scans'
-// beams do not line up. The hit's range noise (`noise`, along its own beam)
-// falls across this scan's beams as far as the two lines of sight part: a
-// static face this scan saw edge-on is hit from the side later, and its noisy
-// hits lie beside the face, where this scan's beams grazed past.
-bool seen_through(const Scan& scan, const Vec2& p, const Vec2& from, double margin, double noise) {
+// Whether `scan` saw through `p`: every beam passing within `lateral` (m)
+// of p, and at least its own and both neighbours, reached more than `margin`
+// past it (or had no hit within max range, which lies beyond). The
+// neighbours count because two scans' beams do not line up.
+bool seen_through(const Scan& scan, const Vec2& p, double margin, double lateral = 0.0) {
   if (!(scan.angle_increment > 0.0)) return false;
   const Vec2 d = p - scan.pose.position();
   const double range = d.norm();
@@ -68,9 +64,6 @@ bool seen_through(const Scan& scan, const Vec2& p, const Vec2& from, double marg
   if (offset < 0.0) offset += 2.0 * M_PI;
   const long beam = std::lround(offset / scan.angle_increment);
   const long n = static_cast<long>(scan.ranges.size());
-  const Vec2 e = p - from;
-  const double sight = range * e.norm();
-  const double lateral = sight > 1e-12 ? noise * std::abs(d.x() * e.y() - d.y() * e.x()) / sight : 0.0;
   const double band = range > lateral ? std::asin(lateral / range) : M_PI;
   const long half = std::max(1L, static_cast<long>(std::ceil(band / scan.angle_increment)));
   if (beam - half < 0 || beam + half >= n) return false;
@@ -81,11 +74,24 @@ bool seen_through(const Scan& scan, const Vec2& p, const Vec2& from, double marg
   return true;
 }
 
-// Whether enough of `points` (hits taken from `from`) lie where `scan` saw through.
+// How far a hit at `p` taken from `from`, with range noise `noise` along its
+// own line of sight, may lie across the line of sight from `origin`: the
+// noise times the sine of the angle between the two. A static face one scan
+// saw edge-on is hit from the side by a later one, whose noisy hits lie
+// beside the face, where the earlier beams grazed past.
+double across_sight(const Vec2& origin, const Vec2& from, const Vec2& p, double noise) {
+  const Vec2 d = p - origin, e = p - from;
+  const double norms = d.norm() * e.norm();
+  return norms > 1e-12 ? noise * std::abs(d.x() * e.y() - d.y() * e.x()) / norms : 0.0;
+}
+
+// Whether enough of `points` (hits taken from `from`, with range noise
+// `noise`) lie where `scan` saw through.
 bool share_seen_through(const Scan& scan, const std::vector<Vec2>& points, const Vec2& from, double margin,
                         double noise) {
+  const Vec2 origin = scan.pose.position();
   std::size_t through = 0;
-  for (const Vec2& p : points) through += seen_through(scan, p, from, margin, noise);
+  for (const Vec2& p : points) through += seen_through(scan, p, margin, across_sight(origin, from, p, noise));
   return through >= 2 && static_cast<double>(through) >= kDisplacedShare * static_cast<double>(points.size());
 }
 
@@ -485,7 +491,7 @@ void Tracker::update(const std::vector<Cluster>& given, double time, const Scan*
     // A track this scan missed, whose predicted centre it saw through, is not
     // where it was predicted: kept, it would stand as a phantom for up to
     // 2 lost_time (the object, if near, has started a track of its own).
-    if (unseen > 0.0 && scan && seen_through(*scan, t.position, scan->pose.position(), params_.free_margin, 0.0)) continue;
+    if (unseen > 0.0 && scan && seen_through(*scan, t.position, params_.free_margin)) continue;
     if (unseen > params_.lost_time) t.status = TrackStatus::Lost;
     if (kept != i) {
       tracks_[kept] = std::move(t);

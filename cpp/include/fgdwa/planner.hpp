@@ -284,7 +284,9 @@ class LocalPlanner {
   // first contact (s, +inf: none within the rollout) with a mover or a wall
   // over continuations that head for kEscapeTargets^2 commands spread over the
   // whole velocity range at the acceleration limits, then the most room (m) to
-  // the movers along it.
+  // the movers along it. A sample that meets a mover within its first period
+  // has no continuation that helps: its room is its own least clearance to
+  // the movers within the horizon (the shallowest way in wins).
   struct Escape {
     double contact = -std::numeric_limits<double>::infinity();
     double room = -std::numeric_limits<double>::infinity();

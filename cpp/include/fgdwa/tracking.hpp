@@ -252,7 +252,7 @@ class Tracker {
     Vec2 seen_position;                            // m, after its last association
     std::deque<Centre> centres;                    // the clusters' centres within moving_window
     std::deque<std::pair<double, Shape>> shapes;   // (s, -) the clusters taken within moving_window
-    std::deque<double> displaced;                              // s, updates whose hits displaced free space
+    std::deque<double> displaced;                  // s, updates whose hits displaced free space
   };
   // A line through the centres since `since` (s): its slope and that slope's
   // std (infinite with fewer than three centres).
