@@ -492,6 +492,42 @@ TEST(FieldClearance, StillAndMovingDiscsGiveThePlainMinimumOverEveryDisc) {
   }
 }
 
+// A polygon among many still points (live lidar hits along a wall): each
+// point settled by its distance from the footprint's bounding box, the rest
+// measured; the least of each point's signed distance bit for bit, and below
+// a cutoff the same bits, above it a value from the cutoff up.
+TEST(FieldClearance, StillPointsGiveAPolygonTheLeastOfEachAloneBitForBit) {
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> along(-1.5, 1.5), off(-0.05, 0.05), u(-1.0, 1.0), radius(0.0, 0.1);
+  const std::vector<Footprint> shapes = {
+      Footprint::polygon({{-0.254, -0.215}, {0.254, -0.215}, {0.254, 0.215}, {-0.254, 0.215}}),
+      Footprint::polygon({{-0.2, -0.2}, {0.4, 0.0}, {-0.2, 0.2}})};
+  for (int world = 0; world < 40; ++world) {
+    // Points along a wall at y = 0.5, some with a radius, a few scattered.
+    std::vector<Disc> discs;
+    for (int j = 0; j < 20 + 10 * (world % 20); ++j)
+      discs.push_back(Disc{Vec2(along(rng), 0.5 + off(rng)), j % 7 == 0 ? radius(rng) : 0.0, Vec2::Zero()});
+    for (int j = 0; j < 5; ++j) discs.push_back(Disc{Vec2(2.0 * u(rng), 2.0 * u(rng)), 0.0, Vec2::Zero()});
+    const PlannerQueries source(nullptr, discs);
+    for (int trial = 0; trial < 50; ++trial) {
+      const Pose2 pose{u(rng), 0.5 * u(rng), M_PI * u(rng)};
+      for (const Footprint& fp : shapes) {
+        double brute = std::numeric_limits<double>::infinity();
+        for (const Disc& d : discs) brute = std::min(brute, fp.signed_distance(pose, d.center) - d.radius);
+        EXPECT_EQ(source.clearance(fp, pose, 0.0), brute);
+        for (const double cutoff : {brute - 0.01, brute + 1e-12, brute + 0.05}) {
+          const double below = source.clearance_below(fp, pose, 0.0, cutoff);
+          if (brute < cutoff) {
+            EXPECT_EQ(below, brute);
+          } else {
+            EXPECT_GE(below, cutoff);
+          }
+        }
+      }
+    }
+  }
+}
+
 // A polygon against many movers: the nearest by the circumscribed circle is
 // measured first and settles the others; the result is the least of each
 // disc's clearance alone, bit for bit, with the discs in any order and more

@@ -163,6 +163,10 @@ class FieldClearance : public ClearanceSource {
     // min over the discs of (|p - centre| - inflate) - radius: a circle's
     // clearance when inflate is its radius; +inf without any.
     double distance(double px, double py, double inflate) const;
+    // The least signed distance minus radius from a polygon footprint at
+    // pose (px, py) with heading cos c and sin s: exact below `cutoff`,
+    // otherwise a value from cutoff up; +inf without any disc.
+    double polygon_distance(const Footprint& footprint, double px, double py, double c, double s, double cutoff) const;
   };
   StaticDiscs static_discs_;
   std::vector<Disc> moving_;
