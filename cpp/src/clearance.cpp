@@ -98,24 +98,89 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
     obstacle_speed_ = std::max(obstacle_speed_, d.top_speed() + d.growth);
   }
   discs_ = std::move(discs);
-  static_discs_ = StaticDiscs{};
   moving_.clear();
-  for (const Disc& d : discs_) {
-    if (d.moves()) {
-      moving_.push_back(d);
-    } else {
-      static_discs_.x.push_back(d.center.x());
-      static_discs_.y.push_back(d.center.y());
-      static_discs_.radius.push_back(d.radius);
-    }
-  }
+  std::vector<Disc> still;
+  for (const Disc& d : discs_) (d.moves() ? moving_ : still).push_back(d);
+  static_discs_.assign(still);
   split_moving();
+}
+
+void FieldClearance::StaticDiscs::assign(const std::vector<Disc>& still) {
+  *this = StaticDiscs{};
+  const std::size_t n = still.size();
+  // Below this many, one vectorised pass over them all costs no more than buckets.
+  constexpr std::size_t kBucketed = 24;
+  constexpr double kSide = 0.25;  // m: a few lidar hits along a wall per bucket
+  double x1 = 0.0, y1 = 0.0;
+  if (n >= kBucketed) {
+    x0 = x1 = still[0].center.x();
+    y0 = y1 = still[0].center.y();
+    for (const Disc& d : still) {
+      x0 = std::min(x0, d.center.x()), x1 = std::max(x1, d.center.x());
+      y0 = std::min(y0, d.center.y()), y1 = std::max(y1, d.center.y());
+      largest_radius = std::max(largest_radius, d.radius);
+    }
+    // Wider buckets where the discs spread far, so there are never more
+    // buckets than a few per disc.
+    const double count = static_cast<double>(n);
+    side = std::max({kSide, std::sqrt((x1 - x0) * (y1 - y0) / (2.0 * count)), std::max(x1 - x0, y1 - y0) / (2.0 * count)});
+    cols = static_cast<int>(std::floor((x1 - x0) / side)) + 1;
+    rows = static_cast<int>(std::floor((y1 - y0) / side)) + 1;
+  }
+  const auto bucket = [&](const Disc& d) -> std::size_t {
+    if (cols == 0) return 0;
+    const int col = std::min(cols - 1, static_cast<int>(std::floor((d.center.x() - x0) / side)));
+    const int row = std::min(rows - 1, static_cast<int>(std::floor((d.center.y() - y0) / side)));
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(col);
+  };
+  const std::size_t buckets = cols == 0 ? 1 : static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+  start.assign(buckets + 1, 0);
+  for (const Disc& d : still) ++start[bucket(d) + 1];
+  for (std::size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  x.resize(n), y.resize(n), radius.resize(n);
+  for (const Disc& d : still) {
+    const std::uint32_t at = next[bucket(d)]++;
+    x[at] = d.center.x(), y[at] = d.center.y(), radius[at] = d.radius;
+  }
+}
+
+template <class Run>
+void FieldClearance::StaticDiscs::near(double px, double py, double reach, Run run) const {
+  if (x.empty()) return;
+  if (cols == 0 || !std::isfinite(reach) || !std::isfinite(px) || !std::isfinite(py)) {
+    run(std::size_t{0}, x.size());
+    return;
+  }
+  if (reach < 0.0) return;
+  // Clamped, so that a square reaching past the buckets takes the edge ones
+  // (more discs than needed never change a minimum; fewer would).
+  const auto index = [&](double coordinate, double origin, int count) {
+    return static_cast<int>(std::clamp(std::floor((coordinate - origin) / side), 0.0, static_cast<double>(count - 1)));
+  };
+  const int c0 = index(px - reach, x0, cols), c1 = index(px + reach, x0, cols);
+  const int r0 = index(py - reach, y0, rows), r1 = index(py + reach, y0, rows);
+  for (int row = r0; row <= r1; ++row) {
+    const std::size_t first = start[static_cast<std::size_t>(row) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c0)];
+    const std::size_t last = start[static_cast<std::size_t>(row) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(c1) + 1];
+    if (last > first) run(first, last - first);
+  }
 }
 
 double FieldClearance::StaticDiscs::distance(double px, double py, double inflate) const {
   double best = std::numeric_limits<double>::infinity();
   detail::lower_to_discs(&px, &py, 1, x.data(), y.data(), radius.data(), x.size(), inflate, &best);
   return best;
+}
+
+double FieldClearance::StaticDiscs::distance_below(double px, double py, double inflate, double cutoff) const {
+  double best = std::numeric_limits<double>::infinity();
+  // A disc below the cutoff has its centre within inflate + cutoff + its
+  // radius (a micrometre over, for the rounding of the buckets' edges).
+  near(px, py, inflate + cutoff + largest_radius + 1e-6, [&](std::size_t first, std::size_t count) {
+    detail::lower_to_discs(&px, &py, 1, x.data() + first, y.data() + first, radius.data() + first, count, inflate, &best);
+  });
+  return std::min(best, cutoff);
 }
 
 double FieldClearance::StaticDiscs::polygon_distance(const Footprint& footprint, double px, double py, double c,
@@ -140,18 +205,26 @@ double FieldClearance::StaticDiscs::polygon_distance(const Footprint& footprint,
     return std::max(std::max(x_lo - q.x(), q.x() - x_hi), std::max(y_lo - q.y(), q.y() - y_hi)) - radius[j] - 1e-9;
   };
   const auto measure = [&](std::size_t j) { return footprint.signed_distance_in_frame(frame(j)) - radius[j]; };
-  // The disc of the least bound first, so that its measure settles the rest by their bounds.
+  // The disc of the least bound first, so that its measure settles the rest
+  // by their bounds; only discs whose centre lies within the circumscribed
+  // radius and the cutoff can come below it.
   std::size_t nearest = 0;
   double nearest_low = std::numeric_limits<double>::infinity();
-  for (std::size_t j = 0; j < x.size(); ++j) {
-    const double low = bound(j);
-    if (low < nearest_low) nearest = j, nearest_low = low;
-  }
-  if (nearest_low >= cutoff) return nearest_low;
+  const double reach = footprint.radius() + cutoff + largest_radius + 1e-6;
+  near(px, py, reach, [&](std::size_t first, std::size_t count) {
+    for (std::size_t j = first; j < first + count; ++j) {
+      const double low = bound(j);
+      if (low < nearest_low) nearest = j, nearest_low = low;
+    }
+  });
+  if (nearest_low >= cutoff) return cutoff;
   double best = measure(nearest);
-  for (std::size_t j = 0; j < x.size(); ++j)
-    if (j != nearest && bound(j) < std::min(best, cutoff)) best = std::min(best, measure(j));
-  return best;
+  near(px, py, reach, [&](std::size_t first, std::size_t count) {
+    for (std::size_t j = first; j < first + count; ++j)
+      if (j != nearest && bound(j) < std::min(best, cutoff)) best = std::min(best, measure(j));
+  });
+  // At or above the cutoff, a disc passed over may hold a lower value, though none below the cutoff.
+  return std::min(best, cutoff);
 }
 
 // The static part shares the fields: new fields are handed to it, and only
@@ -627,7 +700,8 @@ double FieldClearance::clearance_below(const Footprint& footprint, const Pose2& 
   double best = field_clearance(field_.get(), footprint, at, cutoff);
   if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, at, std::min(best, cutoff)));
   if (footprint.is_circle()) {
-    if (!static_discs_.x.empty()) best = std::min(best, static_discs_.distance(pose.x, pose.y, footprint.radius()));
+    if (!static_discs_.x.empty())
+      best = std::min(best, static_discs_.distance_below(pose.x, pose.y, footprint.radius(), std::min(best, cutoff)));
   } else if (!static_discs_.x.empty()) {
     best = std::min(best, static_discs_.polygon_distance(footprint, pose.x, pose.y, at.c, at.s, std::min(best, cutoff)));
   }

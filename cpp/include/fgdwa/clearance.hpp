@@ -4,6 +4,7 @@
 // discs) is the fast path, `CollisionWorld` (FCL, collision.hpp) the exact one.
 #include <algorithm>
 #include <limits>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -159,13 +160,29 @@ class FieldClearance : public ClearanceSource {
   // obstacles (zero-radius discs) cost about what a grid does. The others stay
   // in moving_.
   struct StaticDiscs {
+    // Sorted bucket by bucket (row-major), so that the discs of a row of
+    // buckets lie side by side; the order changes no minimum.
     std::vector<double> x, y, radius;
+    // Square buckets of side `side` from (x0, y0): bucket b = row * cols + col
+    // holds the discs [start[b], start[b + 1]). No buckets for a few discs.
+    double x0 = 0.0, y0 = 0.0, side = 0.0, largest_radius = 0.0;
+    int cols = 0, rows = 0;
+    std::vector<std::uint32_t> start;
+    void assign(const std::vector<Disc>& still);
+    // Calls run(first, count) for runs of discs holding every disc whose
+    // centre lies within `reach` of (px, py) (and maybe others); all of them
+    // at once without buckets or with a reach that is not finite.
+    template <class Run>
+    void near(double px, double py, double reach, Run run) const;
     // min over the discs of (|p - centre| - inflate) - radius: a circle's
     // clearance when inflate is its radius; +inf without any.
     double distance(double px, double py, double inflate) const;
+    // The same below `cutoff`, bit for bit; otherwise `cutoff`. Looks only at
+    // the discs near enough to come below it.
+    double distance_below(double px, double py, double inflate, double cutoff) const;
     // The least signed distance minus radius from a polygon footprint at
     // pose (px, py) with heading cos c and sin s: exact below `cutoff`,
-    // otherwise a value from cutoff up; +inf without any disc.
+    // otherwise a value from cutoff up to it.
     double polygon_distance(const Footprint& footprint, double px, double py, double c, double s, double cutoff) const;
   };
   StaticDiscs static_discs_;
