@@ -619,27 +619,52 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
   const double room_at_first = fixed.clearance(footprint_, poses[0], params_.dt) - margin_ - 1e-9;
   const double reach = footprint_.radius();
   const int n_targets = kEscapeTargets;
-  for (int a = 0; a < n_targets; ++a) {
-    const double v_target = limits_.v_min + (limits_.v_max - limits_.v_min) * a / (n_targets - 1);
-    for (int b = 0; b < n_targets; ++b) {
-      const double omega_target = limits_.omega_max * (2.0 * b / (n_targets - 1) - 1.0);
+  const std::size_t steps = static_cast<std::size_t>(std::max(n_steps_, 1));
+  // A continuation's headings depend on its turn alone: worked out once for every speed.
+  std::vector<double> omegas(steps), thetas(steps), cosines(steps), sines(steps);
+  for (int b = 0; b < n_targets; ++b) {
+    const double omega_target = limits_.omega_max * (2.0 * b / (n_targets - 1) - 1.0);
+    double omega = first.omega, theta = poses[0].theta;
+    for (int k = 1; k < n_steps_; ++k) {
+      const auto j = static_cast<std::size_t>(k);
+      omega = ramp(omega, omega_target, limits_.acc_omega, limits_.braking_omega(), params_.dt);
+      // As unicycle_step turns, then drives along the new heading.
+      theta = wrap_angle(theta + omega * params_.dt);
+      omegas[j] = omega, thetas[j] = theta, cosines[j] = std::cos(theta), sines[j] = std::sin(theta);
+    }
+    for (int a = 0; a < n_targets; ++a) {
+      const double v_target = limits_.v_min + (limits_.v_max - limits_.v_min) * a / (n_targets - 1);
       Pose2 pose = poses[0];
       Twist twist = first;
       double contact = std::numeric_limits<double>::infinity(), room = std::numeric_limits<double>::infinity();
-      double moved = 0.0;  // the most any footprint point has moved from poses[0]
+      // The most any footprint point has moved since the last pose whose
+      // clearance from the fixed world is known (poses[0] first), and how
+      // much room that one had beyond the margin: until the motion uses it
+      // up, the fixed world cannot come within the margin (no look-up, the
+      // same answer).
+      double moved = 0.0, anchor_room = room_at_first;
       for (int k = 1; k < n_steps_; ++k) {
+        const auto j = static_cast<std::size_t>(k);
         twist.v = ramp(twist.v, v_target, limits_.acc_v, limits_.braking_v(), params_.dt);
-        twist.omega = ramp(twist.omega, omega_target, limits_.acc_omega, limits_.braking_omega(), params_.dt);
-        pose = unicycle_step(pose, twist, params_.dt);
+        twist.omega = omegas[j];
+        pose.theta = thetas[j];
+        pose.x = pose.x + twist.v * cosines[j] * params_.dt;
+        pose.y = pose.y + twist.v * sines[j] * params_.dt;
         moved += (std::abs(twist.v) + reach * std::abs(twist.omega)) * params_.dt;
         const double t = (k + 1) * params_.dt;
         const double c = world.moving_clearance(footprint_, pose, t);
         room = std::min(room, c);
-        // Only whether the fixed world's clearance reaches the margin
-        // matters: a source may settle that from its bounds (the same
-        // answer, clearance_below being exact below its cutoff).
-        if (c - moving_margin <= half_step_motion(twist, mover_speed_) ||
-            (moved >= room_at_first && fixed.clearance_below(footprint_, pose, t, margin_ + 1e-9) - margin_ <= 0.0)) {
+        bool hit = c - moving_margin <= half_step_motion(twist, mover_speed_);
+        if (!hit && moved >= anchor_room) {
+          // Only whether the margin is reached matters: a source may settle
+          // that from its bounds (exact below the cutoff), and what it
+          // answers above it is still room the next steps may use.
+          const double fixed_room = fixed.clearance_below(footprint_, pose, t, margin_ + 1e-9) - margin_;
+          hit = fixed_room <= 0.0;
+          moved = 0.0;
+          anchor_room = fixed_room - 1e-9;
+        }
+        if (hit) {
           contact = t;
           break;
         }
