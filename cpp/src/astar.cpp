@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 #include <queue>
+#include <unordered_set>
 
 #include "fgdwa/global_planner.hpp"
 #include "validation.hpp"
@@ -61,6 +62,26 @@ std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_ra
   // square's half size off each axis), so a centre exactly at the radius falls
   // on the same side as in the planner's field.
   const double half = 0.5 * res;
+  // By offsets alone, a centre d columns and g rows from an obstacle cell
+  // lies (max(d - 1/2, 0)^2 + max(g - 1/2, 0)^2)^(1/2) res from its square:
+  // per column offset, the gaps certainly within the radius and those
+  // certainly beyond it, allowing for how placing the centres rounds. Only a
+  // gap between the two is measured as below.
+  const double largest = std::max(std::abs(grid.origin().x()), std::abs(grid.origin().y())) + (rows + cols) * res;
+  const double doubt = 1e-9 + 1e-12 * largest;
+  std::vector<std::int32_t> surely_in(static_cast<std::size_t>(reach) + 1, -1), surely_out(static_cast<std::size_t>(reach) + 1, far);
+  for (int d = 0; d <= reach; ++d) {
+    const double dx = std::max(d * res - half, 0.0);
+    for (std::int32_t g = far; g >= 0; --g) {
+      const double dy = std::max(g * res - half, 0.0);
+      const double nominal = std::sqrt(dx * dx + dy * dy);
+      if (nominal < inflation_radius - doubt) {
+        surely_in[static_cast<std::size_t>(d)] = g;
+        break;
+      }
+      if (nominal > inflation_radius + doubt) surely_out[static_cast<std::size_t>(d)] = g;
+    }
+  }
   std::vector<std::uint8_t> blocked(grid.cells().size(), 0);
   // Per row, how many of the columns before each have an obstacle within
   // `reach` rows: a cell whose columns in reach have none is left free at
@@ -87,7 +108,9 @@ std::vector<std::uint8_t> inflate(const OccupancyGrid& grid, double inflation_ra
       };
       for (int q = first; q <= last; ++q) {
         const int gap = column_gap[grid.index(r, q)];
-        if (gap < far && (within(r - gap, q) || within(r + gap, q))) {
+        const std::size_t d = static_cast<std::size_t>(std::abs(c - q));
+        if (gap >= far || gap >= surely_out[d]) continue;
+        if (gap <= surely_in[d] || within(r - gap, q) || within(r + gap, q)) {
           blocked[grid.index(r, c)] = 1;
           break;
         }
@@ -213,6 +236,43 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
     return !blocked_[i] || i == start_cell || i == goal_cell || (!escape.empty() && escape[i]);
   };
 
+  static const int kDr[8] = {1, -1, 0, 0, 1, 1, -1, -1};
+  static const int kDc[8] = {0, 0, 1, -1, 1, -1, 1, -1};
+  // The cells one move from `cell`, as the search moves: a diagonal only
+  // between two passable sides. The moves go both ways alike.
+  const auto for_each_move = [&](std::size_t cell, auto&& visit) {
+    const int r = static_cast<int>(cell / cols), c = static_cast<int>(cell % cols);
+    for (int k = 0; k < 8; ++k) {
+      const int nr = r + kDr[k], nc = c + kDc[k];
+      if (!grid_.in_bounds(nr, nc)) continue;
+      const std::size_t next = grid_.index(nr, nc);
+      if (!passable(next)) continue;
+      if (k >= 4 && (!passable(grid_.index(r, nc)) || !passable(grid_.index(nr, c)))) continue;
+      visit(next, k);
+    }
+  };
+  GlobalPlan plan;
+  // A goal walled in at this radius (a mover's sweep or a fresh scan beside
+  // it) would have the search sweep all it can reach from the start before
+  // failing: the goal's own few cells, walked from the goal, settle that
+  // first. The same answer: the moves are the search's, both ways.
+  if (goal_cell != start_cell) {
+    constexpr std::size_t kGoalPocket = 256;  // cells walked before leaving it to the search
+    std::vector<std::size_t> pocket{goal_cell};
+    std::unordered_set<std::size_t> seen{goal_cell};
+    bool open_out = false;
+    for (std::size_t i = 0; i < pocket.size() && !open_out; ++i)
+      for_each_move(pocket[i], [&](std::size_t next, int) {
+        if (open_out || !seen.insert(next).second) return;
+        if (next == start_cell || pocket.size() >= kGoalPocket) open_out = true;
+        else pocket.push_back(next);
+      });
+    if (!open_out) {
+      plan.planning_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - tic).count();
+      return plan;
+    }
+  }
+
   struct Node {
     double f, h;
     std::size_t cell;
@@ -228,8 +288,6 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
   std::priority_queue<Node, std::vector<Node>, std::greater<Node>> open;
   g[start_cell] = 0.0;
   open.push({heuristic(sr, sc), heuristic(sr, sc), start_cell});
-  static const int kDr[8] = {1, -1, 0, 0, 1, 1, -1, -1};
-  static const int kDc[8] = {0, 0, 1, -1, 1, -1, 1, -1};
   bool found = false;
   while (!open.empty()) {
     const Node node = open.top();
@@ -258,7 +316,6 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
     }
   }
 
-  GlobalPlan plan;
   if (!found) {
     plan.status = GlobalStatus::NoPath;
   } else {

@@ -72,6 +72,26 @@ def test_astar_cost_equals_dijkstra(seed):
         assert_path_clear(result.path, blocked, grid)
 
 
+@pytest.mark.parametrize("side", [3, 10, 30])
+def test_astar_goal_walled_in_is_no_path_unless_the_start_is_inside(side):
+    """A goal in a walled room: no path from outside (whether the room is a few cells or more than the
+    search walks from the goal before leaving it to the search), and a path from inside it."""
+    cells = np.zeros((50, 50), dtype=np.uint8)
+    lo, hi = 5, 5 + side + 1
+    cells[lo, lo:hi + 1] = cells[hi, lo:hi + 1] = cells[lo:hi + 1, lo] = cells[lo:hi + 1, hi] = 1
+    grid = fgdwa.OccupancyGrid(cells, 0.1)
+    planner = fgdwa.AStarPlanner(grid, inflation_radius=0.0)
+    goal = grid.cell_center(lo + 1, lo + 1)
+    assert planner.plan(grid.cell_center(45, 45), goal).status == fgdwa.GlobalStatus.NoPath
+    inside = planner.plan(grid.cell_center(hi - 1, hi - 1), goal)
+    assert inside.status == fgdwa.GlobalStatus.Found
+    assert inside.cost == pytest.approx(0.1 * np.sqrt(2.0) * (side - 1), abs=1e-9)
+    # A gap in the wall lets the search in.
+    cells[hi, lo + 2] = 0
+    opened = fgdwa.AStarPlanner(fgdwa.OccupancyGrid(cells, 0.1), inflation_radius=0.0)
+    assert opened.plan(grid.cell_center(45, 45), goal).status == fgdwa.GlobalStatus.Found
+
+
 def assert_path_clear(path, blocked, grid, spacing_cells=0.25):
     """Every point every quarter cell along the path lies on an unblocked cell (ends excepted)."""
     res = grid.resolution
