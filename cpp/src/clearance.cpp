@@ -205,24 +205,30 @@ double FieldClearance::StaticDiscs::polygon_distance(const Footprint& footprint,
     return std::max(std::max(x_lo - q.x(), q.x() - x_hi), std::max(y_lo - q.y(), q.y() - y_hi)) - radius[j] - 1e-9;
   };
   const auto measure = [&](std::size_t j) { return footprint.signed_distance_in_frame(frame(j)) - radius[j]; };
-  // The disc of the least bound first, so that its measure settles the rest
-  // by their bounds; only discs whose centre lies within the circumscribed
-  // radius and the cutoff can come below it.
+  // Only discs whose centre lies within the circumscribed radius and the
+  // cutoff can come below it, and of those only the ones whose bound does:
+  // kept with their bounds in one pass. The least bound's disc is measured
+  // first, so that its measure settles the rest by their bounds.
+  thread_local std::vector<std::uint32_t> open;
+  thread_local std::vector<double> open_low;
+  open.clear();
+  open_low.clear();
   std::size_t nearest = 0;
   double nearest_low = std::numeric_limits<double>::infinity();
   const double reach = footprint.radius() + cutoff + largest_radius + 1e-6;
   near(px, py, reach, [&](std::size_t first, std::size_t count) {
     for (std::size_t j = first; j < first + count; ++j) {
       const double low = bound(j);
-      if (low < nearest_low) nearest = j, nearest_low = low;
+      if (!(low < cutoff)) continue;
+      if (low < nearest_low) nearest = open.size(), nearest_low = low;
+      open.push_back(static_cast<std::uint32_t>(j));
+      open_low.push_back(low);
     }
   });
-  if (nearest_low >= cutoff) return cutoff;
-  double best = measure(nearest);
-  near(px, py, reach, [&](std::size_t first, std::size_t count) {
-    for (std::size_t j = first; j < first + count; ++j)
-      if (j != nearest && bound(j) < std::min(best, cutoff)) best = std::min(best, measure(j));
-  });
+  if (open.empty()) return cutoff;
+  double best = measure(open[nearest]);
+  for (std::size_t k = 0; k < open.size(); ++k)
+    if (k != nearest && open_low[k] < std::min(best, cutoff)) best = std::min(best, measure(open[k]));
   // At or above the cutoff, a disc passed over may hold a lower value, though none below the cutoff.
   return std::min(best, cutoff);
 }
