@@ -598,7 +598,7 @@ double LocalPlanner::half_step_motion(const Twist& twist, double obstacle_speed)
   return 0.5 * params_.dt * (std::abs(twist.v) + footprint_.radius() * std::abs(twist.omega) + obstacle_speed);
 }
 
-LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world) const {
+LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, EscapeTurns& turns) const {
   // Where the first period, ramping from the measured twist, leaves the wheels.
   Twist first = params_.wheels == WheelModel::Instant ? result_.samples[i] : start_twist_;
   response_step(first.v, result_.samples[i].v, limits_.acc_v, limits_.braking_v(), response_, params_.dt);
@@ -620,18 +620,28 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
   const double reach = footprint_.radius();
   const int n_targets = kEscapeTargets;
   const std::size_t steps = static_cast<std::size_t>(std::max(n_steps_, 1));
-  // A continuation's headings depend on its turn alone: worked out once for every speed.
-  std::vector<double> omegas(steps), thetas(steps), cosines(steps), sines(steps);
-  for (int b = 0; b < n_targets; ++b) {
-    const double omega_target = limits_.omega_max * (2.0 * b / (n_targets - 1) - 1.0);
-    double omega = first.omega, theta = poses[0].theta;
-    for (int k = 1; k < n_steps_; ++k) {
-      const auto j = static_cast<std::size_t>(k);
-      omega = ramp(omega, omega_target, limits_.acc_omega, limits_.braking_omega(), params_.dt);
-      // As unicycle_step turns, then drives along the new heading.
-      theta = wrap_angle(theta + omega * params_.dt);
-      omegas[j] = omega, thetas[j] = theta, cosines[j] = std::cos(theta), sines[j] = std::sin(theta);
+  if (!(turns.theta0 == poses[0].theta && turns.omega0 == first.omega)) {
+    turns.theta0 = poses[0].theta;
+    turns.omega0 = first.omega;
+    for (auto* column : {&turns.omega, &turns.theta, &turns.cos, &turns.sin})
+      column->resize(static_cast<std::size_t>(n_targets) * steps);
+    for (int b = 0; b < n_targets; ++b) {
+      const double omega_target = limits_.omega_max * (2.0 * b / (n_targets - 1) - 1.0);
+      double omega = first.omega, theta = poses[0].theta;
+      for (int k = 1; k < n_steps_; ++k) {
+        const std::size_t j = static_cast<std::size_t>(b) * steps + static_cast<std::size_t>(k);
+        omega = ramp(omega, omega_target, limits_.acc_omega, limits_.braking_omega(), params_.dt);
+        // As unicycle_step turns, then drives along the new heading.
+        theta = wrap_angle(theta + omega * params_.dt);
+        turns.omega[j] = omega, turns.theta[j] = theta, turns.cos[j] = std::cos(theta), turns.sin[j] = std::sin(theta);
+      }
     }
+  }
+  for (int b = 0; b < n_targets; ++b) {
+    const double* const omegas = turns.omega.data() + static_cast<std::size_t>(b) * steps;
+    const double* const thetas = turns.theta.data() + static_cast<std::size_t>(b) * steps;
+    const double* const cosines = turns.cos.data() + static_cast<std::size_t>(b) * steps;
+    const double* const sines = turns.sin.data() + static_cast<std::size_t>(b) * steps;
     for (int a = 0; a < n_targets; ++a) {
       const double v_target = limits_.v_min + (limits_.v_max - limits_.v_min) * a / (n_targets - 1);
       Pose2 pose = poses[0];
@@ -678,9 +688,12 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
 int LocalPlanner::best_evasion(const ClearanceSource& world) const {
   int best = -1;
   std::tuple<double, double, double> best_key;
+  // Samples come v-major: a column of the window shares its turn (escape_after).
+  const std::size_t columns = std::max<std::size_t>(headings_.size(), 1);
+  std::vector<EscapeTurns> turns(columns);
   for (std::size_t i = 0; i < result_.samples.size(); ++i) {
     if (result_.reasons[i] != RejectReason::Moving) continue;
-    const Escape e = escape_after(i, world);
+    const Escape e = escape_after(i, world, turns[i % columns]);
     const auto key = std::make_tuple(e.contact, e.room, escape_[i]);
     if (best < 0 || key > best_key) {  // strict: ties keep the first sample
       best = static_cast<int>(i);

@@ -292,7 +292,16 @@ class LocalPlanner {
     double room = -std::numeric_limits<double>::infinity();
   };
   static constexpr int kEscapeTargets = 5;
-  Escape escape_after(std::size_t i, const ClearanceSource& world) const;
+  // The continuations' turns after one period of a sample, per turn target:
+  // each step's turn rate and heading with its cos and sin. They depend on
+  // the sample's turn alone (its heading after the period and the rate its
+  // wheels reach), so one set serves a whole column of the window's samples;
+  // worked out again for another heading or rate.
+  struct EscapeTurns {
+    double theta0 = std::numeric_limits<double>::quiet_NaN(), omega0 = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> omega, theta, cos, sin;  // [target * n_steps + step]
+  };
+  Escape escape_after(std::size_t i, const ClearanceSource& world, EscapeTurns& turns) const;
   // Among the samples rejected only for a moving obstacle, the one whose best
   // continuation meets a mover or a wall latest (then keeps the most room, then
   // is farthest from the movers at the horizon); -1 if there is none.
