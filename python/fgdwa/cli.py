@@ -108,10 +108,9 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.gif or args.record:
         # The GIF and the recording replay the cycles; a wider fan of scored rollouts than the default 5
         # shows the choice.
-        from fgdwa._core import NavigatorParams
-        from fgdwa.bench.recordings import RECORDED_ROLLOUTS
+        from fgdwa.bench.recordings import recorded_navigator
 
-        options.update(record_cycles=True, navigator=NavigatorParams(record_top_k=RECORDED_ROLLOUTS))
+        options.update(record_cycles=True, navigator=recorded_navigator(options.get("mapping", "known")))
     result = run_scenario(scenario, planner, args.seed, **options)
     wall = time.perf_counter() - tic
     print(f"scenario {scenario.name}: {scenario.description}")

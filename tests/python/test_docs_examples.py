@@ -34,7 +34,7 @@ def test_the_scenarios_python_example(capsys):
     assert namespace["result"].summary.outcome == "success"
     printed = capsys.readouterr().out.splitlines()
     assert printed[0] == "['demo', 'e1', 'e2', 'e3']"
-    assert printed[1] == f"success {namespace['result'].summary.steps}" == "success 90"
+    assert printed[1] == f"success {namespace['result'].summary.steps}" == "success 93"
 
 
 @pytest.mark.parametrize("seed", range(4))

@@ -38,7 +38,7 @@ from fgdwa.io.barn_convert import convert_barn_worlds
 from fgdwa.io.barn_data import BarnDataset, barn_score, describe_world_ids, find_barn_file, load_barn
 from fgdwa.mapping import MAPPING_MODES, check_mapping
 from fgdwa.sim.body import DEFAULT_BODY, body_profile
-from fgdwa.sim.episode import check_map_resolution, run_episode
+from fgdwa.sim.episode import check_map_resolution, run_episode, simulated_navigator
 from fgdwa.sim.scenario import params_with
 from fgdwa.settings import Settings, benchmark_settings, group_settings
 from fgdwa.sim.world import World
@@ -127,15 +127,9 @@ class BarnSetup:
                            acc_omega=jackal.acc_omega)
 
     def navigator(self, mapping: str = "scan") -> NavigatorParams:
-        check_mapping(mapping)
-        params = NavigatorParams(footprint_padding=self.footprint_padding, replan_period=self.replan_period,
-                                 stall_time=self.stall_time,
-                                 max_recoveries=self.max_recoveries)
-        # A map given whole holds the true walls: each scan matched to it corrects the drift (250 worlds,
-        # default body: no collision with matching, 1 without). Matched to a map built from scans the pose
-        # measured worse than odometry alone (250 worlds, seeds 0-1: 241 and 230 successes, 7 collisions,
-        # against 247 and 245, 3 collisions), so there the odometry stands.
-        params.scan_match.enabled = mapping == "known"
+        params = params_with(simulated_navigator(mapping), footprint_padding=self.footprint_padding,
+                             replan_period=self.replan_period, stall_time=self.stall_time,
+                             max_recoveries=self.max_recoveries)
         return params_with(params, **group_settings(self.settings, "navigator"))
 
     def planner_params(self, planner: str, goal_radius: float) -> PlannerParams:

@@ -36,6 +36,7 @@ from fgdwa.io.dynamic_fields import (DROPOUT, LEVELS, NOISE_STD, check_field_see
 from fgdwa.io.scenario_file import scenario_from_dict
 from fgdwa.sim.body import DEFAULT_BODY, body_profile
 from fgdwa.settings import Settings, benchmark_settings, describe_settings, group_settings
+from fgdwa.sim.episode import simulated_navigator
 from fgdwa.sim.scenario import params_with, run_scenario, trial_variation
 
 # A planner label -> (planner preset, NavigatorParams overrides). A variant of a
@@ -126,7 +127,8 @@ def _episode(task: DynamicTask):
     """The task's scenario and its episode (every cycle kept, with the fan a recording shows, when ``task.record``)."""
     scenario = scenario_from_dict(field_document(task), where=field_name(task.level, task.seed))
     preset, overrides = PLANNER_VARIANTS[task.planner]
-    navigator = params_with(NavigatorParams(**overrides), **group_settings(task.setup.settings, "navigator"))
+    navigator = params_with(simulated_navigator(), **overrides)
+    navigator = params_with(navigator, **group_settings(task.setup.settings, "navigator"))
     planner = group_settings(task.setup.settings, "planner")
     if planner:
         scenario = dataclasses.replace(scenario, overrides={**scenario.overrides, **planner})

@@ -26,9 +26,9 @@ from typing import Iterable, Optional, Sequence, Union
 
 import numpy as np
 
-from fgdwa._core import FgdwaError, NavigatorParams
+from fgdwa._core import FgdwaError
 from fgdwa.bench import stats
-from fgdwa.bench.recordings import RECORDED_ROLLOUTS, record_failures
+from fgdwa.bench.recordings import record_failures, recorded_navigator
 from fgdwa.bench.runner import DEFAULT_WORKERS, run_tasks
 from fgdwa.bench.claims import Claim, correct_claims
 from fgdwa.bench.stats import finishing_rate
@@ -210,7 +210,7 @@ def run_trial(task: TrialTask) -> TrialRecord:
     scenario = resolve_scenario(task.scenario)
     options = dict(task.options)
     if task.record:
-        options.update(record_cycles=True, navigator=NavigatorParams(record_top_k=RECORDED_ROLLOUTS))
+        options.update(record_cycles=True, navigator=recorded_navigator(options.get("mapping", "known")))
     tic = time.perf_counter()
     result = run_scenario(scenario, task.planner, task.seed, **options)
     wall = time.perf_counter() - tic

@@ -12,13 +12,22 @@ import time
 from pathlib import Path
 from typing import Callable, Optional, Sequence
 
-from fgdwa._core import FgdwaError
+from fgdwa._core import FgdwaError, NavigatorParams
 from fgdwa.bench.runner import run_tasks
 from fgdwa.bench.runs import Run
+from fgdwa.sim.episode import simulated_navigator
 
 # The scored rollouts a recording keeps per cycle: recorded only, it changes no choice.
 RECORDED_ROLLOUTS = 40
 
+
+def recorded_navigator(mapping: str = "known") -> NavigatorParams:
+    """The simulated robot's navigator (fgdwa.sim.episode.simulated_navigator)
+    keeping RECORDED_ROLLOUTS scored rollouts a cycle, for a run replayed as a
+    recording: the same run as without, with a wider fan to show."""
+    navigator = simulated_navigator(mapping)
+    navigator.record_top_k = RECORDED_ROLLOUTS
+    return navigator
 
 def record_failures(tasks: Sequence, outcomes: Sequence[str], runner: Callable, directory, name: Callable,
                     outcome_of: Callable = lambda run: run.row["outcome"], **executor) -> list:

@@ -226,6 +226,24 @@ EPISODE_OPTIONS = tuple(f.name for f in dataclasses.fields(EpisodeOptions))
 GOAL_MARGIN_SHARE = 0.5  # of the referee's goal tolerance: goal_margin's default with a drifting body or scan matching
 
 
+def simulated_navigator(mapping: str = "known") -> NavigatorParams:
+    """The navigator's parameters a simulated robot runs with unless it is given
+    its own: the defaults, and with the map given whole each scan matched to it
+    (``scan_match.enabled``), as a robot with a map runs a localiser. The map's
+    walls are the true ones, so the drifting odometry is corrected: on the
+    default body E1-E3 went from 14 and 15, 15, 14 and 8, 13 and 11 successes of
+    15 to 15 and 15, 15, 15 and 10, 15 and 15 (on the ideal body the same), and
+    BARN with the map known had one collision in 250 runs without it, none with
+    it; the fields stayed within their spread. On a map built from scans the
+    odometry stands: matched to its own map the pose measured worse (BARN from
+    scans, seeds 0-1: 241 and 230 successes of 250 with 7 collisions, against 247
+    and 245 with 3)."""
+    check_mapping(mapping)
+    params = NavigatorParams()
+    params.scan_match.enabled = mapping == "known"
+    return params
+
+
 def default_goal_margin(body: BodySettings, navigator: NavigatorParams, tolerance: float) -> float:
     """goal_margin's default (m) for a referee's goal ``tolerance`` (m): where the
     navigator's pose is an estimate (odometry that drifts, or scans matched to
@@ -313,7 +331,7 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
     footprint = footprint if footprint is not None else Footprint.circle(0.25)
     outline = options.outline if options.outline is not None else footprint  # what the referee judges
     params = params if params is not None else PlannerParams()
-    navigator_params = navigator if navigator is not None else NavigatorParams()
+    navigator_params = navigator if navigator is not None else simulated_navigator(mapping)
     start_pose = _as_pose(start, "start")
     goal_point = _as_point(goal, "goal")
     if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
