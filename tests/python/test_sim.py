@@ -354,6 +354,28 @@ def test_odometry_drift_misleads_the_navigator_but_not_the_referee():
     np.testing.assert_array_equal(plain.motion.believed_poses, plain.motion.poses)
 
 
+def test_a_simulated_robot_given_its_map_matches_its_scans_to_it():
+    """Given the map whole, a simulated robot localises against it (simulated_navigator): with odometry drifting
+    5 cm per sqrt(m) it reaches the goal every time, where on odometry alone it stops short, believing it has
+    arrived. On a map built from scans the odometry stands."""
+    from fgdwa.sim.episode import simulated_navigator
+
+    assert simulated_navigator("known").scan_match.enabled
+    assert not simulated_navigator("scan").scan_match.enabled
+    with pytest.raises(fgdwa.FgdwaError, match="mapping = 'nowhere'"):
+        simulated_navigator("nowhere")
+    world = demo_scenario().world
+    start, goal = (1.2, 4.0, 0.0), (10.8, 4.0)
+    outcomes = {}
+    for label, navigator in (("matched", None), ("odometry", fgdwa.NavigatorParams())):
+        outcomes[label] = [run_episode(world, start, goal, max_steps=200, lidar=fgdwa.LidarParams(beams=181),
+                                       odometry_drift=(0.05, 0.02), seed=seed, navigator=navigator).summary
+                           for seed in range(4)]
+    assert [s.outcome for s in outcomes["matched"]] == ["success"] * 4
+    short = [s for s in outcomes["odometry"] if s.outcome != "success"]
+    assert short and all("GoalReached" in s.reason for s in short)
+
+
 def test_the_same_seed_repeats_a_noisy_episode_bit_for_bit():
     scenario = demo_scenario()
     noisy = dict(max_steps=60, lidar=fgdwa.LidarParams(beams=181, noise_std=0.03, dropout=0.02), latency=1,
