@@ -238,8 +238,9 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
 
   static const int kDr[8] = {1, -1, 0, 0, 1, 1, -1, -1};
   static const int kDc[8] = {0, 0, 1, -1, 1, -1, 1, -1};
-  // The cells one move from `cell`, as the search moves: a diagonal only
-  // between two passable sides. The moves go both ways alike.
+  // The cells one move from `cell` (visit(next, its row, its column, whether
+  // diagonal)), as the search moves: a diagonal only between two passable
+  // sides. The moves go both ways alike.
   const auto for_each_move = [&](std::size_t cell, auto&& visit) {
     const int r = static_cast<int>(cell / cols), c = static_cast<int>(cell % cols);
     for (int k = 0; k < 8; ++k) {
@@ -248,7 +249,7 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
       const std::size_t next = grid_.index(nr, nc);
       if (!passable(next)) continue;
       if (k >= 4 && (!passable(grid_.index(r, nc)) || !passable(grid_.index(nr, c)))) continue;
-      visit(next, k);
+      visit(next, nr, nc, k >= 4);
     }
   };
   GlobalPlan plan;
@@ -262,7 +263,7 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
     std::unordered_set<std::size_t> seen{goal_cell};
     bool open_out = false;
     for (std::size_t i = 0; i < pocket.size() && !open_out; ++i)
-      for_each_move(pocket[i], [&](std::size_t next, int) {
+      for_each_move(pocket[i], [&](std::size_t next, int, int, bool) {
         if (open_out || !seen.insert(next).second) return;
         if (next == start_cell || pocket.size() >= kGoalPocket) open_out = true;
         else pocket.push_back(next);
@@ -298,14 +299,9 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
       found = true;
       break;
     }
-    const int r = static_cast<int>(node.cell / cols), c = static_cast<int>(node.cell % cols);
-    for (int k = 0; k < 8; ++k) {
-      const int nr = r + kDr[k], nc = c + kDc[k];
-      if (!grid_.in_bounds(nr, nc)) continue;
-      const std::size_t next = grid_.index(nr, nc);
-      if (closed[next] || !passable(next)) continue;
-      if (k >= 4 && (!passable(grid_.index(r, nc)) || !passable(grid_.index(nr, c)))) continue;
-      const double length = k >= 4 ? res * M_SQRT2 : res;
+    for_each_move(node.cell, [&](std::size_t next, int nr, int nc, bool diagonal) {
+      if (closed[next]) return;
+      const double length = diagonal ? res * M_SQRT2 : res;
       const double cost = g[node.cell] + length * multiplier(next);
       if (cost < g[next]) {
         g[next] = cost;
@@ -313,7 +309,7 @@ GlobalPlan AStarPlanner::plan(const Vec2& start, const Vec2& goal) const {
         const double h = heuristic(nr, nc);
         open.push({cost + h, h, next});
       }
-    }
+    });
   }
 
   if (!found) {

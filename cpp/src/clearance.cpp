@@ -167,12 +167,6 @@ void FieldClearance::StaticDiscs::near(double px, double py, double reach, Run r
   }
 }
 
-double FieldClearance::StaticDiscs::distance(double px, double py, double inflate) const {
-  double best = std::numeric_limits<double>::infinity();
-  detail::lower_to_discs(&px, &py, 1, x.data(), y.data(), radius.data(), x.size(), inflate, &best);
-  return best;
-}
-
 double FieldClearance::StaticDiscs::distance_below(double px, double py, double inflate, double cutoff) const {
   double best = std::numeric_limits<double>::infinity();
   // A disc below the cutoff has its centre within inflate + cutoff + its
@@ -189,11 +183,8 @@ double FieldClearance::StaticDiscs::polygon_distance(const Footprint& footprint,
   // it, along either axis, is a lower bound of the polygon's that costs no
   // root. A box footprint's bound is exact off its corners, so nearly every
   // disc is settled without measuring.
-  double x_lo = 0.0, x_hi = 0.0, y_lo = 0.0, y_hi = 0.0;
-  for (const Vec2& v : footprint.vertices()) {
-    x_lo = std::min(x_lo, v.x()), x_hi = std::max(x_hi, v.x());
-    y_lo = std::min(y_lo, v.y()), y_hi = std::max(y_hi, v.y());
-  }
+  const double x_lo = footprint.box_min().x(), x_hi = footprint.box_max().x();
+  const double y_lo = footprint.box_min().y(), y_hi = footprint.box_max().y();
   // In the robot's frame, with the pose's cos and sin (Footprint::signed_distance's bits).
   const auto frame = [&](std::size_t j) {
     const double dx = x[j] - px, dy = y[j] - py;
@@ -705,11 +696,11 @@ double FieldClearance::clearance_below(const Footprint& footprint, const Pose2& 
   const Placed at(pose, footprint);
   double best = field_clearance(field_.get(), footprint, at, cutoff);
   if (sensed_) best = std::min(best, field_clearance(sensed_.get(), footprint, at, std::min(best, cutoff)));
-  if (footprint.is_circle()) {
-    if (!static_discs_.x.empty())
-      best = std::min(best, static_discs_.distance_below(pose.x, pose.y, footprint.radius(), std::min(best, cutoff)));
-  } else if (!static_discs_.x.empty()) {
-    best = std::min(best, static_discs_.polygon_distance(footprint, pose.x, pose.y, at.c, at.s, std::min(best, cutoff)));
+  if (!static_discs_.x.empty()) {
+    const double below = std::min(best, cutoff);
+    best = std::min(best, footprint.is_circle()
+                              ? static_discs_.distance_below(pose.x, pose.y, footprint.radius(), below)
+                              : static_discs_.polygon_distance(footprint, pose.x, pose.y, at.c, at.s, below));
   }
   return moving_.empty() ? best : std::min(best, moving_disc_clearance_unchecked(moving_, footprint, pose, t));
 }

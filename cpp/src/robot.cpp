@@ -27,6 +27,8 @@ Footprint Footprint::circle(double radius) {
   fp.radius_ = radius;
   fp.inscribed_radius_ = radius;
   fp.half_width_ = radius;
+  fp.box_min_ = Vec2(-radius, -radius);
+  fp.box_max_ = Vec2(radius, radius);
   fp.cover_.push_back({Vec2::Zero(), radius});
   return fp;
 }
@@ -112,6 +114,8 @@ Footprint Footprint::polygon(std::vector<Vec2> vertices) {
   }
   Vec2 lo = fp.vertices_[0], hi = fp.vertices_[0];
   for (const Vec2& v : fp.vertices_) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  fp.box_min_ = lo;
+  fp.box_max_ = hi;
   const Vec2 size = hi - lo;
   // A convex shape's chords along x are concave in y: the shortest lie at its
   // lowest and highest y.

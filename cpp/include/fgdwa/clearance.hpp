@@ -3,8 +3,8 @@
 // per pose of every rollout; `FieldClearance` (distance field plus analytic
 // discs) is the fast path, `CollisionWorld` (FCL, collision.hpp) the exact one.
 #include <algorithm>
-#include <limits>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -174,11 +174,9 @@ class FieldClearance : public ClearanceSource {
     // at once without buckets or with a reach that is not finite.
     template <class Run>
     void near(double px, double py, double reach, Run run) const;
-    // min over the discs of (|p - centre| - inflate) - radius: a circle's
-    // clearance when inflate is its radius; +inf without any.
-    double distance(double px, double py, double inflate) const;
-    // The same below `cutoff`, bit for bit; otherwise `cutoff`. Looks only at
-    // the discs near enough to come below it.
+    // min over the discs of (|p - centre| - inflate) - radius (a circle's
+    // clearance when inflate is its radius), bit for bit below `cutoff`;
+    // otherwise `cutoff`. Looks only at the discs near enough to come below it.
     double distance_below(double px, double py, double inflate, double cutoff) const;
     // The least signed distance minus radius from a polygon footprint at
     // pose (px, py) with heading cos c and sin s: exact below `cutoff`,

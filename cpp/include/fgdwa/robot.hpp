@@ -66,6 +66,11 @@ class Footprint {
   // Half the footprint's least width (the radius for a circle): no point
   // inside lies farther than this from the outline.
   double half_width() const { return half_width_; }
+  // The smallest axis-aligned box holding the footprint, in the robot frame
+  // (its lower and upper corners): a point's distance from it is a lower
+  // bound of its distance from the footprint.
+  const Vec2& box_min() const { return box_min_; }
+  const Vec2& box_max() const { return box_max_; }
   // Counter-clockwise vertices in the robot frame; empty for a circle.
   const std::vector<Vec2>& vertices() const { return vertices_; }
 
@@ -103,6 +108,7 @@ class Footprint {
   double inscribed_radius_ = 0.0;
   double half_width_ = 0.0;
   double heading_chord_ = 0.0;
+  Vec2 box_min_ = Vec2::Zero(), box_max_ = Vec2::Zero();
   std::vector<Vec2> vertices_;
   std::vector<CoverDisc> cover_;
 };

@@ -29,6 +29,7 @@ def recorded_navigator(mapping: str = "known") -> NavigatorParams:
     navigator.record_top_k = RECORDED_ROLLOUTS
     return navigator
 
+
 def record_failures(tasks: Sequence, outcomes: Sequence[str], runner: Callable, directory, name: Callable,
                     outcome_of: Callable = lambda run: run.row["outcome"], **executor) -> list:
     """For each task whose run failed (``outcomes[i]`` is not "success"),
