@@ -174,6 +174,26 @@ TEST(Footprint, SignedDistanceOfCircleAndPolygon) {
 
 // Every point of the footprint lies in one of its cover discs, and no disc
 // reaches farther past the outline than half its piece's diagonal.
+// The bounding box holds every vertex and touches the outline on each side;
+// a point's distance from it never exceeds its distance from the footprint.
+TEST(Footprint, BoundingBoxIsTheVerticesExtremesAndBoundsTheDistance) {
+  const Footprint triangle = Footprint::polygon({{-0.2, -0.3}, {0.5, 0.1}, {-0.1, 0.25}});
+  EXPECT_EQ(triangle.box_min(), Vec2(-0.2, -0.3));
+  EXPECT_EQ(triangle.box_max(), Vec2(0.5, 0.25));
+  const Footprint circle = Footprint::circle(0.3);
+  EXPECT_EQ(circle.box_min(), Vec2(-0.3, -0.3));
+  EXPECT_EQ(circle.box_max(), Vec2(0.3, 0.3));
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 q(u(rng), u(rng));
+    for (const Footprint& fp : {triangle, circle}) {
+      const Vec2 below = fp.box_min() - q, above = q - fp.box_max();
+      EXPECT_LE(std::max({below.x(), below.y(), above.x(), above.y()}), fp.signed_distance_in_frame(q) + 1e-12);
+    }
+  }
+}
+
 TEST(Footprint, CoverDiscsCoverTheFootprint) {
   std::mt19937 rng(5);
   for (const Footprint& fp : {Footprint::circle(0.3),

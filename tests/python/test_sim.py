@@ -364,6 +364,12 @@ def test_a_simulated_robot_given_its_map_matches_its_scans_to_it():
     assert not simulated_navigator("scan").scan_match.enabled
     with pytest.raises(fgdwa.FgdwaError, match="mapping = 'nowhere'"):
         simulated_navigator("nowhere")
+    from fgdwa.bench.recordings import RECORDED_ROLLOUTS, recorded_navigator
+
+    recorded = recorded_navigator("known")
+    assert recorded.scan_match.enabled and recorded.record_top_k == RECORDED_ROLLOUTS
+    with pytest.raises(fgdwa.FgdwaError, match="mapping = 'nowhere'"):
+        recorded_navigator("nowhere")
     world = demo_scenario().world
     start, goal = (1.2, 4.0, 0.0), (10.8, 4.0)
     outcomes = {}
