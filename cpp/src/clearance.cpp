@@ -183,19 +183,13 @@ double FieldClearance::StaticDiscs::polygon_distance(const Footprint& footprint,
   // it, along either axis, is a lower bound of the polygon's that costs no
   // root. A box footprint's bound is exact off its corners, so nearly every
   // disc is settled without measuring.
-  const double x_lo = footprint.box_min().x(), x_hi = footprint.box_max().x();
-  const double y_lo = footprint.box_min().y(), y_hi = footprint.box_max().y();
+  const double box[4] = {footprint.box_min().x(), footprint.box_max().x(), footprint.box_min().y(),
+                         footprint.box_max().y()};
   // In the robot's frame, with the pose's cos and sin (Footprint::signed_distance's bits).
-  const auto frame = [&](std::size_t j) {
+  const auto measure = [&](std::size_t j) {
     const double dx = x[j] - px, dy = y[j] - py;
-    return Vec2(c * dx + s * dy, -s * dx + c * dy);
+    return footprint.signed_distance_in_frame(Vec2(c * dx + s * dy, -s * dx + c * dy)) - radius[j];
   };
-  // A nanometre under, for the rounding of the bound against the measure.
-  const auto bound = [&](std::size_t j) {
-    const Vec2 q = frame(j);
-    return std::max(std::max(x_lo - q.x(), q.x() - x_hi), std::max(y_lo - q.y(), q.y() - y_hi)) - radius[j] - 1e-9;
-  };
-  const auto measure = [&](std::size_t j) { return footprint.signed_distance_in_frame(frame(j)) - radius[j]; };
   // Only discs whose centre lies within the circumscribed radius and the
   // cutoff can come below it, and of those only the ones whose bound does:
   // kept with their bounds in one pass. The least bound's disc is measured
@@ -204,19 +198,20 @@ double FieldClearance::StaticDiscs::polygon_distance(const Footprint& footprint,
   thread_local std::vector<double> open_low;
   open.clear();
   open_low.clear();
-  std::size_t nearest = 0;
-  double nearest_low = std::numeric_limits<double>::infinity();
   const double reach = footprint.radius() + cutoff + largest_radius + 1e-6;
   near(px, py, reach, [&](std::size_t first, std::size_t count) {
-    for (std::size_t j = first; j < first + count; ++j) {
-      const double low = bound(j);
-      if (!(low < cutoff)) continue;
-      if (low < nearest_low) nearest = open.size(), nearest_low = low;
-      open.push_back(static_cast<std::uint32_t>(j));
-      open_low.push_back(low);
-    }
+    const std::size_t kept = open.size();
+    open.resize(kept + count);
+    open_low.resize(kept + count);
+    const std::size_t found =
+        detail::box_bounds_below(x.data() + first, y.data() + first, radius.data() + first, count, px, py, c, s, box,
+                                 cutoff, static_cast<std::uint32_t>(first), open.data() + kept, open_low.data() + kept);
+    open.resize(kept + found);
+    open_low.resize(kept + found);
   });
   if (open.empty()) return cutoff;
+  const std::size_t nearest =
+      static_cast<std::size_t>(std::min_element(open_low.begin(), open_low.end()) - open_low.begin());
   double best = measure(open[nearest]);
   for (std::size_t k = 0; k < open.size(); ++k)
     if (k != nearest && open_low[k] < std::min(best, cutoff)) best = std::min(best, measure(open[k]));
