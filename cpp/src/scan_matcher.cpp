@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "fgdwa/error.hpp"
+#include "match_score.hpp"
 #include "validation.hpp"
 
 namespace fgdwa {
@@ -55,7 +56,7 @@ struct Candidate {
 // exp(-d^2 / (2 sigma^2)) per step of distance.
 class Scorer {
  public:
-  Scorer(const DistanceField& field, double sigma) : table_(field.lower_bounds()) {
+  Scorer(const DistanceField& field, double sigma, std::size_t points) : table_(field.lower_bounds()) {
     const double reach = 3.0 * sigma;  // beyond, a hit scores less than 1 %: nothing
     const std::size_t n = static_cast<std::size_t>(std::min(65536.0, std::ceil(reach / table_.step) + 1.0));
     weights_.resize(n);
@@ -63,29 +64,41 @@ class Scorer {
       const double d = static_cast<double>(k) * table_.step;
       weights_[k] = static_cast<float>(std::exp(-0.5 * d * d / (sigma * sigma)));
     }
+    vectors_ = detail::exact_match_sums(weights_.data(), n, points);
   }
-  double operator()(const std::vector<Vec2>& points, double x, double y) const {
+  // The hits as x and y apart (relative to the sensor, turned by the candidate's angle).
+  double operator()(const std::vector<double>& xs, const std::vector<double>& ys, double x, double y) const {
     const double inv = table_.inverse_piece;
     const double ox = (x - table_.origin_x) * inv, oy = (y - table_.origin_y) * inv;
     const std::size_t n = weights_.size();
     double sum = 0.0;
-    for (const Vec2& p : points) {
-      const std::uint16_t* at = table_.piece_at(ox + p.x() * inv, oy + p.y() * inv);
-      if (at && *at < n) sum += weights_[*at];
+    if (vectors_) {
+      sum = detail::match_score_sum(xs.data(), ys.data(), xs.size(), ox, oy, table_, weights_.data(), n);
+    } else {
+      for (std::size_t k = 0; k < xs.size(); ++k) {
+        const std::uint16_t* at = table_.piece_at(ox + xs[k] * inv, oy + ys[k] * inv);
+        if (at && *at < n) sum += weights_[*at];
+      }
     }
-    return sum / static_cast<double>(points.size());
+    return sum / static_cast<double>(xs.size());
   }
 
  private:
   DistanceField::LowerBounds table_;
   std::vector<float> weights_;
+  // Whether every order of summing the weights gives the same bits, so that
+  // lanes may sum apart.
+  bool vectors_ = false;
 };
 
-void turn(const std::vector<Vec2>& in, double angle, std::vector<Vec2>& out) {
+void turn(const std::vector<Vec2>& in, double angle, std::vector<double>& xs, std::vector<double>& ys) {
   const double c = std::cos(angle), s = std::sin(angle);
-  out.resize(in.size());
-  for (std::size_t i = 0; i < in.size(); ++i)
-    out[i] = Vec2(c * in[i].x() - s * in[i].y(), s * in[i].x() + c * in[i].y());
+  xs.resize(in.size());
+  ys.resize(in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    xs[i] = c * in[i].x() - s * in[i].y();
+    ys[i] = s * in[i].x() + c * in[i].y();
+  }
 }
 
 }  // namespace
@@ -105,7 +118,8 @@ ScanMatch ScanMatcher::match(const ScanFrame& frame, const DistanceField& field,
 
   // The hits relative to the sensor, in world axes at the heading given;
   // thinned so that a wall seen up close does not outvote the rest.
-  thread_local std::vector<Vec2> kept, points, turned;
+  thread_local std::vector<Vec2> kept, points;
+  thread_local std::vector<double> turned_x, turned_y;
   kept.clear();
   const std::vector<Vec2>& directions = frame.directions();
   for (std::size_t i = 0; i < frame.size(); ++i) {
@@ -123,7 +137,7 @@ ScanMatch ScanMatcher::match(const ScanFrame& frame, const DistanceField& field,
   for (std::size_t k = 0; k < m; ++k) points[k] = kept[k * kept.size() / m];
   out.points = m;
 
-  const Scorer score(field, p.sigma);
+  const Scorer score(field, p.sigma, m);
   const auto count = [](double window, double step) { return static_cast<int>(std::floor(window / step + 1e-9)); };
   const int nxy = count(p.window_xy, p.step_xy), ntheta = count(p.window_theta, p.step_theta);
   const auto better = [&](const Candidate& a, const Candidate& b) {
@@ -137,11 +151,11 @@ ScanMatch ScanMatcher::match(const ScanFrame& frame, const DistanceField& field,
   Candidate best;
   for (int a = -ntheta; a <= ntheta; ++a) {
     const double dtheta = a * p.step_theta;
-    turn(points, dtheta, turned);
+    turn(points, dtheta, turned_x, turned_y);
     for (int i = -nxy; i <= nxy; ++i)
       for (int j = -nxy; j <= nxy; ++j) {
         Candidate c{i * p.step_xy, j * p.step_xy, dtheta, 0.0};
-        c.score = score(turned, given.x + c.dx, given.y + c.dy);
+        c.score = score(turned_x, turned_y, given.x + c.dx, given.y + c.dy);
         coarse.push_back(c);
         if (a == 0 && i == 0 && j == 0) out.given_score = c.score;
         if (better(c, best)) best = c;
@@ -158,13 +172,13 @@ ScanMatch ScanMatcher::match(const ScanFrame& frame, const DistanceField& field,
     for (int a = -1; a <= 1; ++a) {
       const double dtheta = centre.dtheta + a * step_theta;
       if (std::abs(dtheta) > p.window_theta + eps) continue;
-      turn(points, dtheta, turned);
+      turn(points, dtheta, turned_x, turned_y);
       for (int i = -1; i <= 1; ++i)
         for (int j = -1; j <= 1; ++j) {
           if (a == 0 && i == 0 && j == 0) continue;
           Candidate c{centre.dx + i * step_xy, centre.dy + j * step_xy, dtheta, 0.0};
           if (std::abs(c.dx) > p.window_xy + eps || std::abs(c.dy) > p.window_xy + eps) continue;
-          c.score = score(turned, given.x + c.dx, given.y + c.dy);
+          c.score = score(turned_x, turned_y, given.x + c.dx, given.y + c.dy);
           if (better(c, best)) best = c;
         }
     }

@@ -1,8 +1,10 @@
 // ScanMatcher and Localiser: a scan placed off where it was taken is put back
 // within a cell and half a degree; a scan that cannot say where it is (a
 // corridor along its axis, no map, no hits) is refused; the search never
-// leaves its window; the Localiser keeps the correction as map_to_odom.
+// leaves its window; the Localiser keeps the correction as map_to_odom. The
+// vectorised score sums to the sequential sum's bits on every instruction set.
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <cmath>
 #include <random>
@@ -12,6 +14,7 @@
 #include "fgdwa/presets.hpp"
 #include "fgdwa/perception.hpp"
 #include "fgdwa/scan_matcher.hpp"
+#include "match_score.hpp"
 #include "test_support.hpp"
 
 namespace fgdwa::test {
@@ -116,6 +119,43 @@ TEST(ScanMatcher, NeverLeavesItsWindow) {
     EXPECT_LE(std::abs(match.pose.x - placed.x), params.window_xy + 1e-9) << "case " << k;
     EXPECT_LE(std::abs(match.pose.y - placed.y), params.window_xy + 1e-9) << "case " << k;
     EXPECT_LE(std::abs(angle_difference(match.pose.theta, placed.theta)), params.window_theta + 1e-9) << "case " << k;
+  }
+}
+
+// Hits on and off a room's table, some beyond the weights' reach, in counts
+// that fill no whole vector: every instruction set's lanes give the bits of
+// summing one hit after another, with weights of at least 2^-7; weights
+// below that are refused the lanes.
+TEST(MatchScore, LanesSumToTheSequentialSumsBits) {
+  const DistanceField field(room(3));
+  const DistanceField::LowerBounds table = field.lower_bounds();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> where(-1.0, 11.0), weight(1.0 / 128.0, 1.0);
+  std::vector<float> weights(4000);
+  for (float& w : weights) w = static_cast<float>(weight(rng));
+  ASSERT_TRUE(detail::exact_match_sums(weights.data(), weights.size(), 1000));
+  std::vector<float> tiny = weights;
+  tiny.back() = 1e-3f;
+  EXPECT_FALSE(detail::exact_match_sums(tiny.data(), tiny.size(), 1000));
+  EXPECT_FALSE(detail::exact_match_sums(weights.data(), weights.size(), std::size_t{1} << 22));
+  for (const std::size_t m : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{61}, std::size_t{180}}) {
+    std::vector<double> x(m), y(m);
+    for (std::size_t k = 0; k < m; ++k) x[k] = where(rng), y[k] = where(rng);
+    const double ox = (0.37 - table.origin_x) * table.inverse_piece, oy = (-0.21 - table.origin_y) * table.inverse_piece;
+    double sequential = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::uint16_t* at = table.piece_at(ox + x[k] * table.inverse_piece, oy + y[k] * table.inverse_piece);
+      if (at && *at < weights.size()) sequential += weights[*at];
+    }
+    if (m == 180) {
+      ASSERT_GT(sequential, 2.0);  // hits near the walls score
+    }
+    for (const int64_t target : hwy::SupportedAndGeneratedTargets()) {
+      hwy::SetSupportedTargetsForTest(target);
+      EXPECT_EQ(detail::match_score_sum(x.data(), y.data(), m, ox, oy, table, weights.data(), weights.size()), sequential)
+          << hwy::TargetName(target) << ", " << m << " hits";
+    }
+    hwy::SetSupportedTargetsForTest(0);
   }
 }
 
