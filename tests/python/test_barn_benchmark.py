@@ -87,6 +87,24 @@ def test_summary_rates_and_means_on_hand_made_rows():
     assert np.isnan(summary["b"]["mean_time"])
     table = format_summary(summary, "known")
     assert "a" in table and "0.500" in table and "-" in table
+    assert "collision_jumped" not in a and "jumped" not in table  # rows without the column
+
+
+def test_the_summary_counts_collisions_with_movers_that_jumped():
+    def run(outcome, jumped):
+        row = {"planner": "a", "outcome": outcome, "success": int(outcome == "success"), "time": 5.0,
+               "cycle_ms_mean": 1.0, "jumped": jumped}
+        return Run(row=row, cells=np.zeros((1, 1)), extent=(0, 1, 0, 1), poses=np.zeros((1, 3)), paths=[])
+
+    runs = [run("success", 0.0), run("collision", 0.0), run("collision", 6.5), run("timeout", 0.0)]
+    summary = summarize(runs)
+    assert summary["a"]["collision"] == 0.5 and summary["a"]["collision_jumped"] == 0.25
+    header = format_summary(summary, "known").splitlines()
+    assert any("of them jumped" in line for line in header)
+    # None jumped: the column stays out of the table, the rate in the summary.
+    quiet = summarize([run("collision", 0.0)])
+    assert quiet["a"]["collision_jumped"] == 0.0
+    assert "jumped" not in format_summary(quiet, "known")
 
 
 def test_run_timing_splits_the_wall_time_between_navigator_and_simulator():

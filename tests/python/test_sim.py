@@ -104,6 +104,48 @@ def test_the_point_of_contact_is_where_the_outline_meets_what_it_hit():
     assert collision_contact(truth, circle, (1.2, 1.0, 0.0), (0.0, 0.0)).point == contact.point  # no grid needed
 
 
+def test_a_mover_that_jumped_within_the_step_appeared_on_the_robot():
+    from fgdwa.sim import collision_contact
+
+    circle = fgdwa.Footprint.circle(0.25)
+    truth = fgdwa.CollisionWorld(fgdwa.OccupancyGrid(np.zeros((20, 40), np.uint8), 0.1))
+    truth.discs = [fgdwa.Disc((3.0, 0.5), 0.1), fgdwa.Disc((1.6, 1.0), 0.2, velocity=(-1.0, 0.0))]
+    # Moving at 1 m/s it covers 0.1 m in 0.1 s: from 1.7 m it drove in; from 1.95 m (0.35 m, more
+    # than its speed covers by over its radius) and from 7 m it jumped.
+    came = [fgdwa.Disc((3.0, 0.5), 0.1), fgdwa.Disc((1.7, 1.0), 0.2, velocity=(-1.0, 0.0))]
+    contact = collision_contact(truth, circle, (1.2, 1.0, 0.0), (0.0, 0.0), before=came, dt=0.1)
+    assert contact.jumped == 0.0 and contact.reason.startswith("collision: mover 1 drove into the robot")
+    for start, distance in ((1.95, "0.35"), (8.6, "7.00")):
+        came = [fgdwa.Disc((3.0, 0.5), 0.1), fgdwa.Disc((start, 1.0), 0.2, velocity=(-1.0, 0.0))]
+        contact = collision_contact(truth, circle, (1.2, 1.0, 0.0), (0.0, 0.0), before=came, dt=0.1)
+        assert contact.jumped == pytest.approx(start - 1.6)
+        assert contact.reason == (f"collision: mover 1 appeared on the robot at (1.40, 1.00) (it jumped {distance} m "
+                                  "within the step, farther than its speed takes it)")
+    # Just within its speed and radius: 0.1 m of travel plus 0.2 m of radius.
+    came = [fgdwa.Disc((3.0, 0.5), 0.1), fgdwa.Disc((1.899, 1.0), 0.2, velocity=(-1.0, 0.0))]
+    assert collision_contact(truth, circle, (1.2, 1.0, 0.0), (0.0, 0.0), before=came, dt=0.1).jumped == 0.0
+    with pytest.raises(fgdwa.FgdwaError, match="before: 1 discs for the truth's 2"):
+        collision_contact(truth, circle, (1.2, 1.0, 0.0), (0.0, 0.0), before=came[:1], dt=0.1)
+    with pytest.raises(fgdwa.FgdwaError, match="dt = -0.1"):
+        collision_contact(truth, circle, (1.2, 1.0, 0.0), (0.0, 0.0), before=came, dt=-0.1)
+
+
+def test_an_episode_names_a_mover_that_jumped_onto_the_robot():
+    # A looping route whose start lies on the robot's standing place: at the wrap the disc jumps
+    # back onto it from 3 m away.
+    from fgdwa.sim import run_episode
+    from fgdwa.sim.keyframes import KeyframedMover
+    from fgdwa.sim.world import World
+
+    grid = fgdwa.OccupancyGrid(np.zeros((40, 60), np.uint8), 0.1)
+    mover = KeyframedMover(radius=0.3, keyframes=[[0.0, 1.0, 2.0], [1.0, 2.5, 2.0], [2.0, 4.0, 2.0]], phase=1.5)
+    world = World(grid=grid, movers=[mover], discs_known=True)
+    result = run_episode(world, (1.0, 2.0, 0.0), (1.0, 3.5), seed=0, max_steps=40, body="ideal")
+    assert result.summary.outcome == "collision"
+    assert 2.5 < result.collision.jumped < 3.0  # the route's 3 m less what it drives in a step
+    assert "mover 0 appeared on the robot" in result.summary.reason
+
+
 def test_a_rectangle_turning_in_place_beside_a_post_is_a_collision():
     # The Jackal's 0.42 m x 0.33 m rectangle turns a quarter turn in place; a 2 cm post lies
     # clear of both end placements but inside the footprint between 42 and 50 degrees.

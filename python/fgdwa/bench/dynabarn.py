@@ -54,7 +54,7 @@ MAP_MARGIN = 5.0  # m of free grid beyond everything the world holds
 DYNABARN_SETUP = BarnSetup(sim_time=ROLLOUT_TIME, v_max=robot_preset("jackal").limits.v_max)
 RUN_FIELDS = ("world", "barn_world_idx", "difficulty", "planner", "mapping", "trial", "seed", "clock", "outcome",
               "success", "time", "score", "time_score", "mileage", "min_clearance", "replans", "backing_up",
-              "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time", "reason")
+              "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time", "jumped", "reason")
 FAILURE_KEYS = ("world", "planner", "trial")
 
 

@@ -54,7 +54,7 @@ PLANNER_VARIANTS = MappingProxyType({
 })
 OUTCOMES = ("success", "collision", "timeout", "failed")
 RUN_FIELDS = ("level", "seed", "planner", "outcome", "success", "time", "mileage", "min_clearance", "replans",
-              "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time", "reason")
+              "backing_up", "cycle_ms_mean", "cycle_ms_p95", "sim_ms_mean", "wall_time", "jumped", "reason")
 
 
 @dataclass(frozen=True)

@@ -64,7 +64,9 @@ def episode_columns(result, wall: float) -> dict:
     spent backing up, the cost per cycle, the wall time and why a failed run ended;
     and for failures.png the goal (``goal_x``, ``goal_y``, m) and, after a
     collision, the point of contact (``contact_x``, ``contact_y``, m; NaN
-    otherwise) and what was hit (``hit``: "a wall", "mover 3", ...; "" otherwise)."""
+    otherwise), what was hit (``hit``: "a wall", "mover 3", ...; "" otherwise)
+    and how far a mover that appeared on the robot had jumped within the step
+    (``jumped``, m; 0 otherwise: referee.Contact)."""
     paths, contact, goal = result.context.paths, result.collision, result.context.goal
     goal = (float("nan"), float("nan")) if goal is None else goal
     return {"time": result.summary.sim_time, "mileage": result.summary.mileage,
@@ -74,7 +76,8 @@ def episode_columns(result, wall: float) -> dict:
             "goal_x": float(goal[0]), "goal_y": float(goal[1]),
             "contact_x": float("nan") if contact is None else contact.point[0],
             "contact_y": float("nan") if contact is None else contact.point[1],
-            "hit": "" if contact is None else contact.what}
+            "hit": "" if contact is None else contact.what,
+            "jumped": 0.0 if contact is None else contact.jumped}
 
 
 def paths_followed(result) -> list:
@@ -87,9 +90,10 @@ def paths_followed(result) -> list:
 
 def summarize(runs: Sequence[Run], outcomes: Sequence[str] = OUTCOMES) -> dict:
     """Per planner, in order of first appearance: n, the rate of each outcome,
-    mean_time (s, successful runs; NaN when none), mean_score and
-    mean_time_score (all runs; when the rows have a score, a time_score) and the
-    mean planning cycle (ms)."""
+    collision_jumped (when the rows have ``jumped``: the rate of collisions with
+    a mover that appeared on the robot, jumping within one step), mean_time (s,
+    successful runs; NaN when none), mean_score and mean_time_score (all runs;
+    when the rows have a score, a time_score) and the mean planning cycle (ms)."""
     table = {}
     for planner in dict.fromkeys(run.row["planner"] for run in runs):
         rows = [run.row for run in runs if run.row["planner"] == planner]
@@ -98,6 +102,8 @@ def summarize(runs: Sequence[Run], outcomes: Sequence[str] = OUTCOMES) -> dict:
         entry = {
             "n": n,
             **{outcome: sum(r["outcome"] == outcome for r in rows) / n for outcome in outcomes},
+            **({"collision_jumped": sum(r["outcome"] == "collision" and r["jumped"] > 0 for r in rows) / n}
+               if all("jumped" in r for r in rows) else {}),
             "mean_time": float(np.mean(times)) if times else float("nan"),
         }
         for key in ("score", "time_score"):
@@ -113,6 +119,10 @@ def summarize(runs: Sequence[Run], outcomes: Sequence[str] = OUTCOMES) -> dict:
 def format_table(summary: dict, title: str, outcomes: Sequence[str] = OUTCOMES) -> str:
     """The terminal table of a :func:`summarize` summary: one line per planner."""
     columns = [("n", lambda s: str(s["n"]))] + [(o, lambda s, o=o: f"{s[o]:.3f}") for o in outcomes]
+    # Movers that jump (a looping animation going back to its start) only where some did.
+    if any(s.get("collision_jumped", 0.0) > 0 for s in summary.values()):
+        columns.insert(outcomes.index("collision") + 2 if "collision" in outcomes else len(columns),
+                       ("of them jumped", lambda s: f"{s.get('collision_jumped', 0.0):.3f}"))
     columns.append(("mean time", lambda s: "-" if math.isnan(s["mean_time"]) else f"{s['mean_time']:.1f} s"))
     for key, header in (("mean_score", "mean score"), ("mean_time_score", "time score")):
         if all(key in s for s in summary.values()):

@@ -453,7 +453,8 @@ def run_episode(world: World, start, goal, options: Optional[EpisodeOptions] = N
             outcome = "collision"
             contact = collision_contact(truth, outline, poses[-1],
                                         (driven.v * np.cos(pose.theta), driven.v * np.sin(pose.theta)),
-                                        grid=true_grid, hidden=world.hidden)
+                                        grid=true_grid, hidden=world.hidden,
+                                        before=world.discs_at(t) if world.has_moving else None, dt=dt)
             reason = contact.reason
             break
         if world.terrain is not None and falls(world, poses[-2], poses[-1]):

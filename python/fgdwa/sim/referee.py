@@ -7,8 +7,9 @@ the true distance field), never with what the navigator believes.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-from typing import Optional
+from typing import Optional, Sequence
 
 import numpy as np
 
@@ -126,6 +127,7 @@ class Contact:
     mover: int = -1  # the mover's index in World.discs_at(t) (World.discs, then World.movers); -1 otherwise
     mover_closing: float = 0.0  # m/s at which the mover closed the gap (0 for a static obstacle)
     robot_closing: float = 0.0  # m/s at which the robot did
+    jumped: float = 0.0  # m the mover jumped within the step, beyond what its speed covers by more than its radius; else 0
 
     @property
     def what(self) -> str:
@@ -140,6 +142,11 @@ class Contact:
         where = f"at ({self.point[0]:.2f}, {self.point[1]:.2f})"
         if self.obstacle != "mover":
             return f"collision: the robot drove into {self.what} {where}"
+        if self.jumped > 0.0:
+            # A looping animation that goes back to its start, a person stepping out from behind
+            # something: nothing the robot saw a step before was there.
+            return (f"collision: {self.what} appeared on the robot {where} (it jumped {self.jumped:.2f} m within the "
+                    "step, farther than its speed takes it)")
         if max(self.mover_closing, self.robot_closing) <= 0.0:
             who = f"the robot touched {self.what} as neither closed in (turning, or grazing it)"
         elif self.mover_closing > self.robot_closing:
@@ -152,7 +159,8 @@ class Contact:
 
 
 def collision_contact(truth: CollisionWorld, footprint: Footprint, pose, velocity,
-                      grid: Optional[OccupancyGrid] = None, hidden: Optional[OccupancyGrid] = None) -> Contact:
+                      grid: Optional[OccupancyGrid] = None, hidden: Optional[OccupancyGrid] = None,
+                      before: Optional[Sequence] = None, dt: float = 0.0) -> Contact:
     """What the footprint at ``pose`` touched, where, and who moved into whom.
 
     The obstacle nearest the footprint is the one touched: the static one (the
@@ -162,7 +170,10 @@ def collision_contact(truth: CollisionWorld, footprint: Footprint, pose, velocit
     than the robot's own ``velocity`` (vx, vy, m/s) did; when neither closed in,
     the contact came from a turn or a graze. The point of contact is the
     obstacle's point with the smallest signed distance to the footprint: the
-    deepest inside it, or the nearest when the two only touch."""
+    deepest inside it, or the nearest when the two only touch. ``before``, the
+    discs (in the same order) ``dt`` seconds earlier, at the step's start, tells
+    a mover that jumped: one that moved farther than its speed at either end
+    of the step takes it, by more than its radius."""
     discs = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
     pose = tuple(float(v) for v in pose)
     gaps = [footprint.signed_distance(pose, d.center) - d.radius for d in discs]
@@ -179,8 +190,20 @@ def collision_contact(truth: CollisionWorld, footprint: Footprint, pose, velocit
     mover = discs[index]
     away = np.array(pose[:2]) - np.array(mover.center)
     unit = away / max(float(np.hypot(*away)), 1e-12)
+    jumped = 0.0
+    if before is not None:
+        if len(before) != len(discs):
+            raise FgdwaError(f"before: {len(before)} discs for the truth's {len(discs)}")
+        if not (isinstance(dt, (int, float)) and math.isfinite(dt) and dt >= 0):
+            raise FgdwaError(f"dt = {short_repr(dt)}: must be a finite number of seconds >= 0")
+        start = before[index]
+        moved = float(np.hypot(*(np.asarray(mover.center) - np.asarray(start.center))))
+        speed = max(float(np.hypot(*start.velocity)), float(np.hypot(*mover.velocity)))
+        if moved - speed * dt > mover.radius:
+            jumped = moved
     return Contact(point=_disc_contact(footprint, pose, mover, unit), obstacle="mover", mover=index,
-                   mover_closing=float(np.dot(mover.velocity, unit)), robot_closing=float(np.dot(velocity, -unit)))
+                   mover_closing=float(np.dot(mover.velocity, unit)), robot_closing=float(np.dot(velocity, -unit)),
+                   jumped=jumped)
 
 
 def collision_reason(truth: CollisionWorld, footprint: Footprint, pose, velocity,
