@@ -530,6 +530,55 @@ TEST(FieldClearance, StillPointsGiveTheLeastOfEachAloneBitForBit) {
   }
 }
 
+// Rollouts' bounds among a map and many still points (bucketed, as live
+// lidar hits are): the least of the map's and every point's, bit for bit, on
+// every instruction set, for a circle (its distance to each) and a polygon
+// (its circumscribed circle's).
+TEST(FieldClearance, RolloutBoundsAmongManyStillPointsAreTheLeastOfMapAndEveryPoint) {
+  std::mt19937 rng(31);
+  // A sparse map, and hits along two walls it lacks (y = 1.5 and x = 0, in
+  // buckets of several rows and columns): far from the map's obstacles the
+  // walls are what lowers the bounds.
+  const OccupancyGrid grid = test::random_cells(rng, 60, 80, 0.1, Vec2(-1.0, 0.5), 0.002);
+  std::uniform_real_distribution<double> x(-1.0, 7.0), y(0.5, 6.5), heading(-M_PI, M_PI), v(0.0, 1.0), w(-1.0, 1.0),
+      radius(0.0, 0.1), off(-0.03, 0.03);
+  std::vector<Disc> points;
+  for (int j = 0; j < 300; ++j) {
+    const double along = 0.04 * (j / 2);
+    const Vec2 at = j % 2 ? Vec2(along, 1.5 + off(rng)) : Vec2(off(rng), 1.5 + along);
+    points.push_back(Disc{at, j % 5 == 0 ? radius(rng) : 0.0, Vec2::Zero()});
+  }
+  const auto field = std::make_shared<const DistanceField>(grid, 1.0);
+  const PlannerQueries mapped(field), with_points(field, points);
+  std::vector<Trajectory> rollouts;
+  for (int i = 0; i < 41; ++i) rollouts.push_back(rollout(Pose2{x(rng), y(rng), heading(rng)}, Twist{v(rng), w(rng)}, 0.1, 15));
+  const std::size_t steps = 15, n = rollouts.size() * steps;
+  const Footprint rectangle = Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}});
+  for (int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    for (const Footprint& fp : {Footprint::circle(0.25), rectangle}) {
+      std::vector<double> map_only(n), both(n);
+      mapped.rollouts_lower_bounds(fp, rollouts.data(), rollouts.size(), steps, 0.1, map_only.data());
+      with_points.rollouts_lower_bounds(fp, rollouts.data(), rollouts.size(), steps, 0.1, both.data());
+      std::size_t lowered = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Pose2& pose = rollouts[k / steps][k % steps];
+        double least = map_only[k];
+        for (const Disc& p : points) {
+          const double dx = p.center.x() - pose.x, dy = p.center.y() - pose.y;
+          least = std::min(least, (std::sqrt(dx * dx + dy * dy) - fp.radius()) - p.radius);
+        }
+        ASSERT_EQ(both[k], least) << "rollout " << k / steps << " pose " << k % steps;
+        lowered += least < map_only[k];
+      }
+      EXPECT_GT(lowered, n / 10);  // the points matter, and not everywhere
+      EXPECT_LT(lowered, n);
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+}
+
 // A polygon against many movers: the nearest by the circumscribed circle is
 // measured first and settles the others; the result is the least of each
 // disc's clearance alone, bit for bit, with the discs in any order and more
