@@ -297,6 +297,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
   result_.min_clearance.resize(n);
   result_.moving_contact.resize(n);
   escape_.assign(n, -std::numeric_limits<double>::infinity());
+  fixed_clearance_.assign(n, -std::numeric_limits<double>::infinity());
   shallowest_.assign(n, -std::numeric_limits<double>::infinity());
   result_.free_distance.resize(n);
   const double inf = std::numeric_limits<double>::infinity();
@@ -479,6 +480,7 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
       if (!terrain_centre_only)
         result_.min_clearance[i] = impassable_clearance(poses, std::min(last, k), result_.min_clearance[i]);
     }
+    fixed_clearance_[i] = result_.min_clearance[i];
     result_.moving_contact[i] = std::numeric_limits<double>::infinity();
     if (reason == RejectReason::None && moving_world) {
       double closest = std::numeric_limits<double>::infinity();
@@ -793,6 +795,10 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
   for (std::size_t j = 0; j < m; ++j)
     signed_weights[j] = result_.senses[j] == CriticSense::Cost ? -cycle_weights_[j] : cycle_weights_[j];
   double best = -std::numeric_limits<double>::infinity();
+  // Movers apart: their predicted contacts have rules of their own (moving_horizon).
+  bool some_clear = false;
+  if (params_.prefer_clear)
+    for (const std::size_t i : admissible_index_) some_clear = some_clear || fixed_clearance_[i] > 0.0;
   for (const std::size_t i : admissible_index_) {
     double total = 0.0;
     for (std::size_t j = 0; j < m; ++j) total += signed_weights[j] * result_.normalized(i, j);
@@ -807,6 +813,7 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
                   ") makes a sample's total overflow: scale the scores down or normalise them");
     }
     result_.total(static_cast<Eigen::Index>(i)) = total;
+    if (some_clear && !(fixed_clearance_[i] > 0.0)) continue;  // scored, but not chosen
     if (total > best) {  // strict: ties keep the first sample, deterministically
       best = total;
       result_.best_index = static_cast<int>(i);

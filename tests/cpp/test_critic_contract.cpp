@@ -29,9 +29,12 @@ struct Scene {
   }
 };
 
+// One critic chooses alone: among every admissible sample (prefer_clear off:
+// which rollouts keep clear of the walls is no critic's preference).
 PlannerParams single(const std::string& critic, Normalization normalization) {
   PlannerParams p;
   p.normalization = normalization;
+  p.prefer_clear = false;
   p.critics = {{critic, 1.0}};
   return p;
 }

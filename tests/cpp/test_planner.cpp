@@ -498,6 +498,49 @@ TEST(LocalPlanner, BoxedInReportsNoAdmissibleVelocityAndBrakes) {
   EXPECT_EQ(calm.status, Status::Ok);
 }
 
+// A wall 2.5 m ahead and the goal behind it: at 0.75 m/s or more a straight
+// rollout of 3 s meets the wall, though the braking rule admits it (the robot
+// could stop first). Scored on heading and speed alone, preferring clear
+// rollouts takes the best that keeps clear to its end; without, the velocity
+// critic takes one that meets the wall.
+TEST(LocalPlanner, PrefersARolloutClearOfTheWallsToOneOnlyBrakingAdmits) {
+  std::vector<std::uint8_t> cells(60 * 80, 0);
+  for (int row = 0; row < 60; ++row)
+    for (int col = 35; col < 40; ++col) cells[static_cast<std::size_t>(row) * 80 + col] = 1;  // x in [2.5, 3.0)
+  const OccupancyGrid grid(60, 80, 0.1, Vec2(-1.0, -3.0), cells);
+  const FieldClearance world(std::make_shared<const DistanceField>(grid));
+  const RobotLimits limits;
+  const RobotState state{Pose2{0.0, 0.0, 0.0}, Twist{0.8, 0.0}};
+  for (const bool prefer : {true, false}) {
+    PlannerParams params;
+    params.prefer_clear = prefer;
+    params.critics = {{"heading", 0.5}, {"velocity", 1.0}};
+    LocalPlanner planner(limits, Footprint::circle(0.25), params);
+    const PlanResult& r = planner.plan(state, Vec2(5.0, 0.0), world);
+    ASSERT_EQ(r.status, Status::Ok);
+    const auto best = static_cast<std::size_t>(r.best_index);
+    int clear = 0, braking_only = 0;
+    for (std::size_t i = 0; i < r.samples.size(); ++i) {
+      if (r.reasons[i] != RejectReason::None) continue;
+      (r.min_clearance[i] > 0.0 ? clear : braking_only) += 1;
+    }
+    ASSERT_GT(clear, 0);
+    ASSERT_GT(braking_only, 0);
+    if (prefer) {
+      EXPECT_GT(r.min_clearance[best], 0.0);
+      // The best of the clear ones by total.
+      for (std::size_t i = 0; i < r.samples.size(); ++i) {
+        if (r.reasons[i] == RejectReason::None && r.min_clearance[i] > 0.0) {
+          EXPECT_LE(r.total(static_cast<Eigen::Index>(i)), r.total(static_cast<Eigen::Index>(best)));
+        }
+      }
+    } else {
+      EXPECT_LE(r.min_clearance[best], 0.0);
+      EXPECT_GT(r.command.v, 0.75);
+    }
+  }
+}
+
 TEST(LocalPlanner, GoalReachedWithinTolerance) {
   const RobotLimits limits;
   PlannerParams params;
@@ -611,7 +654,9 @@ TEST(LocalPlanner, DiagnosticsHaveOneRowPerSampleAndOneColumnPerCritic) {
     ASSERT_EQ(r.critic_names, (std::vector<std::string>{"heading", "clearance", "velocity"}));
     ASSERT_EQ(r.weights, (std::vector<double>{0.5, 0.15, 1.0}));
     ASSERT_EQ(r.reject_counts[0] + r.reject_counts[1], n);
-    double best = -kInf;
+    // The first maximum of the total among the samples whose rollouts keep
+    // clear (no movers here: min_clearance is the fixed world's), else among all.
+    double best = -kInf, best_clear = -kInf;
     for (Eigen::Index i = 0; i < n; ++i) {
       const bool rejected = r.reasons[static_cast<std::size_t>(i)] != RejectReason::None;
       if (rejected) {
@@ -624,11 +669,21 @@ TEST(LocalPlanner, DiagnosticsHaveOneRowPerSampleAndOneColumnPerCritic) {
       ASSERT_LE(r.raw(i, 1), 1.5);  // the cap from the critic's parameters
       ASSERT_EQ(r.raw(i, 2), r.samples[static_cast<std::size_t>(i)].v);
       best = std::max(best, r.total(i));
+      if (r.min_clearance[static_cast<std::size_t>(i)] > 0.0) best_clear = std::max(best_clear, r.total(i));
     }
     if (r.status == Status::Ok) {
-      ASSERT_EQ(r.total(r.best_index), best);
+      const bool any_clear = best_clear > -kInf;
+      const double chosen = any_clear ? best_clear : best;
+      ASSERT_EQ(r.total(r.best_index), chosen);
+      if (any_clear) {
+        ASSERT_GT(r.min_clearance[static_cast<std::size_t>(r.best_index)], 0.0);
+      }
       // Ties go to the first sample.
-      for (Eigen::Index i = 0; i < r.best_index; ++i) ASSERT_LT(r.total(i), best);
+      for (Eigen::Index i = 0; i < r.best_index; ++i) {
+        if (!any_clear || r.min_clearance[static_cast<std::size_t>(i)] > 0.0) {
+          ASSERT_LT(r.total(i), chosen);
+        }
+      }
       ++checked;
     }
   }
@@ -682,7 +737,12 @@ void check_normalization(Normalization mode) {
         }
       }
       if (mode != Normalization::None) continue;
-      // The total is the weighted sum of the raw terms and the choice its first maximum.
+      // The total is the weighted sum of the raw terms and the choice its first
+      // maximum, among the samples that keep clear when some do.
+      bool any_clear = false;
+      for (Eigen::Index i = 0; i < r.raw.rows(); ++i)
+        any_clear = any_clear || (r.reasons[static_cast<std::size_t>(i)] == RejectReason::None &&
+                                  r.min_clearance[static_cast<std::size_t>(i)] > 0.0);
       double best = -kInf;
       Eigen::Index best_index = -1;
       for (Eigen::Index i = 0; i < r.raw.rows(); ++i) {
@@ -690,6 +750,7 @@ void check_normalization(Normalization mode) {
         ASSERT_EQ(r.normalized.row(i), r.raw.row(i));
         const double total = 0.5 * r.raw(i, 0) + 0.15 * r.raw(i, 1) + 1.0 * r.raw(i, 2);
         ASSERT_NEAR(r.total(i), total, 1e-12);
+        if (any_clear && !(r.min_clearance[static_cast<std::size_t>(i)] > 0.0)) continue;
         if (r.total(i) > best) best = r.total(i), best_index = i;
       }
       ASSERT_EQ(r.best_index, best_index);
