@@ -21,7 +21,8 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 double MatchScoreSum(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y, std::size_t m, double ox, double oy,
-                     const DistanceField::LowerBounds& table, const float* HWY_RESTRICT weights, std::size_t n) {
+                     const DistanceField::LowerBounds& table, const float* HWY_RESTRICT weights, std::size_t n,
+                     bool in_lanes) {
   if (!table.pieces) return 0.0;
   const double inv = table.inverse_piece;
   const auto scalar = [&](std::size_t k) {
@@ -32,9 +33,10 @@ double MatchScoreSum(const double* HWY_RESTRICT x, const double* HWY_RESTRICT y,
   const hn::Rebind<std::int32_t, decltype(d)> d32;
   const hn::Rebind<float, decltype(d)> df;
   const std::size_t lanes = hn::Lanes(d);
-  // Byte offsets fit in 32 bits below a thousand million pieces; past that
-  // the scalar look-up reads them.
-  const std::size_t vector_end = table.rows * static_cast<double>(table.stride) < 1e9 ? m - m % lanes : 0;
+  // Byte offsets fit in 32 bits below a thousand million pieces; past that,
+  // or where lanes may not sum apart, the scalar look-up reads them in order.
+  const bool vectors = in_lanes && table.rows * static_cast<double>(table.stride) < 1e9;
+  const std::size_t vector_end = vectors ? m - m % lanes : 0;
   const auto Ox = hn::Set(d, ox), Oy = hn::Set(d, oy), Inv = hn::Set(d, inv), zero = hn::Zero(d);
   const auto cols = hn::Set(d, table.cols), rows = hn::Set(d, table.rows), stride = hn::Set(d, static_cast<double>(table.stride));
   const auto entries = hn::Set(d, static_cast<double>(n));
@@ -69,8 +71,8 @@ namespace detail {
 HWY_EXPORT(MatchScoreSum);
 
 double match_score_sum(const double* x, const double* y, std::size_t m, double ox, double oy,
-                       const DistanceField::LowerBounds& table, const float* weights, std::size_t n) {
-  return HWY_DYNAMIC_DISPATCH(MatchScoreSum)(x, y, m, ox, oy, table, weights, n);
+                       const DistanceField::LowerBounds& table, const float* weights, std::size_t n, bool in_lanes) {
+  return HWY_DYNAMIC_DISPATCH(MatchScoreSum)(x, y, m, ox, oy, table, weights, n, in_lanes);
 }
 
 bool exact_match_sums(const float* weights, std::size_t n, std::size_t points) {

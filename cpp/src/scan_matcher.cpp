@@ -70,16 +70,8 @@ class Scorer {
   double operator()(const std::vector<double>& xs, const std::vector<double>& ys, double x, double y) const {
     const double inv = table_.inverse_piece;
     const double ox = (x - table_.origin_x) * inv, oy = (y - table_.origin_y) * inv;
-    const std::size_t n = weights_.size();
-    double sum = 0.0;
-    if (vectors_) {
-      sum = detail::match_score_sum(xs.data(), ys.data(), xs.size(), ox, oy, table_, weights_.data(), n);
-    } else {
-      for (std::size_t k = 0; k < xs.size(); ++k) {
-        const std::uint16_t* at = table_.piece_at(ox + xs[k] * inv, oy + ys[k] * inv);
-        if (at && *at < n) sum += weights_[*at];
-      }
-    }
+    const double sum =
+        detail::match_score_sum(xs.data(), ys.data(), xs.size(), ox, oy, table_, weights_.data(), weights_.size(), vectors_);
     return sum / static_cast<double>(xs.size());
   }
 

@@ -152,8 +152,10 @@ TEST(MatchScore, LanesSumToTheSequentialSumsBits) {
     }
     for (const int64_t target : hwy::SupportedAndGeneratedTargets()) {
       hwy::SetSupportedTargetsForTest(target);
-      EXPECT_EQ(detail::match_score_sum(x.data(), y.data(), m, ox, oy, table, weights.data(), weights.size()), sequential)
-          << hwy::TargetName(target) << ", " << m << " hits";
+      for (const bool in_lanes : {true, false})
+        EXPECT_EQ(detail::match_score_sum(x.data(), y.data(), m, ox, oy, table, weights.data(), weights.size(), in_lanes),
+                  sequential)
+            << hwy::TargetName(target) << ", " << m << " hits, in lanes " << in_lanes;
     }
     hwy::SetSupportedTargetsForTest(0);
   }

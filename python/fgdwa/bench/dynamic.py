@@ -127,8 +127,8 @@ def _episode(task: DynamicTask):
     """The task's scenario and its episode (every cycle kept, with the fan a recording shows, when ``task.record``)."""
     scenario = scenario_from_dict(field_document(task), where=field_name(task.level, task.seed))
     preset, overrides = PLANNER_VARIANTS[task.planner]
-    navigator = params_with(simulated_navigator(), **overrides)
-    navigator = params_with(navigator, **group_settings(task.setup.settings, "navigator"))
+    # The variant's overrides, then the named settings over them.
+    navigator = params_with(simulated_navigator(), **{**overrides, **group_settings(task.setup.settings, "navigator")})
     planner = group_settings(task.setup.settings, "planner")
     if planner:
         scenario = dataclasses.replace(scenario, overrides={**scenario.overrides, **planner})

@@ -175,6 +175,11 @@ def collision_contact(truth: CollisionWorld, footprint: Footprint, pose, velocit
     a mover that jumped: one that moved farther than its speed at either end
     of the step takes it, by more than its radius."""
     discs = [Disc(d.center, d.radius, d.velocity) for d in truth.discs]
+    if before is not None:
+        if len(before) != len(discs):
+            raise FgdwaError(f"before: {len(before)} discs for the truth's {len(discs)}")
+        if not (isinstance(dt, (int, float)) and math.isfinite(dt) and dt >= 0):
+            raise FgdwaError(f"dt = {short_repr(dt)}: must be a finite number of seconds >= 0")
     pose = tuple(float(v) for v in pose)
     gaps = [footprint.signed_distance(pose, d.center) - d.radius for d in discs]
     truth.discs = []
@@ -192,10 +197,6 @@ def collision_contact(truth: CollisionWorld, footprint: Footprint, pose, velocit
     unit = away / max(float(np.hypot(*away)), 1e-12)
     jumped = 0.0
     if before is not None:
-        if len(before) != len(discs):
-            raise FgdwaError(f"before: {len(before)} discs for the truth's {len(discs)}")
-        if not (isinstance(dt, (int, float)) and math.isfinite(dt) and dt >= 0):
-            raise FgdwaError(f"dt = {short_repr(dt)}: must be a finite number of seconds >= 0")
         start = before[index]
         moved = float(np.hypot(*(np.asarray(mover.center) - np.asarray(start.center))))
         speed = max(float(np.hypot(*start.velocity)), float(np.hypot(*mover.velocity)))
