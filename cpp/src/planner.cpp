@@ -693,8 +693,15 @@ int LocalPlanner::best_evasion(const ClearanceSource& world) const {
   // Samples come v-major: a column of the window shares its turn (escape_after).
   const std::size_t columns = std::max<std::size_t>(headings_.size(), 1);
   std::vector<EscapeTurns> turns(columns);
+  // A way out that only braking keeps off the fixed world is taken only when
+  // no other is: braking is what an evasion has no time for.
+  bool some_clear = false;
+  if (params_.prefer_clear)
+    for (std::size_t i = 0; i < result_.samples.size(); ++i)
+      some_clear = some_clear || (result_.reasons[i] == RejectReason::Moving && keeps_clear(i));
   for (std::size_t i = 0; i < result_.samples.size(); ++i) {
     if (result_.reasons[i] != RejectReason::Moving) continue;
+    if (some_clear && !keeps_clear(i)) continue;
     const Escape e = escape_after(i, world, turns[i % columns]);
     const auto key = std::make_tuple(e.contact, e.room, escape_[i]);
     if (best < 0 || key > best_key) {  // strict: ties keep the first sample
@@ -798,7 +805,7 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
   // Movers apart: their predicted contacts have rules of their own (moving_horizon).
   bool some_clear = false;
   if (params_.prefer_clear)
-    for (const std::size_t i : admissible_index_) some_clear = some_clear || fixed_clearance_[i] > 0.0;
+    for (const std::size_t i : admissible_index_) some_clear = some_clear || stays_off(i);
   for (const std::size_t i : admissible_index_) {
     double total = 0.0;
     for (std::size_t j = 0; j < m; ++j) total += signed_weights[j] * result_.normalized(i, j);
@@ -813,7 +820,7 @@ void LocalPlanner::score_and_choose(const CriticContext& context) {
                   ") makes a sample's total overflow: scale the scores down or normalise them");
     }
     result_.total(static_cast<Eigen::Index>(i)) = total;
-    if (some_clear && !(fixed_clearance_[i] > 0.0)) continue;  // scored, but not chosen
+    if (some_clear && !stays_off(i)) continue;  // scored, but not chosen
     if (total > best) {  // strict: ties keep the first sample, deterministically
       best = total;
       result_.best_index = static_cast<int>(i);

@@ -1383,7 +1383,7 @@ class PlannerParams:
       moving_reach (m): the rejection's horizon is at most the time the fastest mover (speed plus growth) takes to travel this far (0: moving_horizon alone)
       mover_caution_radius (m): while a moving obstacle is this near the footprint, the velocity critic's weight is scaled by mover_speed_weight
       mover_speed_weight: the velocity critic's weight factor beside a mover (1: no change)
-      prefer_clear: choose among the admissible samples whose rollouts keep clear of the fixed world to their end when there are any, the others (admitted by the braking rule) only when there are none (false: among all, as the paper)
+      prefer_clear: choose among the admissible samples whose rollouts stay off the fixed world (to where they first come within the contact margin) when there are any, the others (admitted by the braking rule) only when there are none; an evasion among the samples whose rollouts keep the margin to their end when there are any (false: among all, as the paper)
       heading_target: what the heading critic aims at: goal (DWA) or key_nodes (GDWA: the first key node of the global path not yet reached)
       key_nodes: key nodes of the global path, for heading_target key_nodes
       critics: the critics scored, each {name, weight, params} (default heading 0.5, clearance 0.15, velocity 1.0)

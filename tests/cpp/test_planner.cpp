@@ -541,6 +541,45 @@ TEST(LocalPlanner, PrefersARolloutClearOfTheWallsToOneOnlyBrakingAdmits) {
   }
 }
 
+// A disc overtaking the robot from behind, faster than it can drive, meets
+// every sample: the planner evades. Driving on fastest puts the contact off
+// longest, but its rollout runs into a wall 2.5 m ahead, which only braking
+// keeps the robot off. Preferring clear rollouts takes the best way out that
+// keeps clear of the wall to its end; without, the fastest is taken.
+TEST(LocalPlanner, AnEvasionTooPrefersAWayOutClearOfTheWalls) {
+  std::vector<std::uint8_t> cells(60 * 80, 0);
+  for (int row = 0; row < 60; ++row)
+    for (int col = 35; col < 40; ++col) cells[static_cast<std::size_t>(row) * 80 + col] = 1;  // x in [2.5, 3.0)
+  const OccupancyGrid grid(60, 80, 0.1, Vec2(-1.0, -3.0), cells);
+  const Disc disc{Vec2(-1.4, 0.0), 0.3, Vec2(2.0, 0.0)};
+  const FieldClearance world(std::make_shared<const DistanceField>(grid), {disc});
+  const Footprint footprint = Footprint::circle(0.25);
+  const RobotState state{Pose2{0.0, 0.0, 0.0}, Twist{0.8, 0.0}};
+  for (const bool prefer : {true, false}) {
+    SCOPED_TRACE(::testing::Message() << "prefer_clear " << prefer);
+    PlannerParams params;
+    params.prefer_clear = prefer;
+    LocalPlanner planner(RobotLimits{}, footprint, params);
+    const PlanResult& r = planner.plan(state, Vec2(5.0, 0.0), world);
+    ASSERT_EQ(r.status, Status::Evading);
+    // Clear of the fixed world over the whole rollout, brute force.
+    const auto clear = [&](std::size_t i) {
+      for (const Pose2& pose : planner.rollouts()[i])
+        if (world.static_part().clearance(footprint, pose, 0.0) <= params.safety_margin) return false;
+      return true;
+    };
+    int clear_ways = 0, braking_only = 0;
+    for (std::size_t i = 0; i < r.samples.size(); ++i) {
+      ASSERT_NE(r.reasons[i], RejectReason::None);
+      if (r.reasons[i] == RejectReason::Moving) (clear(i) ? clear_ways : braking_only) += 1;
+    }
+    ASSERT_GT(clear_ways, 0);
+    ASSERT_GT(braking_only, 0);
+    EXPECT_EQ(clear(static_cast<std::size_t>(r.best_index)), prefer)
+        << "chose (" << r.command.v << ", " << r.command.omega << ")";
+  }
+}
+
 TEST(LocalPlanner, GoalReachedWithinTolerance) {
   const RobotLimits limits;
   PlannerParams params;

@@ -126,7 +126,7 @@ struct PlannerParams {
     v.real("moving_reach", &P::moving_reach, "m", Bounds::at_least(0, limits::kMaxHorizon), "the rejection's horizon is at most the time the fastest mover (speed plus growth) takes to travel this far (0: moving_horizon alone)");
     v.real("mover_caution_radius", &P::mover_caution_radius, "m", Bounds::at_least(0), "while a moving obstacle is this near the footprint, the velocity critic's weight is scaled by mover_speed_weight");
     v.real("mover_speed_weight", &P::mover_speed_weight, "", Bounds::closed(0, 1), "the velocity critic's weight factor beside a mover (1: no change)");
-    v.flag("prefer_clear", &P::prefer_clear, "choose among the admissible samples whose rollouts keep clear of the fixed world to their end when there are any, the others (admitted by the braking rule) only when there are none (false: among all, as the paper)");
+    v.flag("prefer_clear", &P::prefer_clear, "choose among the admissible samples whose rollouts stay off the fixed world (to where they first come within the contact margin) when there are any, the others (admitted by the braking rule) only when there are none; an evasion among the samples whose rollouts keep the margin to their end when there are any (false: among all, as the paper)");
     v.choice("heading_target", &P::heading_target, "what the heading critic aims at: goal (DWA) or key_nodes (GDWA: the first key node of the global path not yet reached)");
     v.group("key_nodes", &P::key_nodes, "key nodes of the global path, for heading_target key_nodes");
     v.critics("critics", &P::critics, "the critics scored, each {name, weight, params} (default heading 0.5, clearance 0.15, velocity 1.0)");
@@ -254,6 +254,12 @@ class LocalPlanner {
   std::vector<double> travel_;   // rows x (steps + 1), from 0
   std::vector<SpeedProfile> profiles_;
   std::vector<double> fixed_clearance_;  // per sample: its rollout's least clearance from the fixed world (movers apart)
+  // Whether sample i's rollout stays off the fixed world up to its first pose
+  // within the contact margin (or its end, or the goal): the admissible choice.
+  bool stays_off(std::size_t i) const { return fixed_clearance_[i] > 0.0; }
+  // Whether it keeps the contact margin to its end (or the goal), no braking
+  // needed: the evasion's choice.
+  bool keeps_clear(std::size_t i) const { return fixed_clearance_[i] > margin_; }
   std::vector<double> escape_;  // per sample: clearance to the movers at the end of the horizon
   std::vector<double> shallowest_;  // per sample: its least clearance to the movers within the horizon
   double moving_horizon_ = 0.0;  // s, this cycle's: moving_horizon, shortened by moving_reach
