@@ -660,7 +660,10 @@ TEST(Disc, AnAccelerationLastsItsTimeThenTheVelocityReachedHolds) {
   EXPECT_TRUE(d.center_at(1.0).isApprox(Vec2(2.0, 3.0), 1e-12));
   EXPECT_TRUE(d.center_at(2.0).isApprox(Vec2(3.0, 5.0), 1e-12));
   EXPECT_TRUE(d.center_at(0.0).isApprox(d.center, 1e-12));
-  EXPECT_DOUBLE_EQ(d.top_speed(), 1.0 + 2.0);
+  EXPECT_DOUBLE_EQ(d.top_speed(), std::sqrt(5.0));  // (1, 2) m/s at the end
+  // Braking from 2 m/s to 1 m/s: fastest now. Reversing from 1 m/s to -3 m/s: fastest at the end.
+  EXPECT_DOUBLE_EQ((Disc{Vec2::Zero(), 0.3, Vec2(2.0, 0.0), 0.0, Vec2(-2.0, 0.0), 0.5}).top_speed(), 2.0);
+  EXPECT_DOUBLE_EQ((Disc{Vec2::Zero(), 0.3, Vec2(1.0, 0.0), 0.0, Vec2(-4.0, 0.0), 1.0}).top_speed(), 3.0);
   EXPECT_TRUE(d.moves());
   EXPECT_TRUE((Disc{Vec2::Zero(), 0.3, Vec2::Zero(), 0.0, Vec2(1.0, 0.0), 0.5}).moves());
   // Without a time to act in, an acceleration is nothing.

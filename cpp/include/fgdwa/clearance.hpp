@@ -34,8 +34,10 @@ struct Disc {
   bool moves() const { return growth > 0.0 || !velocity.isZero() || (accel_time > 0.0 && !acceleration.isZero()); }
   // Never below 0, for a time past as well.
   double radius_at(double t) const { return std::max(radius + growth * t, 0.0); }
-  // m/s, the fastest its centre ever moves.
-  double top_speed() const { return velocity.norm() + acceleration.norm() * accel_time; }
+  // m/s, the fastest its centre ever moves: the velocity changes linearly
+  // while the acceleration lasts, so its norm is largest at an end (a disc
+  // that brakes is fastest now, not twice as fast).
+  double top_speed() const { return std::max(velocity.norm(), (velocity + accel_time * acceleration).norm()); }
   // s, the first time ahead (0 if now) at which the disc, grown by `reach`
   // (m, >= 0), covers `point`; +inf if it never does. Closed form while the
   // disc does not accelerate; through the acceleration, by steps that pass
