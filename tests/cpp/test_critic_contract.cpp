@@ -20,10 +20,7 @@ struct Scene {
   GlobalPath path{{Vec2(0.5, 1.0), Vec2(2.5, 1.0), Vec2(3.5, 2.5)}};
   RobotState state;
   Scene() {
-    std::vector<std::uint8_t> cells(40 * 50, 0);
-    for (int row = 14; row < 18; ++row)
-      for (int col = 18; col < 21; ++col) cells[static_cast<std::size_t>(row) * 50 + col] = 1;
-    field = std::make_shared<DistanceField>(OccupancyGrid(40, 50, 0.1, Vec2(0.0, 0.0), cells));
+    field = std::make_shared<DistanceField>(test::grid_with_boxes(40, 50, 0.1, Vec2(0.0, 0.0), {{14, 18, 4, 3}}));
     state.pose = Pose2{0.8, 1.1, 0.2};
     state.twist = Twist{0.5, 0.1};
   }

@@ -18,11 +18,7 @@ using fgdwa::test::kInf;
 namespace {
 
 OccupancyGrid room(int rows, int cols, const std::vector<std::array<int, 4>>& boxes = {}) {
-  std::vector<std::uint8_t> cells(static_cast<std::size_t>(rows) * cols, 0);
-  for (const auto& b : boxes)  // row0, col0, height, width
-    for (int row = b[0]; row < b[0] + b[2]; ++row)
-      for (int col = b[1]; col < b[1] + b[3]; ++col) cells[static_cast<std::size_t>(row) * cols + col] = 1;
-  return OccupancyGrid(rows, cols, 0.1, Vec2(0.0, 0.0), cells);
+  return fgdwa::test::grid_with_boxes(rows, cols, 0.1, Vec2(0.0, 0.0), boxes);
 }
 
 PlannerParams gdwa() { return planner_preset("gdwa").params; }

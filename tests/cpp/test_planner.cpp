@@ -404,10 +404,7 @@ TEST(LocalPlanner, FreeDistanceCountsContactMidTurn) {
 // clamped at zero counted every motion there as contact, and the robot stood
 // still for good.
 TEST(LocalPlanner, RobotAtOrInsideAnObstacleMayTurnAndLeaveButNotCloseIn) {
-  std::vector<std::uint8_t> cells(40 * 40, 0);
-  for (int row = 0; row < 40; ++row)
-    for (int col = 20; col < 24; ++col) cells[static_cast<std::size_t>(row) * 40 + col] = 1;  // x in [1.0, 1.2)
-  const OccupancyGrid grid(40, 40, 0.05, Vec2(0.0, -1.0), cells);
+  const OccupancyGrid grid = test::grid_with_boxes(40, 40, 0.05, Vec2(0.0, -1.0), {{0, 20, 40, 4}});  // x in [1.0, 1.2)
   const FieldClearance world(std::make_shared<const DistanceField>(grid));
   const Footprint fp = Footprint::circle(0.25);
   PlannerParams params;
@@ -445,10 +442,7 @@ TEST(LocalPlanner, RobotAtOrInsideAnObstacleMayTurnAndLeaveButNotCloseIn) {
 // told there: a rectangle touching or overlapping a wall it faces may not drive
 // on into it (with a negative margin, zero would have passed for "no deeper").
 TEST(LocalPlanner, PolygonInContactMayNotDriveDeeper) {
-  std::vector<std::uint8_t> cells(40 * 40, 0);
-  for (int row = 0; row < 40; ++row)
-    for (int col = 20; col < 24; ++col) cells[static_cast<std::size_t>(row) * 40 + col] = 1;  // x in [1.0, 1.2)
-  const OccupancyGrid grid(40, 40, 0.05, Vec2(0.0, -1.0), cells);
+  const OccupancyGrid grid = test::grid_with_boxes(40, 40, 0.05, Vec2(0.0, -1.0), {{0, 20, 40, 4}});  // x in [1.0, 1.2)
   const FieldClearance world(std::make_shared<const DistanceField>(grid));
   const Footprint fp = Footprint::polygon({{-0.25, -0.15}, {0.25, -0.15}, {0.25, 0.15}, {-0.25, 0.15}});
   PlannerParams params;
@@ -470,10 +464,7 @@ TEST(LocalPlanner, PolygonInContactMayNotDriveDeeper) {
 // Fast, straight at a wall 0.25 m beyond the footprint: no command in the
 // window can stop in time.
 TEST(LocalPlanner, BoxedInReportsNoAdmissibleVelocityAndBrakes) {
-  std::vector<std::uint8_t> cells(40 * 40, 0);
-  for (int row = 0; row < 40; ++row)
-    for (int col = 15; col < 20; ++col) cells[static_cast<std::size_t>(row) * 40 + col] = 1;  // x in [0.5, 1.0)
-  const OccupancyGrid grid(40, 40, 0.1, Vec2(-1.0, -2.0), cells);
+  const OccupancyGrid grid = test::grid_with_boxes(40, 40, 0.1, Vec2(-1.0, -2.0), {{0, 15, 40, 5}});  // x in [0.5, 1.0)
   const FieldClearance fast(std::make_shared<const DistanceField>(grid));
   const CollisionWorld exact(grid);
   const RobotLimits limits;
@@ -504,10 +495,7 @@ TEST(LocalPlanner, BoxedInReportsNoAdmissibleVelocityAndBrakes) {
 // rollouts takes the best that keeps clear to its end; without, the velocity
 // critic takes one that meets the wall.
 TEST(LocalPlanner, PrefersARolloutClearOfTheWallsToOneOnlyBrakingAdmits) {
-  std::vector<std::uint8_t> cells(60 * 80, 0);
-  for (int row = 0; row < 60; ++row)
-    for (int col = 35; col < 40; ++col) cells[static_cast<std::size_t>(row) * 80 + col] = 1;  // x in [2.5, 3.0)
-  const OccupancyGrid grid(60, 80, 0.1, Vec2(-1.0, -3.0), cells);
+  const OccupancyGrid grid = test::grid_with_boxes(60, 80, 0.1, Vec2(-1.0, -3.0), {{0, 35, 60, 5}});  // x in [2.5, 3.0)
   const FieldClearance world(std::make_shared<const DistanceField>(grid));
   const RobotLimits limits;
   const RobotState state{Pose2{0.0, 0.0, 0.0}, Twist{0.8, 0.0}};
@@ -547,10 +535,7 @@ TEST(LocalPlanner, PrefersARolloutClearOfTheWallsToOneOnlyBrakingAdmits) {
 // keeps the robot off. Preferring clear rollouts takes the best way out that
 // keeps clear of the wall to its end; without, the fastest is taken.
 TEST(LocalPlanner, AnEvasionTooPrefersAWayOutClearOfTheWalls) {
-  std::vector<std::uint8_t> cells(60 * 80, 0);
-  for (int row = 0; row < 60; ++row)
-    for (int col = 35; col < 40; ++col) cells[static_cast<std::size_t>(row) * 80 + col] = 1;  // x in [2.5, 3.0)
-  const OccupancyGrid grid(60, 80, 0.1, Vec2(-1.0, -3.0), cells);
+  const OccupancyGrid grid = test::grid_with_boxes(60, 80, 0.1, Vec2(-1.0, -3.0), {{0, 35, 60, 5}});  // x in [2.5, 3.0)
   const Disc disc{Vec2(-1.4, 0.0), 0.3, Vec2(2.0, 0.0)};
   const FieldClearance world(std::make_shared<const DistanceField>(grid), {disc});
   const Footprint footprint = Footprint::circle(0.25);
@@ -631,10 +616,7 @@ TEST(LocalPlanner, NearTheGoalNoFasterThanItCanStopOnIt) {
 
 TEST(LocalPlanner, ClearanceIsScoredUntilTheRolloutReachesTheGoal) {
   // A wall 0.6 m past the goal: rollouts that pass through the goal run into it later.
-  std::vector<std::uint8_t> cells(30 * 40, 0);
-  for (int row = 0; row < 30; ++row)
-    for (int col = 30; col < 40; ++col) cells[static_cast<std::size_t>(row) * 40 + col] = 1;
-  const OccupancyGrid grid(30, 40, 0.1, Vec2(0.0, 0.0), cells);
+  const OccupancyGrid grid = test::grid_with_boxes(30, 40, 0.1, Vec2(0.0, 0.0), {{0, 30, 30, 10}});
   const FieldClearance world(std::make_shared<DistanceField>(grid));
   PlannerParams params;
   params.goal_tolerance = 0.2;

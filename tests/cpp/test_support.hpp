@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -28,6 +29,16 @@ void expect_error_naming(F&& f, const std::string& field) {
     EXPECT_NE(std::string(e.what()).find(field), std::string::npos)
         << "message '" << e.what() << "' does not name '" << field << "'";
   }
+}
+
+// Free cells but for the boxes, each {first row, first column, rows, columns}.
+inline OccupancyGrid grid_with_boxes(int rows, int cols, double resolution, Vec2 origin,
+                                     const std::vector<std::array<int, 4>>& boxes) {
+  std::vector<std::uint8_t> cells(static_cast<std::size_t>(rows) * cols, 0);
+  for (const auto& b : boxes)
+    for (int row = b[0]; row < b[0] + b[2]; ++row)
+      for (int col = b[1]; col < b[1] + b[3]; ++col) cells[static_cast<std::size_t>(row) * cols + col] = 1;
+  return OccupancyGrid(rows, cols, resolution, origin, std::move(cells));
 }
 
 // Cells with independent probability `density`.
