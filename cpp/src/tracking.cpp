@@ -47,6 +47,9 @@ constexpr std::size_t kDisplacedUpdates = 3;
 // Std devs of a hit's range noise the other scan's beams must have seen
 // through it by, across their lines of sight.
 constexpr double kLateralSigmas = 2.0;
+// Earlier scans the leading side is tested against: half a moving_window
+// back, a quarter, an eighth, ... this many in all.
+constexpr int kLeadingLags = 4;
 // Std devs by which the prediction window's slope must depart from the moving
 // window's before the prediction takes it.
 constexpr double kChangeSigmas = 1.0;
@@ -314,15 +317,15 @@ void Tracker::relabel(Track& t, const Memory& memory) const {
   if (fast) t.last_fast = newest;
 }
 
-// The newest of `items` (time-ordered pairs) at least half a window old:
-// a slow mover needs that long to leave the free_margin behind. Until one is
-// that old, the oldest before `time`: a fast mover does so within a scan or
-// two, and waiting half a window would leave it a static obstacle for that long.
+// The newest of `items` (time-ordered pairs) at least `age` old (s). Until
+// one is that old, the oldest before `time`: a fast mover leaves the
+// free_margin behind within a scan or two, and waiting longer would leave it
+// a static obstacle for that long.
 template <class Item>
-const Item* Tracker::reference_of(const std::deque<std::pair<double, Item>>& items, double time) const {
+const Item* Tracker::reference_of(const std::deque<std::pair<double, Item>>& items, double time, double age) const {
   const Item* reference = nullptr;
   for (const auto& [t, item] : items) {
-    if (t > time - 0.5 * params_.moving_window + 1e-9) {
+    if (t > time - age + 1e-9) {
       if (!reference && t < time - 1e-9) reference = &item;
       break;
     }
@@ -333,13 +336,21 @@ const Item* Tracker::reference_of(const std::deque<std::pair<double, Item>>& ite
 
 bool Tracker::displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan,
                                    double time) const {
-  // Its leading side where the earlier scan saw through ...
+  // Its leading side where an earlier scan saw through: half a window back
+  // (a slow mover needs that long to leave the free_margin behind), or a
+  // quarter, an eighth, a sixteenth (a fast one does so sooner, and one that
+  // just came out from behind something or out of the field of view was not
+  // seen where it is now half a window ago) ...
   const double noise = kLateralSigmas * params_.measurement_std;
-  const Scan* earlier = reference_of(scans_, time);
-  if (earlier && share_seen_through(*earlier, cluster.points, scan.pose.position(), params_.free_margin, noise))
-    return true;
-  // ... or its trailing side, as seen then, where this scan sees through.
-  const Shape* before = reference_of(memory.shapes, time);
+  const Scan* tested = nullptr;
+  for (int halving = 1; halving <= kLeadingLags; ++halving) {
+    const Scan* earlier = reference_of(scans_, time, params_.moving_window / static_cast<double>(1 << halving));
+    if (!earlier || earlier == tested) continue;
+    tested = earlier;
+    if (share_seen_through(*earlier, cluster.points, scan.pose.position(), params_.free_margin, noise)) return true;
+  }
+  // ... or its trailing side, as seen half a window back, where this scan sees through.
+  const Shape* before = reference_of(memory.shapes, time, 0.5 * params_.moving_window);
   return before && share_seen_through(scan, before->points, before->from, params_.free_margin, noise);
 }
 

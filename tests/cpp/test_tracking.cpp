@@ -400,6 +400,31 @@ TEST(Tracker, AMoverSeenFromTheFirstScanIsLabelledWithinFiveScans) {
     }
 }
 
+// A sensor turning at 2 rad/s brings a disc coming at it at 1.5 m/s out of
+// its blind sector. Half a window before it came into view, where it now is
+// lay in the blind sector too: only the scans since can show it displacing
+// free space, and it is labelled moving within five scans of coming into view.
+TEST(Tracker, AMoverComingIntoViewIsLabelledWithinFiveScans) {
+  const Disc mover{Vec2(-4.0, 0.0), 0.5, Vec2(1.5, 0.0)};
+  const auto turning = [](double t) { return Pose2{0.0, 0.0, 2.0 * t}; };
+  const double blind = M_PI - 0.5 * noisy_lidar().fov;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(::testing::Message() << "seed " << seed);
+    Tracker tracker;
+    double in_view = std::numeric_limits<double>::infinity(), labelled = in_view;
+    run(tracker, {mover}, 1.5, seed, turning, [&](double t, const Tracker& tr) {
+      const Vec2 c = mover.center_at(t);
+      const double off_heading = std::abs(wrap_angle(std::atan2(c.y(), c.x()) - turning(t).theta));
+      // Its whole near side within the field of view.
+      if (std::isinf(in_view) && off_heading + std::asin(mover.radius / c.norm()) < M_PI - blind) in_view = t;
+      if (std::isinf(labelled) && !tr.moving_discs().empty()) labelled = t;
+    });
+    ASSERT_TRUE(std::isfinite(in_view));
+    EXPECT_GT(in_view, 0.2);  // it does come out of the blind sector
+    EXPECT_LE(labelled - in_view, 0.4 + 1e-9) << "in view at " << in_view << " s, labelled at " << labelled << " s";
+  }
+}
+
 // A disc walks at 0.5 m/s for 2 s, then stands. Without a hold it is static
 // again about a second after it stopped (when its window no longer moves);
 // with moving_hold 2 s it stays a mover, nearly at rest, for 2 s more.

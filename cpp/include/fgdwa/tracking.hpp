@@ -203,8 +203,11 @@ class Tracker {
   // kept, apart from the oldest kept), a mover's hits lie where the
   // other scan saw through (its leading side in the earlier scan's free
   // space, or its trailing side in the later one's), a static object's never,
-  // however its apparent outline changes as the robot drives past. Without
-  // scans (detections from elsewhere) only the window speed decides.
+  // however its apparent outline changes as the robot drives past. The
+  // leading side is also tested against scans a quarter, an eighth and a
+  // sixteenth of a window old: a fast mover that just came into view was
+  // hidden half a window ago. Without scans (detections from elsewhere) only
+  // the window speed decides.
   void update(const std::vector<Cluster>& clusters, double time, const Scan* scan = nullptr);
   const std::vector<Track>& tracks() const { return tracks_; }
   // For each cluster of the last update, the id of the track that took it.
@@ -271,7 +274,7 @@ class Tracker {
   void relabel(Track& track, const Memory& memory) const;
   bool displaces_free_space(const Memory& memory, const Cluster& cluster, const Scan& scan, double time) const;
   template <class Item>
-  const Item* reference_of(const std::deque<std::pair<double, Item>>& items, double time) const;
+  const Item* reference_of(const std::deque<std::pair<double, Item>>& items, double time, double age) const;
   TrackerParams params_;
   std::vector<Track> tracks_;
   std::vector<Memory> memory_;  // one per track
