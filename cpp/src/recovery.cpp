@@ -137,16 +137,31 @@ RecoveryStep Recovery::step(const RobotState& state, const Vec2& goal, const Fie
     out.replan = true;
     out.drive = true;
   };
+  // A mover that would reach the robot before the recovery is over ends it:
+  // backing up or turning blind to it, the robot would wait to be hit; the
+  // planner gets it out of the way. Cut short, it is no attempt that failed.
+  const auto mover_coming = [&](double time_left) {
+    return !movers.empty() && !standing_clear_of(movers, state, std::max(time_left, dt_));
+  };
+  const auto cut_short = [&] {
+    --recoveries_;
+    hand_over();
+  };
   if (mode_ == NavigatorMode::BackingUp) {
     out.command = backup_command(state);
-    if (out.command.v < 0.0 && step_clear(seen, state.pose, out.command))
+    if (mover_coming((params_.backup_distance - backed_up_) / reverse_limit()))
+      cut_short();
+    else if (out.command.v < 0.0 && step_clear(seen, state.pose, out.command))
       backed_up_ += -out.command.v * dt_;
     else
       hand_over();  // done, or the rear closed
   } else if (mode_ == NavigatorMode::Rotating) {
     out.command = rotate_command(state);
-    const bool done = std::abs(wrap_angle(rotate_goal_ - state.pose.theta)) < 0.05 && std::abs(out.command.omega) < 1e-3;
-    if (done || rotated_ >= params_.rotate_limit || !step_clear(seen, state.pose, out.command))
+    const double angle = std::abs(wrap_angle(rotate_goal_ - state.pose.theta));
+    const bool done = angle < 0.05 && std::abs(out.command.omega) < 1e-3;
+    if (mover_coming(std::min(angle, params_.rotate_limit - rotated_) / limits_.omega_max))
+      cut_short();
+    else if (done || rotated_ >= params_.rotate_limit || !step_clear(seen, state.pose, out.command))
       hand_over();
     else
       rotated_ += std::abs(out.command.omega) * dt_;

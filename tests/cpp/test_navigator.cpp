@@ -377,6 +377,40 @@ TEST(Navigator, AMoverComingAtAStalledRobotEndsTheWaitAtOnce) {
   }
 }
 
+// A robot stalls with no mover near and backs up. Two cycles on, a disc 1 m
+// ahead comes at it: it would arrive within the 1.5 s the backing up has
+// left, so the recovery ends at once, uncounted, and the planner drives. A
+// disc going away leaves the backing up be.
+TEST(Navigator, AMoverComingAtARobotBackingUpEndsTheRecovery) {
+  const OccupancyGrid map = room(30, 60);
+  NavigatorParams params;
+  params.stall_time = 0.75;
+  const auto third_cycle = [&](const Vec2& disc_velocity) {
+    Navigator nav(RobotLimits{}, Footprint::circle(0.2), gdwa(), map, MapMode::Known, LidarParams{}, nullptr, params);
+    nav.set_goal(Vec2(5.5, 1.5));
+    double t = 0.0;
+    RobotState s = at(2.0, 1.5);
+    hold(nav, s, 5, t, 0.15);
+    for (int i = 0; i < 2; ++i, t += 0.15) {
+      const CycleRecord& r = nav.step(s, nullptr, t);
+      EXPECT_EQ(r.mode, NavigatorMode::BackingUp);
+      s.pose = unicycle_step(s.pose, r.command, 0.15);
+      s.twist = r.command;
+    }
+    const std::vector<Disc> disc = {Disc{s.pose.position() + Vec2(1.0, 0.0), 0.3, disc_velocity}};
+    const CycleRecord r = nav.step(s, nullptr, t, disc);
+    return r;
+  };
+  const CycleRecord coming = third_cycle(Vec2(-1.0, 0.0));
+  EXPECT_NE(coming.mode, NavigatorMode::BackingUp);
+  EXPECT_TRUE(coming.planned);
+  EXPECT_EQ(coming.recoveries, 0);
+  const CycleRecord leaving = third_cycle(Vec2(1.0, 0.0));
+  EXPECT_EQ(leaving.mode, NavigatorMode::BackingUp);
+  EXPECT_FALSE(leaving.planned);
+  EXPECT_EQ(leaving.recoveries, 1);
+}
+
 namespace {
 
 // Distance from p to the disc `d` swept over `horizon` seconds (a capsule).

@@ -2,8 +2,8 @@
 // The navigator's modes and how it gets out of a stall: a robot that has not
 // made progress for stall_time waits for a mover beside it to pass, or backs
 // up while its rear is clear, or turns toward the most open direction; then
-// the local planner takes over on a new path. Too many recoveries in a row
-// without progress and it gives up.
+// the local planner takes over on a new path (at once if a mover comes at
+// the robot). Too many recoveries in a row without progress and it gives up.
 //
 // Lifecycle: reset() with every new goal; step() every cycle, before the local
 // planner; end_cycle() after it.
