@@ -138,8 +138,9 @@ RecoveryStep Recovery::step(const RobotState& state, const Vec2& goal, const Fie
     out.drive = true;
   };
   // A mover that would reach the robot before the recovery is over ends it:
-  // backing up or turning blind to it, the robot would wait to be hit; the
-  // planner gets it out of the way. Cut short, it is no attempt that failed.
+  // standing, backing up or turning blind to it, the robot would wait to be
+  // hit; the planner gets it out of the way. Cut short, a backing up or a
+  // turn is no attempt that failed (a wait never counts as one).
   const auto mover_coming = [&](double time_left) {
     return !movers.empty() && !standing_clear_of(movers, state, std::max(time_left, dt_));
   };
@@ -166,8 +167,7 @@ RecoveryStep Recovery::step(const RobotState& state, const Vec2& goal, const Fie
     else
       rotated_ += std::abs(out.command.omega) * dt_;
   } else if (mode_ == NavigatorMode::Waiting) {
-    // A mover coming at the robot ends the wait: the planner gets it out of the way.
-    if (wait_cycles_left_ > 0 && standing_clear_of(movers, state, wait_cycles_left_-- * dt_))
+    if (wait_cycles_left_ > 0 && !mover_coming(wait_cycles_left_-- * dt_))
       out.command = braking_command(limits_, state.twist, dt_);
     else
       hand_over();

@@ -398,8 +398,7 @@ TEST(Navigator, AMoverComingAtARobotBackingUpEndsTheRecovery) {
       s.twist = r.command;
     }
     const std::vector<Disc> disc = {Disc{s.pose.position() + Vec2(1.0, 0.0), 0.3, disc_velocity}};
-    const CycleRecord r = nav.step(s, nullptr, t, disc);
-    return r;
+    return nav.step(s, nullptr, t, disc);  // a copy: the navigator goes with the lambda
   };
   const CycleRecord coming = third_cycle(Vec2(-1.0, 0.0));
   EXPECT_NE(coming.mode, NavigatorMode::BackingUp);

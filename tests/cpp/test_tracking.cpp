@@ -407,7 +407,7 @@ TEST(Tracker, AMoverSeenFromTheFirstScanIsLabelledWithinFiveScans) {
 TEST(Tracker, AMoverComingIntoViewIsLabelledWithinFiveScans) {
   const Disc mover{Vec2(-4.0, 0.0), 0.5, Vec2(1.5, 0.0)};
   const auto turning = [](double t) { return Pose2{0.0, 0.0, 2.0 * t}; };
-  const double blind = M_PI - 0.5 * noisy_lidar().fov;
+  const double half_fov = 0.5 * noisy_lidar().fov;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     SCOPED_TRACE(::testing::Message() << "seed " << seed);
     Tracker tracker;
@@ -416,7 +416,7 @@ TEST(Tracker, AMoverComingIntoViewIsLabelledWithinFiveScans) {
       const Vec2 c = mover.center_at(t);
       const double off_heading = std::abs(wrap_angle(std::atan2(c.y(), c.x()) - turning(t).theta));
       // Its whole near side within the field of view.
-      if (std::isinf(in_view) && off_heading + std::asin(mover.radius / c.norm()) < M_PI - blind) in_view = t;
+      if (std::isinf(in_view) && off_heading + std::asin(mover.radius / c.norm()) < half_fov) in_view = t;
       if (std::isinf(labelled) && !tr.moving_discs().empty()) labelled = t;
     });
     ASSERT_TRUE(std::isfinite(in_view));
