@@ -67,6 +67,9 @@ bool distance_callback(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, void*
 bool collision_callback(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, void* data) {
   auto* hit = static_cast<bool*>(data);
   fcl::CollisionRequestd request;
+  // FCL's own GJK here too: libccd's reports a box prism and a long wall box as
+  // touching 0.14 m apart, and misjudges cylinders as it does their distances.
+  request.gjk_solver_type = fcl::GST_INDEP;
   fcl::CollisionResultd result;
   fcl::collide(a, b, request, result);
   *hit = *hit || result.isCollision();

@@ -442,6 +442,54 @@ TEST(CollisionWorld, GridAndDiscsTogetherTakeTheNearest) {
   EXPECT_THROW(world.set_discs({Disc{Vec2(0, 0), -1.0, Vec2::Zero()}}), Error);
 }
 
+// An arena's walls merge into boxes metres long. A footprint beside one is in
+// contact exactly when its distance is zero: the referee counts a collision
+// by in_collision, and a contact reported 0.14 m from a wall was a collision
+// that never happened.
+TEST(CollisionWorld, ContactBesideLongWallsIsExactlyZeroDistance) {
+  // A room 8 m x 6 m inside walls 0.5 m thick, in 0.1 m cells.
+  const int rows = 70, cols = 90;
+  std::vector<std::uint8_t> cells(rows * cols, 0);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      if (r < 5 || r >= rows - 5 || c < 5 || c >= cols - 5) cells[r * cols + c] = 1;
+  const OccupancyGrid grid(rows, cols, 0.1, Vec2(-4.5, -3.5), cells);
+  const CollisionWorld exact(grid);
+  ASSERT_LE(exact.boxes().size(), 4u);
+  const Footprint footprints[] = {robot_preset("jackal").outline, Footprint::circle(0.25)};
+  std::mt19937 rng(4141);
+  // Centres within 0.45 m of the walls' inner faces (x = +-4, y = +-3), any heading.
+  std::uniform_real_distribution<double> along(-1.0, 1.0), depth(-0.1, 0.45), angle(-M_PI, M_PI);
+  int contacts = 0, clear = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int side = trial % 4;
+    const double d = depth(rng);
+    Pose2 pose{0.0, 0.0, angle(rng)};
+    if (side < 2) {
+      pose.x = side == 0 ? -4.0 + d : 4.0 - d;
+      pose.y = 3.0 * along(rng);
+    } else {
+      pose.x = 4.0 * along(rng);
+      pose.y = side == 2 ? -3.0 + d : 3.0 - d;
+    }
+    for (const Footprint& fp : footprints) {
+      const double brute = test::brute_footprint_distance(grid, fp, pose);
+      SCOPED_TRACE(::testing::Message() << "trial " << trial << " pose " << pose.x << "," << pose.y << ","
+                                        << pose.theta << " brute " << brute);
+      ASSERT_NEAR(exact.clearance(fp, pose, 0.0), brute, 1e-6);
+      if (brute > 1e-6) {
+        ASSERT_FALSE(exact.in_collision(fp, pose, 0.0));
+        ++clear;
+      } else if (brute == 0.0) {
+        ++contacts;
+        ASSERT_TRUE(exact.in_collision(fp, pose, 0.0));
+      }
+    }
+  }
+  EXPECT_GE(contacts, 1000);
+  EXPECT_GE(clear, 1000);
+}
+
 // Discs that neither move nor grow are kept column by column and scanned in one
 // vectorised loop; the clearance is still the plain minimum over every disc,
 // bit for bit for a circle, and the lower bounds never exceed it.
