@@ -46,6 +46,11 @@ Geometry footprint_geometry(const Footprint& footprint) {
   return std::make_shared<fcl::Convexd>(points, n + 2, faces);
 }
 
+// FCL's own GJK for every query: libccd, FCL's default, misreports distances
+// to cylinders (the circle footprint, the discs) by up to 0.28 m at 1-3 m
+// apart, and reported a box prism beside a long wall box as touching 0.14 m away.
+constexpr fcl::GJKSolverType kSolver = fcl::GST_INDEP;
+
 struct DistanceData {
   double min_distance = std::numeric_limits<double>::infinity();
 };
@@ -53,9 +58,7 @@ struct DistanceData {
 bool distance_callback(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, void* data, double& dist) {
   auto* d = static_cast<DistanceData*>(data);
   fcl::DistanceRequestd request;
-  // FCL's own GJK, run to 1e-9: the default libccd solver misreports distances
-  // to cylinders (the circle footprint, the discs) by up to 0.28 m at 1-3 m apart.
-  request.gjk_solver_type = fcl::GST_INDEP;
+  request.gjk_solver_type = kSolver;
   request.distance_tolerance = 1e-9;
   fcl::DistanceResultd result;
   const double value = fcl::distance(a, b, request, result);
@@ -67,9 +70,7 @@ bool distance_callback(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, void*
 bool collision_callback(fcl::CollisionObjectd* a, fcl::CollisionObjectd* b, void* data) {
   auto* hit = static_cast<bool*>(data);
   fcl::CollisionRequestd request;
-  // FCL's own GJK here too: libccd's reports a box prism and a long wall box as
-  // touching 0.14 m apart, and misjudges cylinders as it does their distances.
-  request.gjk_solver_type = fcl::GST_INDEP;
+  request.gjk_solver_type = kSolver;
   fcl::CollisionResultd result;
   fcl::collide(a, b, request, result);
   *hit = *hit || result.isCollision();
