@@ -99,8 +99,13 @@ void FieldClearance::set_discs(std::vector<Disc> discs) {
   }
   discs_ = std::move(discs);
   moving_.clear();
+  likely_moving_.clear();
   std::vector<Disc> still;
   for (const Disc& d : discs_) (d.moves() ? moving_ : still).push_back(d);
+  if (std::any_of(moving_.begin(), moving_.end(), [](const Disc& d) { return d.growth > 0.0; })) {
+    likely_moving_ = moving_;
+    for (Disc& d : likely_moving_) d.growth = 0.0;
+  }
   static_discs_.assign(still);
   split_moving();
 }
@@ -612,14 +617,16 @@ bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {
 
 namespace {
 // moving_disc_clearance() without the checks, for callers that made them;
-// bit for bit below `cutoff`, elsewhere a value from cutoff up to it.
+// bit for bit below `cutoff`, elsewhere a value from cutoff up to it. `every`:
+// measures still discs too (a likely disc may have moved by its growth alone).
 double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Footprint& footprint, const Pose2& pose,
-                                       double t, double cutoff = std::numeric_limits<double>::infinity()) {
+                                       double t, double cutoff = std::numeric_limits<double>::infinity(),
+                                       bool every = false) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   double best = kInf;
   if (footprint.is_circle()) {
     for (const Disc& disc : discs) {
-      if (!disc.moves()) continue;
+      if (!every && !disc.moves()) continue;
       const double radius = disc.radius_at(t);
       const double gap = (disc.center_at(t) - pose.position()).norm();
       // The circumscribed circle settles the far ones, once there is a best to beat.
@@ -640,7 +647,7 @@ double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Foo
   const Disc* nearest = nullptr;
   double nearest_low = kInf;
   for (const Disc& disc : discs) {
-    if (!disc.moves()) continue;
+    if (!every && !disc.moves()) continue;
     const double low = circumscribed(disc);
     if (!nearest || low < nearest_low) nearest = &disc, nearest_low = low;
   }
@@ -657,7 +664,7 @@ double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Foo
   };
   measure(*nearest);
   for (const Disc& disc : discs)
-    if (disc.moves() && &disc != nearest && circumscribed(disc) < std::min(best, cutoff)) measure(disc);
+    if ((every || disc.moves()) && &disc != nearest && circumscribed(disc) < std::min(best, cutoff)) measure(disc);
   // At or above the cutoff, the discs passed over may hold a lower clearance,
   // though none below the cutoff.
   return std::min(best, cutoff);
@@ -679,6 +686,12 @@ double FieldClearance::moving_clearance(const Footprint& footprint, const Pose2&
 double FieldClearance::moving_clearance_below(const Footprint& footprint, const Pose2& pose, double t,
                                               double cutoff) const {
   return moving_disc_clearance_unchecked(moving_, footprint, pose, t, cutoff);
+}
+
+double FieldClearance::likely_moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const {
+  return likely_moving_.empty() ? moving_disc_clearance_unchecked(moving_, footprint, pose, t)
+                                : moving_disc_clearance_unchecked(likely_moving_, footprint, pose, t,
+                                                                  std::numeric_limits<double>::infinity(), true);
 }
 
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {

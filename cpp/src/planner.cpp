@@ -600,7 +600,8 @@ double LocalPlanner::half_step_motion(const Twist& twist, double obstacle_speed)
   return 0.5 * params_.dt * (std::abs(twist.v) + footprint_.radius() * std::abs(twist.omega) + obstacle_speed);
 }
 
-LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, EscapeTurns& turns) const {
+LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, bool likely,
+                                                 EscapeTurns& turns) const {
   // Where the first period, ramping from the measured twist, leaves the wheels.
   Twist first = params_.wheels == WheelModel::Instant ? result_.samples[i] : start_twist_;
   response_step(first.v, result_.samples[i].v, limits_.acc_v, limits_.braking_v(), response_, params_.dt);
@@ -664,7 +665,8 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
         pose.y = pose.y + twist.v * sines[j] * params_.dt;
         moved += (std::abs(twist.v) + reach * std::abs(twist.omega)) * params_.dt;
         const double t = (k + 1) * params_.dt;
-        const double c = world.moving_clearance(footprint_, pose, t);
+        const double c =
+            likely ? world.likely_moving_clearance(footprint_, pose, t) : world.moving_clearance(footprint_, pose, t);
         room = std::min(room, c);
         bool hit = c - moving_margin <= half_step_motion(twist, mover_speed_);
         if (!hit && moved >= anchor_room) {
@@ -688,6 +690,18 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
 }
 
 int LocalPlanner::best_evasion(const ClearanceSource& world) const {
+  bool escapes = false;
+  const int best = best_evasion(world, false, escapes);
+  // When the grown discs leave no way out within the horizon, their growth,
+  // more than the robot's motion, decides when each way meets them: the latest
+  // contact then goes to standing still (the rest meet them a step sooner)
+  // while a slow disc walks into the robot. Where the movers most likely go
+  // tells the ways apart.
+  if (best < 0 || escapes || !world.movers_grow()) return best;
+  return best_evasion(world, true, escapes);
+}
+
+int LocalPlanner::best_evasion(const ClearanceSource& world, bool likely, bool& escapes) const {
   int best = -1;
   std::tuple<double, double, double> best_key;
   // Samples come v-major: a column of the window shares its turn (escape_after).
@@ -702,13 +716,14 @@ int LocalPlanner::best_evasion(const ClearanceSource& world) const {
   for (std::size_t i = 0; i < result_.samples.size(); ++i) {
     if (result_.reasons[i] != RejectReason::Moving) continue;
     if (some_clear && !keeps_clear(i)) continue;
-    const Escape e = escape_after(i, world, turns[i % columns]);
+    const Escape e = escape_after(i, world, likely, turns[i % columns]);
     const auto key = std::make_tuple(e.contact, e.room, escape_[i]);
     if (best < 0 || key > best_key) {  // strict: ties keep the first sample
       best = static_cast<int>(i);
       best_key = key;
     }
   }
+  escapes = best >= 0 && std::isinf(std::get<0>(best_key));
   return best;
 }
 

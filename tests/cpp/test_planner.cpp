@@ -1016,6 +1016,46 @@ TEST(LocalPlanner, AnEvasionTakesTheSampleAfterWhichTheRobotGetsAwayBest) {
   EXPECT_GT(better_than_latest_arc, 0);
 }
 
+// A slow disc walks at the standing robot, its prediction growing fast (an
+// uncertain track, as a tracker gives a disc it has seen for a few scans):
+// within the horizon every way meets the grown disc, standing still last,
+// since the growth closes in whatever the robot does. Where the disc most
+// likely goes, driving off gets away. Each cycle the prediction starts again
+// from where the disc is; the robot, at rest, must get out of its way. The
+// disc comes from anywhere but within 60 degrees of straight ahead: with no
+// reverse (v_min 0) the robot cannot turn away from one ahead before it
+// arrives.
+TEST(LocalPlanner, WhenNoWayEscapesTheGrownDiscsTheLikelyOnesDecide) {
+  PlannerParams params;
+  params.sim_time = 1.5;
+  const RobotLimits limits;
+  const Footprint footprint = Footprint::circle(0.25);
+  LocalPlanner planner(limits, footprint, params);
+  for (int degrees = 60; degrees <= 300; degrees += 10) {
+    const double bearing = degrees * M_PI / 180;
+    SCOPED_TRACE(::testing::Message() << "disc from bearing " << bearing);
+    const Vec2 toward(-std::cos(bearing), -std::sin(bearing));
+    const Disc truth{-1.05 * toward, 0.35, 0.35 * toward};
+    RobotState state{Pose2{}, Twist{}};
+    double closest = std::numeric_limits<double>::infinity();
+    int evasions = 0;
+    for (int k = 0; k < 25; ++k) {
+      const double t = k * params.dt;
+      Disc predicted = truth;
+      predicted.center = truth.center_at(t);
+      predicted.growth = 0.45;
+      const FieldClearance world(nullptr, {predicted});
+      // The goal behind the disc: the robot has no business going anywhere but out of its way.
+      const PlanResult& r = planner.plan(state, -3.0 * toward, world);
+      evasions += r.status == Status::Evading;
+      state = RobotState{unicycle_step(state.pose, r.command, params.dt), r.command};
+      closest = std::min(closest, (state.pose.position() - truth.center_at(t + params.dt)).norm() - 0.25 - 0.35);
+    }
+    EXPECT_GT(evasions, 0);
+    EXPECT_GT(closest, 0.0);
+  }
+}
+
 // A disc already at the robot and coming on: every sample meets it in the
 // first period, so no continuation helps. The planner drives the sample that
 // goes least deep into it over the horizon, not the one that would come out

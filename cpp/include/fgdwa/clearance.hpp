@@ -105,6 +105,15 @@ class ClearanceSource {
     (void)cutoff;
     return moving_clearance(footprint, pose, t);
   }
+  // moving_clearance() without the checks, each mover where it is most
+  // likely: its disc without the growth its prediction's uncertainty adds
+  // ahead. The evasion falls back on it when the grown discs leave no way
+  // out. The same as moving_clearance() while no mover grows.
+  virtual double likely_moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const {
+    return moving_clearance(footprint, pose, t);
+  }
+  // Whether some moving obstacle grows ahead (likely_moving_clearance() may differ).
+  virtual bool movers_grow() const { return false; }
   // clearance() without the checks, bit for bit where it is below `cutoff`;
   // elsewhere any value from cutoff up to the clearance. The planner often
   // needs to know only that a pose is at least so clear, which a source may
@@ -148,6 +157,8 @@ class FieldClearance : public ClearanceSource {
                              std::size_t steps, double dt, double* out) const override;
   double clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const override;
   double moving_clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const override;
+  double likely_moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
+  bool movers_grow() const override { return !likely_moving_.empty(); }
 
  private:
   std::shared_ptr<const DistanceField> field_;
@@ -187,6 +198,8 @@ class FieldClearance : public ClearanceSource {
   };
   StaticDiscs static_discs_;
   std::vector<Disc> moving_;
+  // moving_ without growth, when some disc there grows (else empty).
+  std::vector<Disc> likely_moving_;
 };
 
 }  // namespace fgdwa

@@ -313,11 +313,16 @@ class LocalPlanner {
     double theta0 = std::numeric_limits<double>::quiet_NaN(), omega0 = std::numeric_limits<double>::quiet_NaN();
     std::vector<double> omega, theta, cos, sin;  // [target * n_steps + step]
   };
-  Escape escape_after(std::size_t i, const ClearanceSource& world, EscapeTurns& turns) const;
+  // `likely`: against the movers where they most likely go (likely_moving_clearance).
+  Escape escape_after(std::size_t i, const ClearanceSource& world, bool likely, EscapeTurns& turns) const;
   // Among the samples rejected only for a moving obstacle, the one whose best
   // continuation meets a mover or a wall latest (then keeps the most room, then
-  // is farthest from the movers at the horizon); -1 if there is none.
+  // is farthest from the movers at the horizon); -1 if there is none. Judged
+  // against the movers' grown discs, or, when no way escapes those within the
+  // horizon, against where they most likely go.
   int best_evasion(const ClearanceSource& world) const;
+  // The same against the grown discs or the likely ones; `escapes`: whether the chosen way meets nothing.
+  int best_evasion(const ClearanceSource& world, bool likely, bool& escapes) const;
   double margin_ = 0.0;  // this cycle's contact margin (m)
   Twist start_twist_;    // this cycle's measured twist, where every rollout starts
   double response_ = 0.0;  // s, the wheels' lag the rollouts model (0 with instant wheels)
