@@ -601,7 +601,7 @@ double LocalPlanner::half_step_motion(const Twist& twist, double obstacle_speed)
 }
 
 LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, bool likely,
-                                                 EscapeTurns& turns) const {
+                                                 const Escape& rival, EscapeTurns& turns) const {
   // Where the first period, ramping from the measured twist, leaves the wheels.
   Twist first = params_.wheels == WheelModel::Instant ? result_.samples[i] : start_twist_;
   response_step(first.v, result_.samples[i].v, limits_.acc_v, limits_.braking_v(), response_, params_.dt);
@@ -656,6 +656,13 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
       // up, the fixed world cannot come within the margin (no look-up, the
       // same answer).
       double moved = 0.0, anchor_room = room_at_first;
+      // Room only shrinks along a continuation: once it is below what a way
+      // out already keeps (this sample's best, or the samples' before it,
+      // whose tie this one would lose only at equal room), it cannot win.
+      constexpr double kNone = -std::numeric_limits<double>::infinity();
+      const double beaten_at = std::max(std::isinf(best.contact) ? best.room : kNone,
+                                        std::isinf(rival.contact) ? std::nextafter(rival.room, kNone) : kNone);
+      bool beaten = false;
       for (int k = 1; k < n_steps_; ++k) {
         const auto j = static_cast<std::size_t>(k);
         twist.v = ramp(twist.v, v_target, limits_.acc_v, limits_.braking_v(), params_.dt);
@@ -669,6 +676,10 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
             likely ? world.likely_moving_clearance(footprint_, pose, t) : world.moving_clearance(footprint_, pose, t);
         room = std::min(room, c);
         bool hit = c - moving_margin <= half_step_motion(twist, mover_speed_);
+        if (!hit && room <= beaten_at) {
+          beaten = true;
+          break;
+        }
         if (!hit && moved >= anchor_room) {
           // Only whether the margin is reached matters: a source may settle
           // that from its bounds (exact below the cutoff), and what it
@@ -683,6 +694,7 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
           break;
         }
       }
+      if (beaten) continue;
       if (contact > best.contact || (contact == best.contact && room > best.room)) best = Escape{contact, room};
     }
   }
@@ -716,7 +728,8 @@ int LocalPlanner::best_evasion(const ClearanceSource& world, bool likely, bool& 
   for (std::size_t i = 0; i < result_.samples.size(); ++i) {
     if (result_.reasons[i] != RejectReason::Moving) continue;
     if (some_clear && !keeps_clear(i)) continue;
-    const Escape e = escape_after(i, world, likely, turns[i % columns]);
+    const Escape rival = best < 0 ? Escape{} : Escape{std::get<0>(best_key), std::get<1>(best_key)};
+    const Escape e = escape_after(i, world, likely, rival, turns[i % columns]);
     const auto key = std::make_tuple(e.contact, e.room, escape_[i]);
     if (best < 0 || key > best_key) {  // strict: ties keep the first sample
       best = static_cast<int>(i);

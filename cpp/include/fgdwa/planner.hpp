@@ -314,7 +314,11 @@ class LocalPlanner {
     std::vector<double> omega, theta, cos, sin;  // [target * n_steps + step]
   };
   // `likely`: against the movers where they most likely go (likely_moving_clearance).
-  Escape escape_after(std::size_t i, const ClearanceSource& world, bool likely, EscapeTurns& turns) const;
+  // Continuations that cannot beat `rival` (the best of the samples before,
+  // contact -inf for none) are left unfinished: the result then falls short
+  // of rival's, as the finished one would.
+  Escape escape_after(std::size_t i, const ClearanceSource& world, bool likely, const Escape& rival,
+                      EscapeTurns& turns) const;
   // Among the samples rejected only for a moving obstacle, the one whose best
   // continuation meets a mover or a wall latest (then keeps the most room, then
   // is farthest from the movers at the horizon); -1 if there is none. Judged
