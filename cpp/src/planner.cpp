@@ -640,6 +640,10 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
       }
     }
   }
+  // One continuation's steps 1 .. n_steps - 1: each pose, how far any
+  // footprint point moved to reach it, and its clearance from the movers.
+  thread_local std::vector<double> step_x, step_y, step_theta, step_moved, step_clearance;
+  for (auto* column : {&step_x, &step_y, &step_theta, &step_moved, &step_clearance}) column->resize(steps);
   for (int b = 0; b < n_targets; ++b) {
     const double* const omegas = turns.omega.data() + static_cast<std::size_t>(b) * steps;
     const double* const thetas = turns.theta.data() + static_cast<std::size_t>(b) * steps;
@@ -650,12 +654,6 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
       Pose2 pose = poses[0];
       Twist twist = first;
       double contact = std::numeric_limits<double>::infinity(), room = std::numeric_limits<double>::infinity();
-      // The most any footprint point has moved since the last pose whose
-      // clearance from the fixed world is known (poses[0] first), and how
-      // much room that one had beyond the margin: until the motion uses it
-      // up, the fixed world cannot come within the margin (no look-up, the
-      // same answer).
-      double moved = 0.0, anchor_room = room_at_first;
       // Room only shrinks along a continuation: once it is below what a way
       // out already keeps (this sample's best, or the samples' before it,
       // whose tie this one would lose only at equal room), it cannot win.
@@ -663,6 +661,11 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
       const double beaten_at = std::max(std::isinf(best.contact) ? best.room : kNone,
                                         std::isinf(rival.contact) ? std::nextafter(rival.room, kNone) : kNone);
       bool beaten = false;
+      int last = n_steps_ - 1;  // the last step driven
+      // The movers first: the fixed world can only end a continuation
+      // sooner, which takes its contact earlier and leaves its room as it was
+      // up to there, so a continuation the movers alone do not let win is
+      // not looked at against the fixed world.
       for (int k = 1; k < n_steps_; ++k) {
         const auto j = static_cast<std::size_t>(k);
         twist.v = ramp(twist.v, v_target, limits_.acc_v, limits_.braking_v(), params_.dt);
@@ -670,31 +673,48 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
         pose.theta = thetas[j];
         pose.x = pose.x + twist.v * cosines[j] * params_.dt;
         pose.y = pose.y + twist.v * sines[j] * params_.dt;
-        moved += (std::abs(twist.v) + reach * std::abs(twist.omega)) * params_.dt;
         const double t = (k + 1) * params_.dt;
         const double c =
             likely ? world.likely_moving_clearance(footprint_, pose, t) : world.moving_clearance(footprint_, pose, t);
+        step_x[j] = pose.x, step_y[j] = pose.y, step_theta[j] = pose.theta, step_clearance[j] = c;
+        step_moved[j] = (std::abs(twist.v) + reach * std::abs(twist.omega)) * params_.dt;
         room = std::min(room, c);
-        bool hit = c - moving_margin <= half_step_motion(twist, mover_speed_);
-        if (!hit && room <= beaten_at) {
+        if (c - moving_margin <= half_step_motion(twist, mover_speed_)) {
+          contact = t, last = k;
+          break;
+        }
+        if (room <= beaten_at) {
           beaten = true;
           break;
         }
-        if (!hit && moved >= anchor_room) {
-          // Only whether the margin is reached matters: a source may settle
-          // that from its bounds (exact below the cutoff), and what it
-          // answers above it is still room the next steps may use.
-          const double fixed_room = fixed.clearance_below(footprint_, pose, t, margin_ + 1e-9) - margin_;
-          hit = fixed_room <= 0.0;
-          moved = 0.0;
-          anchor_room = fixed_room - 1e-9;
-        }
-        if (hit) {
+      }
+      if (beaten || !(contact > best.contact || (contact == best.contact && room > best.room))) continue;
+      // The fixed world along the steps before the movers' contact. The most
+      // any footprint point has moved since the last pose whose clearance
+      // from it is known (poses[0] first), and how much room that one had
+      // beyond the margin: until the motion uses it up, the fixed world
+      // cannot come within the margin (no look-up, the same answer).
+      double moved = 0.0, anchor_room = room_at_first;
+      room = std::numeric_limits<double>::infinity();
+      for (int k = 1; k <= last; ++k) {
+        const auto j = static_cast<std::size_t>(k);
+        room = std::min(room, step_clearance[j]);
+        if (k == last && std::isfinite(contact)) break;  // the movers' contact
+        moved += step_moved[j];
+        if (moved < anchor_room) continue;
+        // Only whether the margin is reached matters: a source may settle
+        // that from its bounds (exact below the cutoff), and what it
+        // answers above it is still room the next steps may use.
+        const double t = (k + 1) * params_.dt;
+        const double fixed_room =
+            fixed.clearance_below(footprint_, Pose2{step_x[j], step_y[j], step_theta[j]}, t, margin_ + 1e-9) - margin_;
+        if (fixed_room <= 0.0) {
           contact = t;
           break;
         }
+        moved = 0.0;
+        anchor_room = fixed_room - 1e-9;
       }
-      if (beaten) continue;
       if (contact > best.contact || (contact == best.contact && room > best.room)) best = Escape{contact, room};
     }
   }
