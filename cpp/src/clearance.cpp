@@ -694,6 +694,36 @@ double FieldClearance::likely_moving_clearance(const Footprint& footprint, const
                                                                   std::numeric_limits<double>::infinity(), true);
 }
 
+void FieldClearance::moving_clearances(const Footprint& footprint, const Pose2& pose, double t, double& grown,
+                                       double& likely) const {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  grown = likely = kInf;
+  if (likely_moving_.empty()) {
+    grown = likely = moving_disc_clearance_unchecked(moving_, footprint, pose, t);
+    return;
+  }
+  // likely_moving_ is moving_ without the growth, disc for disc: the centre
+  // and the distance to it serve both, each less its own radius (as
+  // moving_disc_clearance_unchecked takes them). A disc whose circumscribed
+  // bound reaches neither best cannot lower either.
+  const bool circle = footprint.is_circle();
+  double c = 0.0, s = 0.0;
+  if (!circle) heading_cos_sin(pose.theta, c, s);
+  for (std::size_t j = 0; j < moving_.size(); ++j) {
+    const Disc& disc = moving_[j];
+    const double grown_radius = disc.radius_at(t), likely_radius = likely_moving_[j].radius_at(t);
+    const Vec2 q = disc.center_at(t) - pose.position();
+    const double gap = q.norm();
+    if (gap - grown_radius - footprint.radius() >= grown && gap - likely_radius - footprint.radius() >= likely)
+      continue;
+    const double distance =
+        circle ? gap - footprint.radius()
+               : footprint.signed_distance_in_frame(Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y()));
+    grown = std::min(grown, distance - grown_radius);
+    likely = std::min(likely, distance - likely_radius);
+  }
+}
+
 double FieldClearance::clearance(const Footprint& footprint, const Pose2& pose, double t) const {
   detail::require_query_pose("pose", pose);
   detail::require_magnitude("t", t, limits::kMaxHorizon);

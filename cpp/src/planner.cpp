@@ -600,8 +600,8 @@ double LocalPlanner::half_step_motion(const Twist& twist, double obstacle_speed)
   return 0.5 * params_.dt * (std::abs(twist.v) + footprint_.radius() * std::abs(twist.omega) + obstacle_speed);
 }
 
-LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, bool likely,
-                                                 const Escape& rival, EscapeTurns& turns) const {
+void LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, int passes, const Escapes& rivals,
+                                EscapeTurns& turns, Escapes& out) const {
   // Where the first period, ramping from the measured twist, leaves the wheels.
   Twist first = params_.wheels == WheelModel::Instant ? result_.samples[i] : start_twist_;
   response_step(first.v, result_.samples[i].v, limits_.acc_v, limits_.braking_v(), response_, params_.dt);
@@ -610,9 +610,11 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
   // A contact in the first period cannot be helped by what follows it: of
   // those ways into a mover the shallowest is the least harm, not the one
   // that comes out farthest beyond it (straight through an oncoming disc).
-  if (!(result_.moving_contact[i] > params_.dt) || poses.empty())
-    return Escape{result_.moving_contact[i], shallowest_[i]};
-  Escape best{result_.moving_contact[i], -std::numeric_limits<double>::infinity()};
+  if (!(result_.moving_contact[i] > params_.dt) || poses.empty()) {
+    out.fill(Escape{result_.moving_contact[i], shallowest_[i]});
+    return;
+  }
+  out.fill(Escape{result_.moving_contact[i], -std::numeric_limits<double>::infinity()});
   const ClearanceSource& fixed = world.static_part();
   const double moving_margin = std::max(margin_, 0.0);  // as first_moving_contact counts it
   // No footprint point moves farther than the path driven plus the
@@ -641,9 +643,12 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
     }
   }
   // One continuation's steps 1 .. n_steps - 1: each pose, how far any
-  // footprint point moved to reach it, and its clearance from the movers.
-  thread_local std::vector<double> step_x, step_y, step_theta, step_moved, step_clearance;
-  for (auto* column : {&step_x, &step_y, &step_theta, &step_moved, &step_clearance}) column->resize(steps);
+  // footprint point moved to reach it, and its clearance from the movers
+  // (grown, then likely).
+  thread_local std::vector<double> step_x, step_y, step_theta, step_moved, step_clearance[2];
+  for (auto* column : {&step_x, &step_y, &step_theta, &step_moved, &step_clearance[0], &step_clearance[1]})
+    column->resize(steps);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   for (int b = 0; b < n_targets; ++b) {
     const double* const omegas = turns.omega.data() + static_cast<std::size_t>(b) * steps;
     const double* const thetas = turns.theta.data() + static_cast<std::size_t>(b) * steps;
@@ -653,20 +658,23 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
       const double v_target = limits_.v_min + (limits_.v_max - limits_.v_min) * a / (n_targets - 1);
       Pose2 pose = poses[0];
       Twist twist = first;
-      double contact = std::numeric_limits<double>::infinity(), room = std::numeric_limits<double>::infinity();
+      // Per ranking: the movers' contact (s, +inf: none), the least room to
+      // them up to it, the last step driven, and whether the ranking is done
+      // with this continuation (it met a mover or is beaten).
+      std::array<double, 2> contact{kInf, kInf}, room{kInf, kInf}, beaten_at{};
+      std::array<int, 2> last{n_steps_ - 1, n_steps_ - 1};
+      std::array<bool, 2> beaten{false, false}, done{false, passes < 2};
       // Room only shrinks along a continuation: once it is below what a way
       // out already keeps (this sample's best, or the samples' before it,
       // whose tie this one would lose only at equal room), it cannot win.
-      constexpr double kNone = -std::numeric_limits<double>::infinity();
-      const double beaten_at = std::max(std::isinf(best.contact) ? best.room : kNone,
-                                        std::isinf(rival.contact) ? std::nextafter(rival.room, kNone) : kNone);
-      bool beaten = false;
-      int last = n_steps_ - 1;  // the last step driven
+      for (int p = 0; p < passes; ++p)
+        beaten_at[p] = std::max(std::isinf(out[p].contact) ? out[p].room : -kInf,
+                                std::isinf(rivals[p].contact) ? std::nextafter(rivals[p].room, -kInf) : -kInf);
       // The movers first: the fixed world can only end a continuation
       // sooner, which takes its contact earlier and leaves its room as it was
       // up to there, so a continuation the movers alone do not let win is
       // not looked at against the fixed world.
-      for (int k = 1; k < n_steps_; ++k) {
+      for (int k = 1; k < n_steps_ && !(done[0] && done[1]); ++k) {
         const auto j = static_cast<std::size_t>(k);
         twist.v = ramp(twist.v, v_target, limits_.acc_v, limits_.braking_v(), params_.dt);
         twist.omega = omegas[j];
@@ -674,68 +682,73 @@ LocalPlanner::Escape LocalPlanner::escape_after(std::size_t i, const ClearanceSo
         pose.x = pose.x + twist.v * cosines[j] * params_.dt;
         pose.y = pose.y + twist.v * sines[j] * params_.dt;
         const double t = (k + 1) * params_.dt;
-        const double c =
-            likely ? world.likely_moving_clearance(footprint_, pose, t) : world.moving_clearance(footprint_, pose, t);
-        step_x[j] = pose.x, step_y[j] = pose.y, step_theta[j] = pose.theta, step_clearance[j] = c;
+        if (passes > 1) world.moving_clearances(footprint_, pose, t, step_clearance[0][j], step_clearance[1][j]);
+        else step_clearance[0][j] = world.moving_clearance_below(footprint_, pose, t, kInf);
+        step_x[j] = pose.x, step_y[j] = pose.y, step_theta[j] = pose.theta;
         step_moved[j] = (std::abs(twist.v) + reach * std::abs(twist.omega)) * params_.dt;
-        room = std::min(room, c);
-        if (c - moving_margin <= half_step_motion(twist, mover_speed_)) {
-          contact = t, last = k;
-          break;
-        }
-        if (room <= beaten_at) {
-          beaten = true;
-          break;
+        const double contact_within = half_step_motion(twist, mover_speed_);
+        for (int p = 0; p < passes; ++p) {
+          if (done[p]) continue;
+          const double c = step_clearance[p][j];
+          room[p] = std::min(room[p], c);
+          if (c - moving_margin <= contact_within) contact[p] = t, last[p] = k, done[p] = true;
+          else if (room[p] <= beaten_at[p]) beaten[p] = done[p] = true;
         }
       }
-      if (beaten || !(contact > best.contact || (contact == best.contact && room > best.room))) continue;
-      // The fixed world along the steps before the movers' contact. The most
-      // any footprint point has moved since the last pose whose clearance
-      // from it is known (poses[0] first), and how much room that one had
-      // beyond the margin: until the motion uses it up, the fixed world
-      // cannot come within the margin (no look-up, the same answer).
+      // The fixed world along the steps, as far as a ranking needs it (looked
+      // at once for both). The most any footprint point has moved since the
+      // last pose whose clearance from it is known (poses[0] first), and how
+      // much room that one had beyond the margin: until the motion uses it
+      // up, the fixed world cannot come within the margin (no look-up, the
+      // same answer).
       double moved = 0.0, anchor_room = room_at_first;
-      room = std::numeric_limits<double>::infinity();
-      for (int k = 1; k <= last; ++k) {
-        const auto j = static_cast<std::size_t>(k);
-        room = std::min(room, step_clearance[j]);
-        if (k == last && std::isfinite(contact)) break;  // the movers' contact
-        moved += step_moved[j];
-        if (moved < anchor_room) continue;
-        // Only whether the margin is reached matters: a source may settle
-        // that from its bounds (exact below the cutoff), and what it
-        // answers above it is still room the next steps may use.
-        const double t = (k + 1) * params_.dt;
-        const double fixed_room =
-            fixed.clearance_below(footprint_, Pose2{step_x[j], step_y[j], step_theta[j]}, t, margin_ + 1e-9) - margin_;
-        if (fixed_room <= 0.0) {
-          contact = t;
-          break;
+      int checked = 0, fixed_hit = n_steps_;  // the steps looked at; the first in contact
+      const auto fixed_contact_by = [&](int k_last) {
+        while (checked < k_last && fixed_hit == n_steps_) {
+          const auto j = static_cast<std::size_t>(++checked);
+          moved += step_moved[j];
+          if (moved < anchor_room) continue;
+          // Only whether the margin is reached matters: a source may settle
+          // that from its bounds (exact below the cutoff), and what it
+          // answers above it is still room the next steps may use.
+          const double fixed_room = fixed.clearance_below(footprint_, Pose2{step_x[j], step_y[j], step_theta[j]},
+                                                          (checked + 1) * params_.dt, margin_ + 1e-9) -
+                                    margin_;
+          if (fixed_room <= 0.0) fixed_hit = checked;
+          moved = 0.0;
+          anchor_room = fixed_room - 1e-9;
         }
-        moved = 0.0;
-        anchor_room = fixed_room - 1e-9;
+        return fixed_hit <= k_last ? fixed_hit : n_steps_;
+      };
+      for (int p = 0; p < passes; ++p) {
+        const Escape& best = out[p];
+        if (beaten[p] || !(contact[p] > best.contact || (contact[p] == best.contact && room[p] > best.room))) continue;
+        // A ranking that met a mover stops there: the fixed world is looked at before it.
+        const int hit = fixed_contact_by(std::isinf(contact[p]) ? last[p] : last[p] - 1);
+        if (hit < n_steps_) {
+          contact[p] = (hit + 1) * params_.dt;
+          room[p] = kInf;
+          for (int k = 1; k <= hit; ++k) room[p] = std::min(room[p], step_clearance[p][static_cast<std::size_t>(k)]);
+        }
+        if (contact[p] > best.contact || (contact[p] == best.contact && room[p] > best.room))
+          out[p] = Escape{contact[p], room[p]};
       }
-      if (contact > best.contact || (contact == best.contact && room > best.room)) best = Escape{contact, room};
+      // A way out of the grown discs leaves the likely ones nothing to decide.
+      if (std::isinf(out[0].contact)) passes = 1;
     }
   }
-  return best;
 }
 
 int LocalPlanner::best_evasion(const ClearanceSource& world) const {
-  bool escapes = false;
-  const int best = best_evasion(world, false, escapes);
-  // When the grown discs leave no way out within the horizon, their growth,
-  // more than the robot's motion, decides when each way meets them: the latest
-  // contact then goes to standing still (the rest meet them a step sooner)
-  // while a slow disc walks into the robot. Where the movers most likely go
-  // tells the ways apart.
-  if (best < 0 || escapes || !world.movers_grow()) return best;
-  return best_evasion(world, true, escapes);
-}
-
-int LocalPlanner::best_evasion(const ClearanceSource& world, bool likely, bool& escapes) const {
-  int best = -1;
-  std::tuple<double, double, double> best_key;
+  // Two rankings of the same candidates in one sweep: against the movers'
+  // grown discs, and against where they most likely go. When the grown discs
+  // leave no way out within the horizon, their growth, more than the robot's
+  // motion, decides when each way meets them: the latest contact then goes to
+  // standing still (the rest meet them a step sooner) while a slow disc walks
+  // into the robot. The likely discs tell the ways apart then.
+  int passes = world.movers_grow() ? 2 : 1;
+  std::array<int, 2> best{-1, -1};
+  std::array<std::tuple<double, double, double>, 2> best_key;
   // Samples come v-major: a column of the window shares its turn (escape_after).
   const std::size_t columns = std::max<std::size_t>(headings_.size(), 1);
   std::vector<EscapeTurns> turns(columns);
@@ -745,19 +758,25 @@ int LocalPlanner::best_evasion(const ClearanceSource& world, bool likely, bool& 
   if (params_.prefer_clear)
     for (std::size_t i = 0; i < result_.samples.size(); ++i)
       some_clear = some_clear || (result_.reasons[i] == RejectReason::Moving && keeps_clear(i));
+  Escapes rivals, e;
   for (std::size_t i = 0; i < result_.samples.size(); ++i) {
     if (result_.reasons[i] != RejectReason::Moving) continue;
     if (some_clear && !keeps_clear(i)) continue;
-    const Escape rival = best < 0 ? Escape{} : Escape{std::get<0>(best_key), std::get<1>(best_key)};
-    const Escape e = escape_after(i, world, likely, rival, turns[i % columns]);
-    const auto key = std::make_tuple(e.contact, e.room, escape_[i]);
-    if (best < 0 || key > best_key) {  // strict: ties keep the first sample
-      best = static_cast<int>(i);
-      best_key = key;
+    for (int p = 0; p < 2; ++p)
+      rivals[p] = best[p] < 0 ? Escape{} : Escape{std::get<0>(best_key[p]), std::get<1>(best_key[p])};
+    escape_after(i, world, passes, rivals, turns[i % columns], e);
+    for (int p = 0; p < passes; ++p) {
+      const auto key = std::make_tuple(e[p].contact, e[p].room, escape_[i]);
+      if (best[p] < 0 || key > best_key[p]) {  // strict: ties keep the first sample
+        best[p] = static_cast<int>(i);
+        best_key[p] = key;
+      }
     }
+    // A way out of the grown discs leaves the likely ones nothing to decide.
+    if (best[0] >= 0 && std::isinf(std::get<0>(best_key[0]))) passes = 1;
   }
-  escapes = best >= 0 && std::isinf(std::get<0>(best_key));
-  return best;
+  const bool escapes = best[0] >= 0 && std::isinf(std::get<0>(best_key[0]));
+  return best[0] < 0 || escapes || !world.movers_grow() ? best[0] : best[1];
 }
 
 void LocalPlanner::score_and_choose(const CriticContext& context) {

@@ -237,7 +237,9 @@ TEST(FieldClearance, AnObstacleCellInsideTheFootprintIsContact) {
 struct PlannerQueries : FieldClearance {
   using FieldClearance::clearance_below;
   using FieldClearance::FieldClearance;
+  using FieldClearance::likely_moving_clearance;
   using FieldClearance::moving_clearance_below;
+  using FieldClearance::moving_clearances;
   using FieldClearance::rollouts_lower_bounds;
 };
 
@@ -691,6 +693,43 @@ TEST(FieldClearance, MovingClearanceBelowACutoffIsExactThere) {
   }
   EXPECT_GE(tally.below, 1000);
   EXPECT_GE(tally.stopped, 500);
+}
+
+// Both clearances from one pass over the movers are the bits each query
+// gives alone, among movers that grow (some standing still but for their
+// growth, some accelerating) and movers that do not.
+TEST(FieldClearance, GrownAndLikelyClearancesAtOnceAreEachAloneBitForBit) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-3.0, 3.0), radius(0.0, 0.5), speed(-1.0, 1.0), when(0.0, 3.0);
+  const std::vector<Footprint> shapes = {
+      Footprint::circle(0.25), Footprint::polygon({{-0.12, -0.165}, {0.30, -0.165}, {0.30, 0.165}, {-0.12, 0.165}}),
+      Footprint::polygon({{-0.2, -0.2}, {0.4, 0.0}, {-0.2, 0.2}})};
+  int differ = 0;
+  for (int world = 0; world < 60; ++world) {
+    std::vector<Disc> discs;
+    for (int j = 0; j < 1 + world % 20; ++j) {
+      Disc d{Vec2(u(rng), u(rng)), radius(rng), Vec2(speed(rng), speed(rng))};
+      if (world % 4 != 0 && j % 3 == 2) d.growth = 0.4;
+      if (j % 5 == 4) d.velocity = Vec2::Zero();
+      if (j % 7 == 6) d.acceleration = Vec2(speed(rng), speed(rng)), d.accel_time = 0.5;
+      discs.push_back(d);
+    }
+    const PlannerQueries source(nullptr, discs);
+    for (int trial = 0; trial < 50; ++trial) {
+      const Pose2 pose{u(rng), u(rng), M_PI * u(rng) / 4.0};
+      const double t = when(rng);
+      for (const Footprint& fp : shapes) {
+        double grown = 0.0, likely = 0.0;
+        source.moving_clearances(fp, pose, t, grown, likely);
+        SCOPED_TRACE(::testing::Message() << "world " << world << " trial " << trial);
+        EXPECT_EQ(grown, source.moving_clearance(fp, pose, t));
+        EXPECT_EQ(likely, source.likely_moving_clearance(fp, pose, t));
+        differ += grown != likely;
+        if (::testing::Test::HasFailure()) return;
+      }
+    }
+  }
+  EXPECT_GE(differ, 1000);  // the growth mattered
 }
 
 }  // namespace

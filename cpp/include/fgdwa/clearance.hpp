@@ -114,6 +114,14 @@ class ClearanceSource {
   }
   // Whether some moving obstacle grows ahead (likely_moving_clearance() may differ).
   virtual bool movers_grow() const { return false; }
+  // Both at once, bit for bit: grown as moving_clearance() without the checks,
+  // likely as likely_moving_clearance(). A source may measure each mover once
+  // for both (the two differ by the growth alone).
+  virtual void moving_clearances(const Footprint& footprint, const Pose2& pose, double t, double& grown,
+                                 double& likely) const {
+    grown = moving_clearance(footprint, pose, t);
+    likely = likely_moving_clearance(footprint, pose, t);
+  }
   // clearance() without the checks, bit for bit where it is below `cutoff`;
   // elsewhere any value from cutoff up to the clearance. The planner often
   // needs to know only that a pose is at least so clear, which a source may
@@ -159,6 +167,8 @@ class FieldClearance : public ClearanceSource {
   double moving_clearance_below(const Footprint& footprint, const Pose2& pose, double t, double cutoff) const override;
   double likely_moving_clearance(const Footprint& footprint, const Pose2& pose, double t) const override;
   bool movers_grow() const override { return !likely_moving_.empty(); }
+  void moving_clearances(const Footprint& footprint, const Pose2& pose, double t, double& grown,
+                         double& likely) const override;
 
  private:
   std::shared_ptr<const DistanceField> field_;

@@ -313,20 +313,21 @@ class LocalPlanner {
     double theta0 = std::numeric_limits<double>::quiet_NaN(), omega0 = std::numeric_limits<double>::quiet_NaN();
     std::vector<double> omega, theta, cos, sin;  // [target * n_steps + step]
   };
-  // `likely`: against the movers where they most likely go (likely_moving_clearance).
-  // Continuations that cannot beat `rival` (the best of the samples before,
-  // contact -inf for none) are left unfinished: the result then falls short
-  // of rival's, as the finished one would.
-  Escape escape_after(std::size_t i, const ClearanceSource& world, bool likely, const Escape& rival,
-                      EscapeTurns& turns) const;
+  // One Escape per ranking: [0] against the movers' grown discs, [1] against
+  // where they most likely go (likely_moving_clearance).
+  using Escapes = std::array<Escape, 2>;
+  // The first `passes` rankings of sample i (1: the grown discs alone).
+  // Continuations that cannot beat a ranking's rival (the best of the samples
+  // before, contact -inf for none) are left unfinished there: the result then
+  // falls short of the rival's, as the finished one would.
+  void escape_after(std::size_t i, const ClearanceSource& world, int passes, const Escapes& rivals,
+                    EscapeTurns& turns, Escapes& out) const;
   // Among the samples rejected only for a moving obstacle, the one whose best
   // continuation meets a mover or a wall latest (then keeps the most room, then
   // is farthest from the movers at the horizon); -1 if there is none. Judged
   // against the movers' grown discs, or, when no way escapes those within the
   // horizon, against where they most likely go.
   int best_evasion(const ClearanceSource& world) const;
-  // The same against the grown discs or the likely ones; `escapes`: whether the chosen way meets nothing.
-  int best_evasion(const ClearanceSource& world, bool likely, bool& escapes) const;
   double margin_ = 0.0;  // this cycle's contact margin (m)
   Twist start_twist_;    // this cycle's measured twist, where every rollout starts
   double response_ = 0.0;  // s, the wheels' lag the rollouts model (0 with instant wheels)
