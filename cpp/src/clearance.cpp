@@ -616,6 +616,16 @@ bool FieldClearance::lower_bounds_exact(const Footprint& footprint) const {
 }
 
 namespace {
+// A lower bound of a footprint's signed distance from q (in its frame): how
+// far q lies beyond its bounding box along the farther axis, a nanometre
+// under for the rounding (as box_bounds_below takes it). Off a box
+// footprint's corners it is the distance itself.
+double box_lower_bound(const Footprint& footprint, const Vec2& q) {
+  const Vec2& lo = footprint.box_min();
+  const Vec2& hi = footprint.box_max();
+  return std::max(std::max(lo.x() - q.x(), q.x() - hi.x()), std::max(lo.y() - q.y(), q.y() - hi.y())) - 1e-9;
+}
+
 // moving_disc_clearance() without the checks, for callers that made them;
 // bit for bit below `cutoff`, elsewhere a value from cutoff up to it. `every`:
 // measures still discs too (a likely disc may have moved by its growth alone).
@@ -656,15 +666,19 @@ double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Foo
   if (nearest_low >= cutoff) return nearest_low;
   double c = 0.0, s = 0.0;
   heading_cos_sin(pose.theta, c, s);
-  const auto measure = [&](const Disc& disc) {
-    // In the robot's frame.
+  const auto in_frame = [&](const Disc& disc) {
     const Vec2 q = disc.center_at(t) - pose.position();
-    best = std::min(best, footprint.signed_distance_in_frame(Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y())) -
-                              disc.radius_at(t));
+    return Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
   };
-  measure(*nearest);
-  for (const Disc& disc : discs)
-    if ((every || disc.moves()) && &disc != nearest && circumscribed(disc) < std::min(best, cutoff)) measure(disc);
+  best = std::min(best, footprint.signed_distance_in_frame(in_frame(*nearest)) - nearest->radius_at(t));
+  // The others by the circumscribed circle, then by the bounding box, before they are measured.
+  for (const Disc& disc : discs) {
+    if (!(every || disc.moves()) || &disc == nearest || circumscribed(disc) >= std::min(best, cutoff)) continue;
+    const Vec2 q = in_frame(disc);
+    const double radius = disc.radius_at(t);
+    if (box_lower_bound(footprint, q) - radius >= std::min(best, cutoff)) continue;
+    best = std::min(best, footprint.signed_distance_in_frame(q) - radius);
+  }
   // At or above the cutoff, the discs passed over may hold a lower clearance,
   // though none below the cutoff.
   return std::min(best, cutoff);
@@ -704,8 +718,9 @@ void FieldClearance::moving_clearances(const Footprint& footprint, const Pose2& 
   }
   // likely_moving_ is moving_ without the growth, disc for disc: the centre
   // and the distance to it serve both, each less its own radius (as
-  // moving_disc_clearance_unchecked takes them). A disc whose circumscribed
-  // bound reaches neither best cannot lower either.
+  // moving_disc_clearance_unchecked takes them). A disc whose bounds (the
+  // circumscribed circle's, the bounding box's) reach neither best cannot
+  // lower either.
   const bool circle = footprint.is_circle();
   double c = 0.0, s = 0.0;
   if (!circle) heading_cos_sin(pose.theta, c, s);
@@ -714,11 +729,14 @@ void FieldClearance::moving_clearances(const Footprint& footprint, const Pose2& 
     const double grown_radius = disc.radius_at(t), likely_radius = likely_moving_[j].radius_at(t);
     const Vec2 q = disc.center_at(t) - pose.position();
     const double gap = q.norm();
-    if (gap - grown_radius - footprint.radius() >= grown && gap - likely_radius - footprint.radius() >= likely)
-      continue;
-    const double distance =
-        circle ? gap - footprint.radius()
-               : footprint.signed_distance_in_frame(Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y()));
+    const auto beats = [&](double low) { return low - grown_radius < grown || low - likely_radius < likely; };
+    if (!beats(gap - footprint.radius())) continue;
+    double distance = gap - footprint.radius();
+    if (!circle) {
+      const Vec2 in_frame(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
+      if (!beats(box_lower_bound(footprint, in_frame))) continue;
+      distance = footprint.signed_distance_in_frame(in_frame);
+    }
     grown = std::min(grown, distance - grown_radius);
     likely = std::min(likely, distance - likely_radius);
   }
