@@ -199,26 +199,23 @@ double FieldClearance::StaticDiscs::polygon_distance(const Footprint& footprint,
   // cutoff can come below it, and of those only the ones whose bound does:
   // kept with their bounds in one pass. The least bound's disc is measured
   // first, so that its measure settles the rest by their bounds.
+  // Room for every disc once (near's runs never overlap), kept between calls
+  // so that no call clears or fills it.
   thread_local std::vector<std::uint32_t> open;
   thread_local std::vector<double> open_low;
-  open.clear();
-  open_low.clear();
+  if (open.size() < x.size()) open.resize(x.size()), open_low.resize(x.size());
+  std::size_t opened = 0;
   const double reach = footprint.radius() + cutoff + largest_radius + 1e-6;
   near(px, py, reach, [&](std::size_t first, std::size_t count) {
-    const std::size_t kept = open.size();
-    open.resize(kept + count);
-    open_low.resize(kept + count);
-    const std::size_t found =
-        detail::box_bounds_below(x.data() + first, y.data() + first, radius.data() + first, count, px, py, c, s, box,
-                                 cutoff, static_cast<std::uint32_t>(first), open.data() + kept, open_low.data() + kept);
-    open.resize(kept + found);
-    open_low.resize(kept + found);
+    opened += detail::box_bounds_below(x.data() + first, y.data() + first, radius.data() + first, count, px, py, c, s,
+                                       box, cutoff, static_cast<std::uint32_t>(first), open.data() + opened,
+                                       open_low.data() + opened);
   });
-  if (open.empty()) return cutoff;
+  if (opened == 0) return cutoff;
   const std::size_t nearest =
-      static_cast<std::size_t>(std::min_element(open_low.begin(), open_low.end()) - open_low.begin());
+      static_cast<std::size_t>(std::min_element(open_low.begin(), open_low.begin() + opened) - open_low.begin());
   double best = measure(open[nearest]);
-  for (std::size_t k = 0; k < open.size(); ++k)
+  for (std::size_t k = 0; k < opened; ++k)
     if (k != nearest && open_low[k] < std::min(best, cutoff)) best = std::min(best, measure(open[k]));
   // At or above the cutoff, a disc passed over may hold a lower value, though none below the cutoff.
   return std::min(best, cutoff);
