@@ -395,6 +395,12 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
       }
       return std::isnan(c) ? cutoff : std::min(c, cutoff);
     };
+    // Clearance from the margin between a step's poses, exact below the
+    // cutoff (a nanometre above it, so that a value the source stops at
+    // still reaches the cutoff after the margin is taken off).
+    const auto sweep_below = [&](const Pose2& pose, double t, double cutoff) {
+      return fixed.clearance_below(footprint_, pose, t, cutoff + margin + 1e-9) - margin;
+    };
     double free_distance = inf;
     int last = n_steps_ - 1;  // the last pose reached: the first in contact, or the end
     // Most poses are settled by their bound and the previous one, with room
@@ -427,10 +433,10 @@ void LocalPlanner::evaluate_rollouts(const RobotState& state, const Vec2& goal, 
       if (c > 0.0 && !leaving_contact && step.covered(previous_low, c)) continue;
       c = exact(k);
       const Pose2& from = k == 0 ? state.pose : poses[static_cast<std::size_t>(k - 1)];
-      const bool clear = c > 0.0 && (leaving_contact || detail::step_clear(fixed, footprint_, step, from,
+      const bool clear = c > 0.0 && (leaving_contact || detail::step_clear(sweep_below, footprint_, step, from,
                                                                    k == 0 ? start_clearance : exact(k - 1),
                                                                    poses[static_cast<std::size_t>(k)], c,
-                                                                   k * params_.dt, params_.dt, margin));
+                                                                   k * params_.dt, params_.dt));
       if (!clear) {
         // Contact at or before pose k + 1: the robot travels k full steps in free space.
         free_distance = travel[k];

@@ -86,10 +86,64 @@ struct StepSweep {
   }
 };
 
+namespace sweep {
+
+// The clearance a piece's two halves need at its middle to be settled at once
+// (their first tests), a hair above for the rounding: `length` is each
+// half's piece as clear_along measures it.
+inline double settling(double length_a, double length_b) {
+  return std::max(length_a, length_b) * (1.0 + 1e-9) + 1e-9;
+}
+
+// Whether the footprint stays clear along one piece of a turn (straight =
+// false: `length` is the turn's reach) or of a drive (straight: `length` is
+// its length), given the clearances c0 and c1 at the piece's ends. Pieces the
+// ends do not settle are halved until they do, down to a millimetre.
+// `pose(f)`, f in [0, 1], walks the piece; `below(pose, t, cutoff)` is the
+// clearance from the margin, exact below the cutoff (above it, a value from
+// the cutoff up): a middle clear by as much as its halves need settles them
+// both whatever its exact value.
+template <typename PoseAt, typename Below>
+bool clear_along(const Below& below, const StepSweep& step, bool straight, const PoseAt& pose, double t0, double dt,
+                 double f0, double c0, double f1, double c1, double length) {
+  if (c0 <= 0.0 || c1 <= 0.0) return false;
+  const auto piece_of = [&](double from, double to) {
+    return straight ? step.relative((to - from) * length, to - from) : (to - from) * length;
+  };
+  const double piece = piece_of(f0, f1);
+  if (straight ? step.drive_covered(c0, c1, piece) : c0 + c1 > piece) return true;
+  if (piece < 1e-3) return false;
+  const double fm = 0.5 * (f0 + f1);
+  const double cm = below(pose(fm), t0 + fm * dt, settling(piece_of(f0, fm), piece_of(fm, f1)));
+  return clear_along(below, step, straight, pose, t0, dt, f0, c0, fm, cm, length) &&
+         clear_along(below, step, straight, pose, t0, dt, fm, cm, f1, c1, length);
+}
+
+}  // namespace sweep
+
 // Whether the footprint is clear along the step from `from` (clearance c0, at
-// time t0) to `to` (clearance c1), checked against `world` where the end
-// clearances do not settle it. Clearances count from `margin`.
-bool step_clear(const ClearanceSource& world, const Footprint& footprint, const StepSweep& step, const Pose2& from,
-                double c0, const Pose2& to, double c1, double t0, double dt, double margin);
+// time t0) to `to` (clearance c1), checked where the end clearances do not
+// settle it: the turn in place, for a footprint that is not a circle, then the
+// straight drive. Clearances count from the margin; `below(pose, t, cutoff)`
+// gives them, exact below the cutoff (above it, a value from the cutoff up).
+template <typename Below>
+bool step_clear(const Below& below, const Footprint& footprint, const StepSweep& step, const Pose2& from, double c0,
+                const Pose2& to, double c1, double t0, double dt) {
+  if (step.covered(c0, c1)) return true;
+  const double drive = std::hypot(to.x - from.x, to.y - from.y);
+  double c_turned = c0;
+  if (!footprint.is_circle()) {
+    const double turn = angle_difference(to.theta, from.theta);
+    // As clear as the turn's reach and the drive need, both settle at once.
+    c_turned = below(Pose2{from.x, from.y, to.theta}, t0, sweep::settling(step.turn_reach, step.relative(drive, 1.0)));
+    const auto turning = [&](double f) { return Pose2{from.x, from.y, from.theta + f * turn}; };
+    if (!sweep::clear_along(below, step, false, turning, t0, 0.0, 0.0, c0, 1.0, c_turned, step.turn_reach))
+      return false;
+  }
+  const auto driving = [&](double f) {
+    return Pose2{from.x + f * (to.x - from.x), from.y + f * (to.y - from.y), to.theta};
+  };
+  return sweep::clear_along(below, step, true, driving, t0, dt, 0.0, c_turned, 1.0, c1, drive);
+}
 
 }  // namespace fgdwa::detail
