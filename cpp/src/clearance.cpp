@@ -30,6 +30,9 @@ void Disc::validate() const {
 
 namespace {
 
+// q (relative to a pose) in the pose's frame, given the heading's cos c and sin s.
+Vec2 in_frame(double c, double s, const Vec2& q) { return Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y()); }
+
 // The first t >= 0 at which |d + v t| <= R + g t (d the centre less the point);
 // +inf if never. Squared: a t^2 + b t + c <= 0, with c > 0 when not covered now.
 double linear_time_to_reach(const Vec2& d, const Vec2& velocity, double R, double growth) {
@@ -192,8 +195,7 @@ double FieldClearance::StaticDiscs::polygon_distance(const Footprint& footprint,
                          footprint.box_max().y()};
   // In the robot's frame, with the pose's cos and sin (Footprint::signed_distance's bits).
   const auto measure = [&](std::size_t j) {
-    const double dx = x[j] - px, dy = y[j] - py;
-    return footprint.signed_distance_in_frame(Vec2(c * dx + s * dy, -s * dx + c * dy)) - radius[j];
+    return footprint.signed_distance_in_frame(in_frame(c, s, Vec2(x[j] - px, y[j] - py))) - radius[j];
   };
   // Only discs whose centre lies within the circumscribed radius and the
   // cutoff can come below it, and of those only the ones whose bound does:
@@ -663,15 +665,12 @@ double moving_disc_clearance_unchecked(const std::vector<Disc>& discs, const Foo
   if (nearest_low >= cutoff) return nearest_low;
   double c = 0.0, s = 0.0;
   heading_cos_sin(pose.theta, c, s);
-  const auto in_frame = [&](const Disc& disc) {
-    const Vec2 q = disc.center_at(t) - pose.position();
-    return Vec2(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
-  };
-  best = std::min(best, footprint.signed_distance_in_frame(in_frame(*nearest)) - nearest->radius_at(t));
+  const auto placed = [&](const Disc& disc) { return in_frame(c, s, disc.center_at(t) - pose.position()); };
+  best = std::min(best, footprint.signed_distance_in_frame(placed(*nearest)) - nearest->radius_at(t));
   // The others by the circumscribed circle, then by the bounding box, before they are measured.
   for (const Disc& disc : discs) {
     if (!(every || disc.moves()) || &disc == nearest || circumscribed(disc) >= std::min(best, cutoff)) continue;
-    const Vec2 q = in_frame(disc);
+    const Vec2 q = placed(disc);
     const double radius = disc.radius_at(t);
     if (box_lower_bound(footprint, q) - radius >= std::min(best, cutoff)) continue;
     best = std::min(best, footprint.signed_distance_in_frame(q) - radius);
@@ -707,12 +706,11 @@ double FieldClearance::likely_moving_clearance(const Footprint& footprint, const
 
 void FieldClearance::moving_clearances(const Footprint& footprint, const Pose2& pose, double t, double& grown,
                                        double& likely) const {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  grown = likely = kInf;
   if (likely_moving_.empty()) {
     grown = likely = moving_disc_clearance_unchecked(moving_, footprint, pose, t);
     return;
   }
+  grown = likely = std::numeric_limits<double>::infinity();
   // likely_moving_ is moving_ without the growth, disc for disc: the centre
   // and the distance to it serve both, each less its own radius (as
   // moving_disc_clearance_unchecked takes them). A disc whose bounds (the
@@ -727,12 +725,12 @@ void FieldClearance::moving_clearances(const Footprint& footprint, const Pose2& 
     const Vec2 q = disc.center_at(t) - pose.position();
     const double gap = q.norm();
     const auto beats = [&](double low) { return low - grown_radius < grown || low - likely_radius < likely; };
-    if (!beats(gap - footprint.radius())) continue;
-    double distance = gap - footprint.radius();
+    double distance = gap - footprint.radius();  // a circle's, a polygon's lower bound
+    if (!beats(distance)) continue;
     if (!circle) {
-      const Vec2 in_frame(c * q.x() + s * q.y(), -s * q.x() + c * q.y());
-      if (!beats(box_lower_bound(footprint, in_frame))) continue;
-      distance = footprint.signed_distance_in_frame(in_frame);
+      const Vec2 placed = in_frame(c, s, q);
+      if (!beats(box_lower_bound(footprint, placed))) continue;
+      distance = footprint.signed_distance_in_frame(placed);
     }
     grown = std::min(grown, distance - grown_radius);
     likely = std::min(likely, distance - likely_radius);

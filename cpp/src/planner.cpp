@@ -651,10 +651,14 @@ void LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, int
   // One continuation's steps 1 .. n_steps - 1: each pose, how far any
   // footprint point moved to reach it, and its clearance from the movers
   // (grown, then likely).
-  thread_local std::vector<double> step_x, step_y, step_theta, step_moved, step_clearance[2];
-  for (auto* column : {&step_x, &step_y, &step_theta, &step_moved, &step_clearance[0], &step_clearance[1]})
-    column->resize(steps);
+  thread_local Trajectory step_pose;
+  thread_local std::vector<double> step_moved, step_clearance[2];
+  step_pose.resize(steps);
+  for (auto* column : {&step_moved, &step_clearance[0], &step_clearance[1]}) column->resize(steps);
   constexpr double kInf = std::numeric_limits<double>::infinity();
+  const auto beats = [](const Escape& best, double contact, double room) {
+    return contact > best.contact || (contact == best.contact && room > best.room);
+  };
   for (int b = 0; b < n_targets; ++b) {
     const double* const omegas = turns.omega.data() + static_cast<std::size_t>(b) * steps;
     const double* const thetas = turns.theta.data() + static_cast<std::size_t>(b) * steps;
@@ -665,11 +669,12 @@ void LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, int
       Pose2 pose = poses[0];
       Twist twist = first;
       // Per ranking: the movers' contact (s, +inf: none), the least room to
-      // them up to it, the last step driven, and whether the ranking is done
-      // with this continuation (it met a mover or is beaten).
+      // them up to it, the last step the walls must leave clear (the one
+      // before the contact), and whether the ranking is done with this
+      // continuation (it met a mover, or is beaten if it did not).
       std::array<double, 2> contact{kInf, kInf}, room{kInf, kInf}, beaten_at{};
-      std::array<int, 2> last{n_steps_ - 1, n_steps_ - 1};
-      std::array<bool, 2> beaten{false, false}, done{false, passes < 2};
+      std::array<int, 2> walls_to{n_steps_ - 1, n_steps_ - 1};
+      std::array<bool, 2> done{false, passes < 2};
       // Room only shrinks along a continuation: once it is below what a way
       // out already keeps (this sample's best, or the samples' before it,
       // whose tie this one would lose only at equal room), it cannot win.
@@ -690,15 +695,15 @@ void LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, int
         const double t = (k + 1) * params_.dt;
         if (passes > 1) world.moving_clearances(footprint_, pose, t, step_clearance[0][j], step_clearance[1][j]);
         else step_clearance[0][j] = world.moving_clearance_below(footprint_, pose, t, kInf);
-        step_x[j] = pose.x, step_y[j] = pose.y, step_theta[j] = pose.theta;
+        step_pose[j] = pose;
         step_moved[j] = (std::abs(twist.v) + reach * std::abs(twist.omega)) * params_.dt;
         const double contact_within = half_step_motion(twist, mover_speed_);
         for (int p = 0; p < passes; ++p) {
           if (done[p]) continue;
           const double c = step_clearance[p][j];
           room[p] = std::min(room[p], c);
-          if (c - moving_margin <= contact_within) contact[p] = t, last[p] = k, done[p] = true;
-          else if (room[p] <= beaten_at[p]) beaten[p] = done[p] = true;
+          if (c - moving_margin <= contact_within) contact[p] = t, walls_to[p] = k - 1, done[p] = true;
+          else if (room[p] <= beaten_at[p]) done[p] = true;
         }
       }
       // The fixed world along the steps, as far as a ranking needs it (looked
@@ -717,9 +722,8 @@ void LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, int
           // Only whether the margin is reached matters: a source may settle
           // that from its bounds (exact below the cutoff), and what it
           // answers above it is still room the next steps may use.
-          const double fixed_room = fixed.clearance_below(footprint_, Pose2{step_x[j], step_y[j], step_theta[j]},
-                                                          (checked + 1) * params_.dt, margin_ + 1e-9) -
-                                    margin_;
+          const double fixed_room =
+              fixed.clearance_below(footprint_, step_pose[j], (checked + 1) * params_.dt, margin_ + 1e-9) - margin_;
           if (fixed_room <= 0.0) fixed_hit = checked;
           moved = 0.0;
           anchor_room = fixed_room - 1e-9;
@@ -727,17 +731,15 @@ void LocalPlanner::escape_after(std::size_t i, const ClearanceSource& world, int
         return fixed_hit <= k_last ? fixed_hit : n_steps_;
       };
       for (int p = 0; p < passes; ++p) {
-        const Escape& best = out[p];
-        if (beaten[p] || !(contact[p] > best.contact || (contact[p] == best.contact && room[p] > best.room))) continue;
-        // A ranking that met a mover stops there: the fixed world is looked at before it.
-        const int hit = fixed_contact_by(std::isinf(contact[p]) ? last[p] : last[p] - 1);
+        const bool beaten = done[p] && std::isinf(contact[p]);
+        if (beaten || !beats(out[p], contact[p], room[p])) continue;
+        const int hit = fixed_contact_by(walls_to[p]);
         if (hit < n_steps_) {
           contact[p] = (hit + 1) * params_.dt;
           room[p] = kInf;
           for (int k = 1; k <= hit; ++k) room[p] = std::min(room[p], step_clearance[p][static_cast<std::size_t>(k)]);
         }
-        if (contact[p] > best.contact || (contact[p] == best.contact && room[p] > best.room))
-          out[p] = Escape{contact[p], room[p]};
+        if (beats(out[p], contact[p], room[p])) out[p] = Escape{contact[p], room[p]};
       }
       // A way out of the grown discs leaves the likely ones nothing to decide.
       if (std::isinf(out[0].contact)) passes = 1;
@@ -755,6 +757,7 @@ int LocalPlanner::best_evasion(const ClearanceSource& world) const {
   int passes = world.movers_grow() ? 2 : 1;
   std::array<int, 2> best{-1, -1};
   std::array<std::tuple<double, double, double>, 2> best_key;
+  const auto escapes = [&] { return best[0] >= 0 && std::isinf(std::get<0>(best_key[0])); };
   // Samples come v-major: a column of the window shares its turn (escape_after).
   const std::size_t columns = std::max<std::size_t>(headings_.size(), 1);
   std::vector<EscapeTurns> turns(columns);
@@ -779,10 +782,9 @@ int LocalPlanner::best_evasion(const ClearanceSource& world) const {
       }
     }
     // A way out of the grown discs leaves the likely ones nothing to decide.
-    if (best[0] >= 0 && std::isinf(std::get<0>(best_key[0]))) passes = 1;
+    if (escapes()) passes = 1;
   }
-  const bool escapes = best[0] >= 0 && std::isinf(std::get<0>(best_key[0]));
-  return best[0] < 0 || escapes || !world.movers_grow() ? best[0] : best[1];
+  return best[0] < 0 || escapes() || !world.movers_grow() ? best[0] : best[1];
 }
 
 void LocalPlanner::score_and_choose(const CriticContext& context) {
